@@ -1,0 +1,19 @@
+# Warning and sanitizer flags shared by every target of the project.
+add_library(hexadapt_warnings INTERFACE)
+target_compile_options(hexadapt_warnings INTERFACE
+  -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor -Wold-style-cast -Wcast-align
+  -Woverloaded-virtual -Wconversion -Wnull-dereference -Wdouble-promotion
+  -Wimplicit-fallthrough)
+# OpenMesh's property containers push_back default-constructed (uninitialised) vectors, which
+# GCC 12 flags inside our translation units; the warning says nothing about our code.
+if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+  target_compile_options(hexadapt_warnings INTERFACE -Wno-maybe-uninitialized)
+endif()
+if(HEXADAPT_WERROR)
+  target_compile_options(hexadapt_warnings INTERFACE -Werror)
+endif()
+if(HEXADAPT_SANITIZE)
+  target_compile_options(hexadapt_warnings INTERFACE
+    -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  target_link_options(hexadapt_warnings INTERFACE -fsanitize=address,undefined)
+endif()

@@ -1,0 +1,35 @@
+// Reading and writing mesh files by name: the format follows the extension.
+//
+// Read: legacy .vtk (ASCII and binary; STRUCTURED_POINTS, RECTILINEAR_GRID, STRUCTURED_GRID,
+// UNSTRUCTURED_GRID), XML .vtu .vti .vtr .vts (ascii, base64, appended raw or base64, zlib,
+// UInt32/UInt64 headers), and the plain text formats of hand-made cases (.txt, DESIGN 7.1).
+// Write: .vtu (appended binary, zlib-compressed when large) and legacy .vtk (binary).
+// Writes are atomic: a temporary file in the target directory, then a rename, so a failed
+// write never leaves a half file and never clobbers an input.
+#pragma once
+
+#include <string>
+
+#include "hexadapt/io/mesh_data.h"
+
+namespace hexadapt::io {
+
+/// How a 2D data set is laid in the plane: `automatic` takes the flat axis of a structured
+/// data set (the axis with one point) and z = constant for unstructured quads.
+enum class Plane { automatic, xy, yz, xz };
+
+struct ReadOptions {
+  Plane plane = Plane::automatic;  ///< which coordinate plane 2D cells live in
+};
+
+struct WriteOptions {
+  bool compress = true;              ///< zlib-compress .vtu data blocks
+  std::size_t compress_above = 1 << 16;  ///< bytes: smaller arrays are written raw
+};
+
+/// Throws InputError (malformed content, with file and place), IoError (cannot open/read).
+MeshData read_mesh(const std::string& path, const ReadOptions& options = {});
+/// Throws IoError, or OptionError for an unknown extension.
+void write_mesh(const MeshData& data, const std::string& path, const WriteOptions& options = {});
+
+}  // namespace hexadapt::io

@@ -1,0 +1,73 @@
+// Fractions: the volume fraction of every material in every cell (dense cells x materials).
+//
+// Real solver output is never exact: values slightly below 0 or above 1 and sums off by
+// ~1e-6 are normal, and diffuse-interface codes leave a trace (~1e-6) of every material in
+// every cell. extract_fractions() therefore validates against tolerances and repairs what is
+// within them, and reports what it repaired:
+//   - a NaN, or a value below -value_tolerance or above 1 + value_tolerance: InputError;
+//   - values within the tolerance are clipped into [0, 1];
+//   - values below `zero_below` are set to 0 (traces);
+//   - a sum farther than sum_tolerance from 1: InputError, unless a void material is named,
+//     which receives the remainder 1 - sum (a sum above 1 + sum_tolerance is still an error);
+//   - every cell is then rescaled to sum exactly 1 (a cell left with all zeros is an error).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "hexadapt/core/ids.h"
+
+namespace hexadapt {
+namespace io {
+struct MeshData;
+}
+
+class Fractions {
+ public:
+  Fractions() = default;
+  Fractions(index_t n_cells, std::vector<std::string> names);
+
+  index_t n_cells() const { return n_cells_; }
+  int n_materials() const { return static_cast<int>(names_.size()); }
+  const std::vector<std::string>& names() const { return names_; }
+  /// Index of the material with this name, -1 if none.
+  int find(const std::string& name) const;
+
+  double operator()(CellId c, int m) const { return data_[slot(c, m)]; }
+  double& operator()(CellId c, int m) { return data_[slot(c, m)]; }
+  /// The material with the largest fraction in c, ties to the lowest index.
+  int majority(CellId c) const;
+  /// True when one material holds the whole cell.
+  bool is_pure(CellId c) const;
+
+ private:
+  std::size_t slot(CellId c, int m) const {
+    return c.idx() * names_.size() + static_cast<std::size_t>(m);
+  }
+  index_t n_cells_ = 0;
+  std::vector<std::string> names_;
+  std::vector<double> data_;
+};
+
+struct FractionOptions {
+  /// Cell arrays to read, in order; empty: every cell array named vf_<material>, in file order.
+  std::vector<std::string> arrays;
+  /// If not empty, a material of this name receives 1 - sum of the others.
+  std::string void_material;
+  double value_tolerance = 1e-4;  ///< how far outside [0,1] a value may be and still be clipped
+  double sum_tolerance = 1e-4;    ///< how far from 1 a cell's sum may be and still be rescaled
+  double zero_below = 1e-5;       ///< fractions below this are traces and become 0
+};
+
+struct FractionReport {
+  index_t clipped_values = 0;    ///< values moved into [0, 1]
+  index_t zeroed_values = 0;     ///< traces set to 0
+  index_t rescaled_cells = 0;    ///< cells whose sum was not 1 (to 1e-12) before rescaling
+  double max_sum_error = 0;      ///< largest |sum - 1| seen before repair
+};
+
+/// Reads the fraction arrays of `data` (file name `file` only for error messages).
+Fractions extract_fractions(const io::MeshData& data, const FractionOptions& options,
+                            FractionReport* report = nullptr, const std::string& file = {});
+
+}  // namespace hexadapt

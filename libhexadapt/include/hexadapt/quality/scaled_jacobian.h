@@ -1,0 +1,27 @@
+// Scaled Jacobian and volume of quads and hexes: pure functions of the corner points.
+//
+// Hex: Verdict's definition (Stimpson et al., "The Verdict Geometric Quality Library",
+// SAND2007-1751): the minimum over the 8 corners and the centre principal-axes frame of
+// det(a, b, c) / (|a| |b| |c|), so values match ParaView's Mesh Quality filter and Cubit.
+// Quad (2D, in the xy plane): signed with the fixed orientation +z, the minimum over the four
+// corners of cross(e_next, e_prev).z / (|e_next| |e_prev|), so a clockwise (inverted) quad
+// is negative. A degenerate cell (an edge or axis shorter than 1e-300) scores -1, the worst
+// value, never a perfect one. Corner order: binary for hexes, counter-clockwise for quads
+// (geometry.h).
+#pragma once
+
+#include <array>
+
+#include "hexadapt/mesh/geometry.h"
+
+namespace hexadapt {
+
+double hex_scaled_jacobian(const std::array<Vec3, 8>& p);
+/// Signed volume of the trilinear hex (exact: 2x2x2 Gauss quadrature of det J).
+double hex_volume(const std::array<Vec3, 8>& p);
+
+double quad_scaled_jacobian(const std::array<Vec3, 4>& p);
+/// Signed area of the quad projected on the xy plane (positive when counter-clockwise).
+double quad_area(const std::array<Vec3, 4>& p);
+
+}  // namespace hexadapt

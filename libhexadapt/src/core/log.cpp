@@ -1,0 +1,48 @@
+#include "hexadapt/core/log.h"
+
+#include <cstdio>
+#include <mutex>
+
+namespace hexadapt {
+
+namespace {
+struct LogState {
+  std::mutex mutex;
+  LogSink sink = [](LogLevel lvl, std::string_view message) {
+    const char* tag = lvl >= LogLevel::error ? "error" : lvl == LogLevel::warning
+                                                               ? "warning"
+                                                               : "info";
+    std::fprintf(stderr, "hexadapt: %s: %.*s\n", tag, static_cast<int>(message.size()),
+                 message.data());
+  };
+  LogLevel level = LogLevel::warning;
+};
+LogState& state() {
+  static LogState s;
+  return s;
+}
+}  // namespace
+
+void set_log_sink(LogSink sink, LogLevel min_level) {
+  std::lock_guard<std::mutex> lock(state().mutex);
+  state().sink = std::move(sink);
+  state().level = min_level;
+}
+
+void set_log_level(LogLevel min_level) {
+  std::lock_guard<std::mutex> lock(state().mutex);
+  state().level = min_level;
+}
+
+LogLevel log_level() {
+  std::lock_guard<std::mutex> lock(state().mutex);
+  return state().level;
+}
+
+void log(LogLevel level, std::string_view message) {
+  std::lock_guard<std::mutex> lock(state().mutex);
+  if (level < state().level || !state().sink) return;
+  state().sink(level, message);
+}
+
+}  // namespace hexadapt

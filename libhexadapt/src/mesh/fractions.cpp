@@ -1,0 +1,135 @@
+#include "hexadapt/mesh/fractions.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "hexadapt/core/error.h"
+#include "hexadapt/io/mesh_data.h"
+
+namespace hexadapt {
+
+Fractions::Fractions(index_t n_cells, std::vector<std::string> names)
+    : n_cells_(n_cells),
+      names_(std::move(names)),
+      data_(static_cast<std::size_t>(n_cells) * names_.size(), 0.0) {}
+
+int Fractions::find(const std::string& name) const {
+  const auto it = std::find(names_.begin(), names_.end(), name);
+  return it == names_.end() ? -1 : static_cast<int>(it - names_.begin());
+}
+
+int Fractions::majority(CellId c) const {
+  int best = 0;
+  for (int m = 1; m < n_materials(); ++m)
+    if ((*this)(c, m) > (*this)(c, best)) best = m;
+  return best;
+}
+
+bool Fractions::is_pure(CellId c) const { return (*this)(c, majority(c)) >= 1.0; }
+
+namespace {
+
+std::vector<const io::DataArray*> fraction_arrays(const io::MeshData& data,
+                                                  const FractionOptions& options,
+                                                  std::vector<std::string>& names,
+                                                  const std::string& file) {
+  std::vector<const io::DataArray*> arrays;
+  if (options.arrays.empty()) {
+    for (const auto& a : data.cell_data)
+      if (a.name.size() > 3 && a.name.compare(0, 3, "vf_") == 0) {
+        arrays.push_back(&a);
+        names.push_back(a.name.substr(3));
+      }
+    if (arrays.empty())
+      throw InputError(file, "", "no cell array named vf_<material>; name the fraction "
+                                 "arrays explicitly");
+  } else {
+    for (const auto& n : options.arrays) {
+      const io::DataArray* a = data.find_cell_array(n);
+      if (!a) throw InputError(file, "", "no cell array named '" + n + "'");
+      arrays.push_back(a);
+      names.push_back(n.size() > 3 && n.compare(0, 3, "vf_") == 0 ? n.substr(3) : n);
+    }
+  }
+  for (const auto* a : arrays)
+    if (a->n_components != 1)
+      throw InputError(file, "", "fraction array '" + a->name + "' has " +
+                                     std::to_string(a->n_components) +
+                                     " components, expected 1");
+  if (!options.void_material.empty()) {
+    if (std::find(names.begin(), names.end(), options.void_material) != names.end())
+      throw InputError(file, "", "void material '" + options.void_material +
+                                     "' is also a fraction array");
+    names.push_back(options.void_material);
+  }
+  return arrays;
+}
+
+std::string cell_where(CellId c) { return "cell " + std::to_string(c.value()); }
+
+}  // namespace
+
+Fractions extract_fractions(const io::MeshData& data, const FractionOptions& options,
+                            FractionReport* report, const std::string& file) {
+  std::vector<std::string> names;
+  const auto arrays = fraction_arrays(data, options, names, file);
+  Fractions f(data.n_cells(), names);
+  FractionReport rep;
+  const bool has_void = !options.void_material.empty();
+  const int n_read = static_cast<int>(arrays.size());
+  for (CellId c : id_range<CellId>(data.n_cells())) {
+    // Validate and clip, check the sum on the values as given, then drop traces and rescale.
+    double sum = 0;
+    for (int m = 0; m < n_read; ++m) {
+      double v = arrays[static_cast<std::size_t>(m)]->values[c.idx()];
+      if (std::isnan(v) || v < -options.value_tolerance || v > 1 + options.value_tolerance) {
+        std::ostringstream msg;
+        msg << "fraction " << arrays[static_cast<std::size_t>(m)]->name << " = " << v
+            << " is outside [0, 1] (tolerance " << options.value_tolerance << ")";
+        throw InputError(file, cell_where(c), msg.str());
+      }
+      if (v < 0 || v > 1) {
+        v = std::clamp(v, 0.0, 1.0);
+        ++rep.clipped_values;
+      }
+      f(c, m) = v;
+      sum += v;
+    }
+    if (has_void) {
+      if (sum > 1 + options.sum_tolerance) {
+        std::ostringstream msg;
+        msg << "fractions sum to " << sum << ", above 1 (tolerance " << options.sum_tolerance
+            << "): no room for the void material";
+        throw InputError(file, cell_where(c), msg.str());
+      }
+      f(c, n_read) = std::max(0.0, 1 - sum);
+      sum += f(c, n_read);
+    }
+    const double err = std::abs(sum - 1);
+    rep.max_sum_error = std::max(rep.max_sum_error, err);
+    if (err > options.sum_tolerance) {
+      std::ostringstream msg;
+      msg << "fractions sum to " << sum << " (tolerance " << options.sum_tolerance
+          << "); name a void material to fill the remainder";
+      throw InputError(file, cell_where(c), msg.str());
+    }
+    double kept = 0;
+    for (int m = 0; m < f.n_materials(); ++m) {
+      if (f(c, m) > 0 && f(c, m) < options.zero_below) {
+        f(c, m) = 0;
+        ++rep.zeroed_values;
+      }
+      kept += f(c, m);
+    }
+    if (kept <= 0) throw InputError(file, cell_where(c), "every fraction is a trace or zero");
+    if (std::abs(kept - 1) > 1e-12) {
+      ++rep.rescaled_cells;
+      for (int m = 0; m < f.n_materials(); ++m) f(c, m) /= kept;
+    }
+  }
+  if (report) *report = rep;
+  return f;
+}
+
+}  // namespace hexadapt

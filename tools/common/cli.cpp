@@ -1,0 +1,124 @@
+#include "cli.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include <unistd.h>
+
+#include "hexadapt/core/error.h"
+#include "hexadapt/core/parallel.h"
+#include "hexadapt/io/atomic_file.h"
+
+namespace hexadapt::cli {
+
+namespace {
+std::vector<std::string> g_args;  // the command line as given, for provenance
+}
+
+void add_common_options(CLI::App& app, CommonOptions& options, bool with_output) {
+  if (with_output) app.add_option("-o,--output", options.output, "Output file")->required();
+  app.add_option("--json", options.json, "Write a machine-readable report (JSON) to this file");
+  app.add_flag("-q,--quiet", options.quiet, "Only print errors");
+  app.add_flag("-v,--verbose", options.verbose, "More messages on stderr (repeat for debug)");
+  app.add_option("--threads", options.threads, "Number of threads (0: all cores)")
+      ->check(CLI::NonNegativeNumber);
+}
+
+int run(CLI::App& app, int argc, char** argv, CommonOptions& options,
+        const std::function<int()>& body) {
+  g_args.assign(argv, argv + argc);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? ok : usage;
+  }
+  const std::string tool = app.get_name();
+  set_log_sink(
+      [tool](LogLevel level, std::string_view message) {
+        const char* tag = level >= LogLevel::error     ? "error: "
+                          : level == LogLevel::warning ? "warning: "
+                                                       : "";
+        std::cerr << tool << ": " << tag << message << '\n';
+      },
+      options.quiet ? LogLevel::error
+                    : options.verbose >= 2 ? LogLevel::debug
+                    : options.verbose == 1 ? LogLevel::info
+                                           : LogLevel::warning);
+  try {
+    set_threads(options.threads);
+    return body();
+  } catch (const OptionError& e) {
+    std::cerr << tool << ": error: " << e.what() << '\n';
+    return usage;
+  } catch (const InputError& e) {
+    std::cerr << tool << ": error: " << e.what() << '\n';
+    return bad_input;
+  } catch (const MeshError& e) {
+    std::cerr << tool << ": error: invalid mesh: " << e.what() << '\n';
+    return bad_input;
+  } catch (const IoError& e) {
+    std::cerr << tool << ": error: " << e.what() << '\n';
+    return bad_input;
+  } catch (const std::bad_alloc&) {
+    std::cerr << tool << ": error: out of memory\n";
+    return internal;
+  } catch (const std::exception& e) {
+    std::cerr << tool << ": internal error: " << e.what() << '\n';
+    return internal;
+  }
+}
+
+Progress terminal_progress(const CommonOptions& options) {
+  if (options.quiet || !::isatty(STDERR_FILENO)) return nullptr;
+  return [](std::string_view phase, double fraction) {
+    constexpr int width = 30;
+    const int filled = static_cast<int>(fraction * width + 0.5);
+    std::fprintf(stderr, "\r%-24.*s [%.*s%*s] %3d%%", static_cast<int>(phase.size()),
+                 phase.data(), filled, "##############################", width - filled, "",
+                 static_cast<int>(fraction * 100 + 0.5));
+    if (fraction >= 1.0) std::fputc('\n', stderr);
+    std::fflush(stderr);
+  };
+}
+
+std::vector<std::pair<std::string, std::string>> provenance(const CLI::App& app) {
+  std::string line;
+  for (std::size_t i = 0; i < g_args.size(); ++i) {
+    if (i) line += ' ';
+    line += i == 0 ? app.get_name() : g_args[i];
+  }
+  return {{"hexadapt_tool", app.get_name()},
+          {"hexadapt_version", HEXADAPT_VERSION},
+          {"hexadapt_command", line}};
+}
+
+Json report_header(const CLI::App& app) {
+  Json j;
+  for (const auto& [k, v] : provenance(app)) j[k.substr(9)] = v;  // drop "hexadapt_"
+  return j;
+}
+
+Json phase_times_json(const PhaseTimes& times) {
+  Json j = Json::object();
+  for (const auto& [name, seconds] : times) j[name] = seconds;
+  return j;
+}
+
+void write_report(const CommonOptions& options, const Json& report) {
+  if (options.json.empty()) return;
+  io::write_file_atomically(options.json, report.dump(2) + "\n");
+}
+
+void refuse_overwrite(const std::string& output, const std::vector<std::string>& inputs) {
+  namespace fs = std::filesystem;
+  for (const auto& in : inputs) {
+    std::error_code ec;
+    if (fs::exists(output, ec) && fs::equivalent(output, in, ec))
+      throw OptionError("output " + output + " is the input file " + in +
+                        ": refusing to overwrite an input");
+  }
+}
+
+}  // namespace hexadapt::cli

@@ -1,0 +1,63 @@
+// What every hexadapt tool shares: standard flags, exit codes, the JSON report, the progress
+// bar on a terminal, and the provenance recorded in every output file (DESIGN sec. 2).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "hexadapt/core/log.h"
+#include "hexadapt/core/timer.h"
+
+namespace hexadapt::cli {
+
+/// Reports keep their keys in insertion order.
+using Json = nlohmann::ordered_json;
+
+/// Exit codes of every tool.
+enum Exit : int {
+  ok = 0,
+  usage = 1,         ///< bad command line
+  bad_input = 2,     ///< unreadable or invalid input, or an output that cannot be written
+  target_missed = 3, ///< ran, but the requested target (e.g. quality) was not met
+  internal = 4,      ///< a bug
+};
+
+struct CommonOptions {
+  std::string output;       ///< -o
+  std::string json;         ///< --json
+  bool quiet = false;       ///< -q
+  int verbose = 0;          ///< -v (repeatable)
+  int threads = 0;          ///< --threads, 0 = all cores
+};
+
+/// Adds -o (when `with_output`), --json, -q, -v and --threads to `app`.
+void add_common_options(CLI::App& app, CommonOptions& options, bool with_output = true);
+
+/// Parses the command line, applies -q/-v/--threads, runs `body` and maps exceptions to exit
+/// codes with a one-line message on stderr. `body` returns the exit code.
+int run(CLI::App& app, int argc, char** argv, CommonOptions& options,
+        const std::function<int()>& body);
+
+/// A progress callback that draws a bar on stderr when it is a terminal and -q is off;
+/// nullptr otherwise.
+Progress terminal_progress(const CommonOptions& options);
+
+/// Key/value provenance of this run (tool, version, command line) for output metadata.
+std::vector<std::pair<std::string, std::string>> provenance(const CLI::App& app);
+
+/// The report skeleton every tool fills: tool, version, provenance, timings.
+Json report_header(const CLI::App& app);
+Json phase_times_json(const PhaseTimes& times);
+
+/// Writes the report to --json (atomically) when it was given.
+void write_report(const CommonOptions& options, const Json& report);
+
+/// Throws hexadapt::OptionError when `output` names the same file as one of `inputs`.
+void refuse_overwrite(const std::string& output, const std::vector<std::string>& inputs);
+
+}  // namespace hexadapt::cli
