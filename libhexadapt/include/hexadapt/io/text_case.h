@@ -1,0 +1,19 @@
+// The plain text formats of small hand-made cases (DESIGN sec. 7.1), compatible with the
+// reference implementation's test inputs: the structured "internal format" (unit cells,
+// origin 0) and the unstructured 2D "unstruct format". Fractions become cell arrays
+// vf_<material name>, in the order the materials are listed.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "hexadapt/io/mesh_data.h"
+
+namespace hexadapt::io {
+
+/// Parses either format (told apart by its layout); `file` names it in error messages,
+/// which give the line. Throws InputError for wrong counts, indices out of range,
+/// fractions outside [0, 1], per-cell sums over 1 and truncated files.
+MeshData read_text_case(std::string_view content, const std::string& file);
+
+}  // namespace hexadapt::io
