@@ -3,38 +3,35 @@
 #include <algorithm>
 #include <cmath>
 
+#include "frames.h"
+
 namespace hexadapt {
 
 namespace {
 
-constexpr double kTiny = 1e-300;
-
-// det(a, b, c) / (|a| |b| |c|), or nullopt-like -2 marker for a degenerate frame.
-bool scaled_det(const Vec3& a, const Vec3& b, const Vec3& c, double& out) {
-  const double la = a.squaredNorm(), lb = b.squaredNorm(), lc = c.squaredNorm();
-  if (la < kTiny || lb < kTiny || lc < kTiny) return false;
-  out = a.dot(b.cross(c)) / std::sqrt(la * lb * lc);
-  return true;
+// det(a, b, c) / (|a| |b| |c|) computed on unit vectors, so that neither tiny nor huge
+// coordinates underflow or overflow the product of the lengths. False for a degenerate frame.
+bool scaled_det(const Vec3& a, const Vec3& b, const Vec3& c, double scale, double& out) {
+  const double la = a.norm(), lb = b.norm(), lc = c.norm();
+  const double tiny = quality_detail::degenerate_length * scale;
+  if (!(la > tiny && lb > tiny && lc > tiny)) return false;  // also catches NaN
+  out = (a / la).dot((b / lb).cross(c / lc));
+  return std::isfinite(out);
 }
 
 }  // namespace
 
 double hex_scaled_jacobian(const std::array<Vec3, 8>& p) {
-  // Principal axes: difference of the centroids of opposite faces (times 4).
-  const Vec3 ax = (p[1] + p[3] + p[5] + p[7]) - (p[0] + p[2] + p[4] + p[6]);
-  const Vec3 ay = (p[2] + p[3] + p[6] + p[7]) - (p[0] + p[1] + p[4] + p[5]);
-  const Vec3 az = (p[4] + p[5] + p[6] + p[7]) - (p[0] + p[1] + p[2] + p[3]);
+  const double scale = quality_detail::hex_scale(p);
+  if (!(scale > 0) || !std::isfinite(scale)) return -1.0;
+  const auto axes = quality_detail::hex_principal_axes(p);
   double worst;
-  if (!scaled_det(ax, ay, az, worst)) return -1.0;
-  for (int v = 0; v < 8; ++v) {
-    // Edges towards the neighbours along x, y, z; an odd number of "upper" bits flips the
-    // frame's handedness, hence the sign.
-    const auto u = static_cast<std::size_t>(v);
-    const Vec3 a = p[u ^ 1u] - p[u], b = p[u ^ 2u] - p[u], c = p[u ^ 4u] - p[u];
+  if (!scaled_det(axes[0], axes[1], axes[2], 4 * scale, worst)) return -1.0;
+  for (std::size_t v = 0; v < 8; ++v) {
+    const auto f = quality_detail::hex_corner_frame(p, v);
     double j;
-    if (!scaled_det(a, b, c, j)) return -1.0;
-    const int parity = (v & 1) + ((v >> 1) & 1) + ((v >> 2) & 1);
-    worst = std::min(worst, parity % 2 ? -j : j);
+    if (!scaled_det(f[0], f[1], f[2], scale, j)) return -1.0;
+    worst = std::min(worst, j);
   }
   return std::clamp(worst, -1.0, 1.0);
 }
@@ -63,12 +60,16 @@ double hex_volume(const std::array<Vec3, 8>& p) {
 }
 
 double quad_scaled_jacobian(const std::array<Vec3, 4>& p) {
+  const double scale = quality_detail::quad_scale(p);
+  if (!(scale > 0) || !std::isfinite(scale)) return -1.0;
+  const double tiny = quality_detail::degenerate_length * scale;
   double worst = 1.0;
   for (std::size_t v = 0; v < 4; ++v) {
-    const Vec3 a = p[(v + 1) % 4] - p[v], b = p[(v + 3) % 4] - p[v];
-    const double la = a.head<2>().squaredNorm(), lb = b.head<2>().squaredNorm();
-    if (la < kTiny || lb < kTiny) return -1.0;
-    worst = std::min(worst, (a.x() * b.y() - a.y() * b.x()) / std::sqrt(la * lb));
+    const auto [a, b] = quality_detail::quad_corner_frame(p, v);
+    const double la = a.norm(), lb = b.norm();
+    if (!(la > tiny && lb > tiny)) return -1.0;
+    const Eigen::Vector2d ua = a / la, ub = b / lb;
+    worst = std::min(worst, ua.x() * ub.y() - ua.y() * ub.x());
   }
   return std::clamp(worst, -1.0, 1.0);
 }

@@ -5,9 +5,11 @@
 // det(a, b, c) / (|a| |b| |c|), so values match ParaView's Mesh Quality filter and Cubit.
 // Quad (2D, in the xy plane): signed with the fixed orientation +z, the minimum over the four
 // corners of cross(e_next, e_prev).z / (|e_next| |e_prev|), so a clockwise (inverted) quad
-// is negative. A degenerate cell (an edge or axis shorter than 1e-300) scores -1, the worst
-// value, never a perfect one. Corner order: binary for hexes, counter-clockwise for quads
-// (geometry.h).
+// is negative (ParaView's QuadScaledJacobian orients each quad by its own normal instead,
+// so it agrees with this one on counter-clockwise quads only). A degenerate cell (an edge or
+// axis shorter than 1e-13 times the cell's longest edge, or a NaN coordinate) scores -1,
+// the worst value, never a perfect one (Verdict returns DBL_MAX for hexes and 0 for quads
+// there). Corner order: binary for hexes, counter-clockwise for quads (geometry.h).
 #pragma once
 
 #include <array>

@@ -1,0 +1,59 @@
+// The corner frames and principal axes that the Verdict metrics (scaled Jacobian, shape)
+// are built from, shared by scaled_jacobian.cpp and shape.cpp.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <utility>
+
+#include <Eigen/Core>
+
+#include "hexadapt/mesh/geometry.h"
+
+namespace hexadapt::quality_detail {
+
+/// A frame vector shorter than this times the cell's longest edge is a collapsed edge: the
+/// cell is degenerate (relative, so that the test does not depend on the units).
+inline constexpr double degenerate_length = 1e-13;
+
+/// The three edges leaving hex corner v, ordered so that they form a right-handed frame in
+/// a positively oriented hex (Verdict's corner Jacobian): towards the neighbours along x, y,
+/// z, with x and y swapped at the corners of odd parity (an odd number of "upper" bits
+/// mirrors the frame).
+inline std::array<Vec3, 3> hex_corner_frame(const std::array<Vec3, 8>& p, std::size_t v) {
+  const Vec3 a = p[v ^ 1u] - p[v], b = p[v ^ 2u] - p[v], c = p[v ^ 4u] - p[v];
+  const unsigned parity = (v & 1u) ^ ((v >> 1) & 1u) ^ ((v >> 2) & 1u);
+  if (parity) return {b, a, c};
+  return {a, b, c};
+}
+
+/// Differences of the centroids of opposite faces (times 4): the Jacobian at the centre.
+inline std::array<Vec3, 3> hex_principal_axes(const std::array<Vec3, 8>& p) {
+  return {(p[1] + p[3] + p[5] + p[7]) - (p[0] + p[2] + p[4] + p[6]),
+          (p[2] + p[3] + p[6] + p[7]) - (p[0] + p[1] + p[4] + p[5]),
+          (p[4] + p[5] + p[6] + p[7]) - (p[0] + p[1] + p[2] + p[3])};
+}
+
+/// The longest of the 12 edges: the length unit of the degeneracy test.
+inline double hex_scale(const std::array<Vec3, 8>& p) {
+  double s = 0;
+  for (const auto& e : ref_hex::edges)
+    s = std::max(s, (p[static_cast<std::size_t>(e[1])] - p[static_cast<std::size_t>(e[0])]).norm());
+  return s;
+}
+
+/// The two edges leaving quad corner v in the xy plane: towards the next and the previous
+/// corner, so that cross(next, prev).z > 0 for a counter-clockwise quad.
+inline std::pair<Eigen::Vector2d, Eigen::Vector2d> quad_corner_frame(const std::array<Vec3, 4>& p,
+                                                                     std::size_t v) {
+  return {(p[(v + 1) % 4] - p[v]).head<2>(), (p[(v + 3) % 4] - p[v]).head<2>()};
+}
+
+inline double quad_scale(const std::array<Vec3, 4>& p) {
+  double s = 0;
+  for (std::size_t v = 0; v < 4; ++v) s = std::max(s, (p[(v + 1) % 4] - p[v]).head<2>().norm());
+  return s;
+}
+
+}  // namespace hexadapt::quality_detail
