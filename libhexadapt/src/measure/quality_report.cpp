@@ -1,0 +1,84 @@
+#include "hexadapt/measure/quality_report.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "hexadapt/core/error.h"
+#include "hexadapt/io/mesh_data.h"
+#include "purity.h"
+
+namespace hexadapt {
+
+namespace {
+
+QualityStats stats(const std::vector<double>& v) {
+  QualityStats s;
+  if (v.empty()) return s;
+  s.min = *std::min_element(v.begin(), v.end());
+  s.max = *std::max_element(v.begin(), v.end());
+  double sum = 0;  // serial, in cell order: the same bytes whatever the thread count
+  for (double x : v) sum += x;
+  s.mean = sum / double(v.size());
+  return s;
+}
+
+QualityHistogram histogram(const std::vector<double>& v, int bins) {
+  QualityHistogram h;
+  h.counts.assign(static_cast<std::size_t>(bins), 0);
+  const double width = (h.hi - h.lo) / bins;
+  for (double x : v) {
+    const double f = std::floor((x - h.lo) / width);
+    const auto b = static_cast<std::size_t>(std::clamp(f, 0.0, double(bins - 1)));
+    ++h.counts[b];
+  }
+  return h;
+}
+
+Vec3 centroid(const io::MeshData& data, std::size_t c) {
+  const auto npc = static_cast<std::size_t>(data.nodes_per_cell());
+  Vec3 s = Vec3::Zero();
+  for (std::size_t k = 0; k < npc; ++k) s += data.points[data.cells[c * npc + k].idx()];
+  return s / double(npc);
+}
+
+void run_check(const io::MeshData& data, const QualityReportOptions& options,
+               QualityReport& report) {
+  AnyMesh mesh;
+  try {
+    mesh = io::to_mesh(data);
+  } catch (const MeshError& e) {
+    report.topology_error = e.what();
+    return;
+  }
+  report.check = std::visit([&](const auto& m) { return check_mesh(m, options.check); }, mesh);
+}
+
+}  // namespace
+
+QualityReport quality_report(const io::MeshData& data, const QualityReportOptions& options) {
+  if (options.bins < 1) throw OptionError("the histogram needs at least one bin");
+  if (data.n_cells() == 0) throw InputError("", "", "the mesh has no quad or hex cells");
+  const CellQualities q = cell_qualities(data);
+  QualityReport r;
+  r.dim = data.dim;
+  r.n_cells = data.n_cells();
+  r.n_nodes = data.n_points();
+  r.threshold = options.threshold;
+  r.scaled_jacobian = stats(q.scaled_jacobian);
+  r.shape = stats(q.shape);
+  r.histogram = histogram(q.scaled_jacobian, options.bins);
+  for (std::size_t c = 0; c < q.scaled_jacobian.size(); ++c) {
+    if (!(q.scaled_jacobian[c] < options.threshold)) continue;
+    if (++r.below_threshold <= options.max_listed)
+      r.first_below.push_back({CellId(c), q.scaled_jacobian[c], centroid(data, c)});
+  }
+  run_check(data, options, r);
+  r.purity = measure_purity(data, options);
+  return r;
+}
+
+QualityReport quality_report(const AnyMesh& mesh, const QualityReportOptions& options) {
+  return quality_report(io::from_mesh(mesh), options);
+}
+
+}  // namespace hexadapt
