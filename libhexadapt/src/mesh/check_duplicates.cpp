@@ -21,13 +21,12 @@ void find_duplicate_nodes(const std::vector<Vec3>& points, const MeshCheckOption
   parallel_for(static_cast<std::int64_t>(points.size()), [&](std::int64_t i) {
     const Vec3& p = points[static_cast<std::size_t>(i)];
     const Vec3 d = Vec3::Constant(tol);
-    for (NodeId m : grid.in_box(p - d, p + d)) {
-      if (m.value() >= i) break;  // in increasing id: only lower ids matter
-      if ((points[m.idx()] - p).norm() <= tol) {
-        first[static_cast<std::size_t>(i)] = m;
-        break;
-      }
-    }
+    NodeId lowest;
+    grid.for_each_in_box(p - d, p + d, [&](NodeId m) {
+      if (m.value() < i && (!lowest.valid() || m < lowest) && (points[m.idx()] - p).norm() <= tol)
+        lowest = m;
+    });
+    first[static_cast<std::size_t>(i)] = lowest;
   });
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (!first[i].valid()) continue;

@@ -47,6 +47,11 @@ PointGrid::PointGrid(const std::vector<Vec3>& points, std::vector<NodeId> ids, d
     keys_.push_back(k);
     ids_.push_back(n);
   }
+  for (std::size_t i = 0; i < keys_.size(); ++i) {
+    auto& range = rows_[{keys_[i][0], keys_[i][1]}];
+    if (range.second == 0) range.first = i;
+    range.second = i + 1;
+  }
 }
 
 bool PointGrid::key_of(const Vec3& p, Key& key) const {
@@ -59,30 +64,27 @@ bool PointGrid::key_of(const Vec3& p, Key& key) const {
   return true;
 }
 
+bool PointGrid::rows_of(const Vec3& lo, const Vec3& hi, Key& a, Key& b) const {
+  if (!key_of(lo, a) || !key_of(hi, b)) return false;
+  const double rows = double(b[0] - a[0] + 1) * double(b[1] - a[1] + 1);
+  return rows < double(ids_.size()) + 1;
+}
+
+std::pair<std::size_t, std::size_t> PointGrid::row(std::int64_t k, std::int64_t j,
+                                                   std::int64_t i0, std::int64_t i1) const {
+  const auto it = rows_.find({k, j});
+  if (it == rows_.end()) return {0, 0};
+  const auto begin = keys_.begin() + static_cast<std::ptrdiff_t>(it->second.first);
+  const auto end = keys_.begin() + static_cast<std::ptrdiff_t>(it->second.second);
+  const auto first = std::lower_bound(begin, end, Key{k, j, i0});
+  const auto last = std::upper_bound(first, end, Key{k, j, i1});
+  return {static_cast<std::size_t>(first - keys_.begin()),
+          static_cast<std::size_t>(last - keys_.begin())};
+}
+
 std::vector<NodeId> PointGrid::in_box(const Vec3& lo, const Vec3& hi) const {
   std::vector<NodeId> out;
-  auto inside = [&](NodeId n) {
-    const Vec3& p = points_[n.idx()];
-    return (p.array() >= lo.array()).all() && (p.array() <= hi.array()).all();
-  };
-  Key a, b;
-  const bool keyed = key_of(lo, a) && key_of(hi, b);
-  const double rows = keyed ? double(b[0] - a[0] + 1) * double(b[1] - a[1] + 1) : std::numeric_limits<double>::infinity();
-  if (!(rows < double(ids_.size()) + 1)) {
-    // A box larger than the point set in rows: a linear scan is cheaper.
-    for (NodeId n : ids_)
-      if (inside(n)) out.push_back(n);
-  } else {
-    for (std::int64_t k = a[0]; k <= b[0]; ++k)
-      for (std::int64_t j = a[1]; j <= b[1]; ++j) {
-        const auto first = std::lower_bound(keys_.begin(), keys_.end(), Key{k, j, a[2]});
-        const auto last = std::upper_bound(first, keys_.end(), Key{k, j, b[2]});
-        for (auto it = first; it != last; ++it) {
-          const NodeId n = ids_[static_cast<std::size_t>(it - keys_.begin())];
-          if (inside(n)) out.push_back(n);
-        }
-      }
-  }
+  for_each_in_box(lo, hi, [&](NodeId n) { out.push_back(n); });
   std::sort(out.begin(), out.end());
   return out;
 }
