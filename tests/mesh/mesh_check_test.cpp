@@ -176,6 +176,17 @@ TEST(MeshCheck, LinkThatIsAnAnnulus) {
   EXPECT_EQ(r.unreferenced_nodes, 2);  // the corners of the removed cells
 }
 
+TEST(MeshCheck, PinchedEdgeUnderAConnectedStar) {
+  // Bottom layer of a 2x2x2 block with two diagonal cells only, the top layer full: the
+  // vertical edge (1,1,0)-(1,1,1) is pinched. The star of its upper end is connected through
+  // the top layer, but its boundary faces meet four times at (1,1,0): not one fan.
+  const auto r = check_mesh(without(make_hex_grid(2, 2, 2), {1, 2}));
+  EXPECT_EQ(r.nonmanifold_nodes, 2);
+  ASSERT_EQ(r.first_nonmanifold.size(), 2u);
+  EXPECT_EQ(r.first_nonmanifold[0].node, NodeId(4));   // (1,1,0): star of two cells on an edge
+  EXPECT_EQ(r.first_nonmanifold[1].node, NodeId(13));  // (1,1,1)
+}
+
 TEST(MeshCheck, LargeGridIsFast) {
   // Linear-time candidates: 27k cells in well under a second.
   const HexMesh m = make_hex_grid(30, 30, 30);

@@ -1,6 +1,7 @@
 #include "hexadapt/mesh/mesh_check.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "hexadapt/core/parallel.h"
 #include "hexadapt/mesh/cell_complex.h"
