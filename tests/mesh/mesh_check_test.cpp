@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "hexadapt/core/parallel.h"
 #include "hexadapt/mesh/cell_complex.h"
 #include "hexadapt/mesh/structured.h"
 
@@ -206,6 +207,32 @@ TEST(MeshCheck, ListsAreCapped) {
   const auto r = check_mesh(HexMesh(pts, cells), o);
   EXPECT_EQ(r.unreferenced_nodes, 20);
   EXPECT_EQ(r.first_unreferenced.size(), 3u);
+}
+
+TEST(MeshCheck, SameListsWhateverTheThreadCount) {
+  // Every other node of a grid duplicated as an unreferenced copy: many offenders of two
+  // kinds, listed the same way by 1 and 2 threads.
+  const HexMesh grid = make_hex_grid(6, 5, 4);
+  std::vector<Vec3> pts = grid.points();
+  for (std::size_t n = 0; n < grid.points().size(); n += 2) pts.push_back(grid.points()[n]);
+  std::vector<H> cells;
+  for (CellId c : id_range<CellId>(grid.n_cells())) cells.push_back(grid.cell_nodes(c));
+  const HexMesh m(pts, cells);
+  MeshCheckOptions o;
+  o.max_listed = 1000;
+  set_threads(1);
+  const auto a = check_mesh(m, o);
+  set_threads(2);
+  const auto b = check_mesh(m, o);
+  set_threads(0);
+  EXPECT_EQ(a.duplicate_nodes, 105);
+  EXPECT_EQ(a.unreferenced_nodes, 105);
+  ASSERT_EQ(a.first_duplicates.size(), b.first_duplicates.size());
+  for (std::size_t i = 0; i < a.first_duplicates.size(); ++i) {
+    EXPECT_EQ(a.first_duplicates[i].node, b.first_duplicates[i].node);
+    EXPECT_EQ(a.first_duplicates[i].other, b.first_duplicates[i].other);
+  }
+  EXPECT_EQ(a.first_duplicates[0].other, NodeId(0));
 }
 
 }  // namespace
