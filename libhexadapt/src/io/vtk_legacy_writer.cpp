@@ -1,0 +1,150 @@
+// Legacy VTK writer: binary UNSTRUCTURED_GRID in the classic CELLS / CELL_TYPES layout
+// (file version 4.2), which VTK 9, ParaView and meshio all read. One-component arrays are
+// written as SCALARS, the others in one FIELD block per section; every array keeps its type.
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstring>
+#include <string>
+
+#include "hexadapt/io/atomic_file.h"
+#include "hexadapt/io/vtk_legacy.h"
+#include "vtk_cells.h"
+
+namespace hexadapt::io {
+
+namespace {
+
+class BigEndianBuffer {
+ public:
+  template <class T>
+  void put(T v) {
+    std::array<char, sizeof(T)> b;
+    std::memcpy(b.data(), &v, sizeof(T));
+    std::reverse(b.begin(), b.end());
+    out_.append(b.data(), sizeof(T));
+  }
+  void text(const std::string& s) { out_ += s; }
+  std::string& str() { return out_; }
+
+ private:
+  std::string out_;
+};
+
+const char* legacy_name(ScalarType t) {
+  switch (t) {
+    case ScalarType::int8: return "char";
+    case ScalarType::uint8: return "unsigned_char";
+    case ScalarType::int16: return "short";
+    case ScalarType::uint16: return "unsigned_short";
+    case ScalarType::int32: return "int";
+    case ScalarType::uint32: return "unsigned_int";
+    case ScalarType::int64: return "vtktypeint64";
+    case ScalarType::uint64: return "vtktypeuint64";
+    case ScalarType::float32: return "float";
+    case ScalarType::float64: return "double";
+  }
+  return "double";
+}
+
+void put_values(BigEndianBuffer& b, const DataArray& a) {
+  for (double v : a.values) switch (a.type) {
+      case ScalarType::int8: b.put(static_cast<std::int8_t>(v)); break;
+      case ScalarType::uint8: b.put(static_cast<std::uint8_t>(v)); break;
+      case ScalarType::int16: b.put(static_cast<std::int16_t>(v)); break;
+      case ScalarType::uint16: b.put(static_cast<std::uint16_t>(v)); break;
+      case ScalarType::int32: b.put(static_cast<std::int32_t>(v)); break;
+      case ScalarType::uint32: b.put(static_cast<std::uint32_t>(v)); break;
+      case ScalarType::int64: b.put(static_cast<std::int64_t>(v)); break;
+      case ScalarType::uint64: b.put(static_cast<std::uint64_t>(v)); break;
+      case ScalarType::float32: b.put(static_cast<float>(v)); break;
+      case ScalarType::float64: b.put(v); break;
+    }
+  b.text("\n");
+}
+
+// Names cannot hold whitespace in the legacy format: VTK's own %XX escape.
+std::string encode_name(const std::string& name) {
+  static const char* hex = "0123456789ABCDEF";
+  std::string out;
+  for (char c : name) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u <= ' ' || u >= 127 || c == '%') {
+      out += '%';
+      out += hex[u >> 4];
+      out += hex[u & 15];
+    } else {
+      out += c;
+    }
+  }
+  return out.empty() ? std::string("unnamed") : out;
+}
+
+// The title line: provenance as "key=value" pairs, one line of at most 255 characters.
+std::string title_of(const MeshData& data) {
+  std::string t = "hexadapt";
+  for (const auto& [key, value] : data.metadata) t += (t.size() == 8 ? ": " : "; ") + key + "=" + value;
+  for (char& c : t)
+    if (c == '\n' || c == '\r') c = ' ';
+  if (t.size() > 255) t.resize(255);
+  return t;
+}
+
+void write_section(BigEndianBuffer& b, const std::vector<DataArray>& arrays, const char* keyword,
+                   std::size_t n) {
+  if (arrays.empty()) return;
+  b.text(std::string(keyword) + " " + std::to_string(n) + "\n");
+  std::size_t n_field = 0;
+  for (const DataArray& a : arrays) {
+    if (a.n_components != 1) {
+      ++n_field;
+      continue;
+    }
+    b.text("SCALARS " + encode_name(a.name) + " " + legacy_name(a.type) + " 1\nLOOKUP_TABLE default\n");
+    put_values(b, a);
+  }
+  if (n_field == 0) return;
+  b.text("FIELD FieldData " + std::to_string(n_field) + "\n");
+  for (const DataArray& a : arrays)
+    if (a.n_components != 1) {
+      b.text(encode_name(a.name) + " " + std::to_string(a.n_components) + " " +
+             std::to_string(a.n_tuples()) + " " + legacy_name(a.type) + "\n");
+      put_values(b, a);
+    }
+}
+
+void write_cells(BigEndianBuffer& b, const MeshData& data) {
+  const auto n = static_cast<std::size_t>(data.n_cells());
+  const auto k = static_cast<std::size_t>(data.nodes_per_cell());
+  b.text("CELLS " + std::to_string(n) + " " + std::to_string(n * (k + 1)) + "\n");
+  for (std::size_t c = 0; c < n; ++c) {
+    b.put(static_cast<std::int32_t>(k));
+    const NodeId* v = data.cells.data() + c * k;
+    for (std::size_t i = 0; i < k; ++i) {
+      // MeshData hexes are in binary lattice order; VTK_HEXAHEDRON wants its own.
+      const std::size_t from = data.dim == 3 ? static_cast<std::size_t>(ref_hex::vtk_of_binary[i]) : i;
+      b.put(static_cast<std::int32_t>(v[from].value()));
+    }
+  }
+  b.text("\nCELL_TYPES " + std::to_string(n) + "\n");
+  const std::int32_t type = data.dim == 3 ? detail::vtk_hexahedron : detail::vtk_quad;
+  for (std::size_t c = 0; c < n; ++c) b.put(type);
+  b.text("\n");
+}
+
+}  // namespace
+
+void write_vtk_legacy(const MeshData& data, const std::string& path) {
+  BigEndianBuffer b;
+  b.text("# vtk DataFile Version 4.2\n" + title_of(data) + "\nBINARY\nDATASET UNSTRUCTURED_GRID\n");
+  b.text("POINTS " + std::to_string(data.points.size()) + " double\n");
+  for (const Vec3& p : data.points)
+    for (int a = 0; a < 3; ++a) b.put(p[a]);
+  b.text("\n");
+  write_cells(b, data);
+  write_section(b, data.cell_data, "CELL_DATA", static_cast<std::size_t>(data.n_cells()));
+  write_section(b, data.point_data, "POINT_DATA", data.points.size());
+  write_file_atomically(path, b.str());
+}
+
+}  // namespace hexadapt::io
