@@ -273,7 +273,7 @@ std::vector<Malformed> malformed_cases() {
       {"too many components", ug + kCubePoints + kHexCells + "CELL_DATA 1\nSCALARS s float 7\n",
        {"out of range [1, 4]"}},
       {"field tuples", ug + kCubePoints + kHexCells + "CELL_DATA 1\nFIELD F 1\na 1 2 float\n1 2\n",
-       {"line 12", "field array 'a' has 2 tuples, expected 1"}},
+       {"line 13", "field array 'a' has 2 tuples, expected 1"}},
       {"truncated array", ug + kCubePoints + kHexCells + "CELL_DATA 1\nSCALARS s float\nLOOKUP_TABLE default\n",
        {"end of file", "array values"}},
       {"rectilinear count", kHead + "DATASET RECTILINEAR_GRID\nDIMENSIONS 2 2 1\nX_COORDINATES 3 float\n0 1 2\n",

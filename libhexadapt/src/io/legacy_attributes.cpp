@@ -106,7 +106,7 @@ void read_field(LegacyScanner& s, MeshData& data, const Section& sec) {
   s.expect_token("a field name");
   const auto n_arrays = s.integer("a number of arrays", 0, 1 << 20);
   for (std::int64_t k = 0; k < n_arrays; ++k) {
-    const std::size_t at = s.position();
+    const std::size_t at = s.mark();
     DataArray a;
     if (read_field_array(s, a, nullptr)) {
       if (a.n_tuples() != sec.n_tuples || a.values.size() != sec.n_tuples * static_cast<std::size_t>(a.n_components))
@@ -120,7 +120,7 @@ void read_field(LegacyScanner& s, MeshData& data, const Section& sec) {
 
 void read_section_start(LegacyScanner& s, MeshData& data, Section& sec, bool cells) {
   const std::size_t expected = cells ? static_cast<std::size_t>(data.n_cells()) : data.points.size();
-  const std::size_t at = s.position();
+  const std::size_t at = s.mark();
   sec.cells = cells;
   sec.n_tuples = static_cast<std::size_t>(s.integer("a number of tuples", 0, INT64_MAX));
   if (sec.n_tuples != expected)
@@ -136,7 +136,7 @@ void read_attributes(LegacyScanner& s, MeshData& data) {
   Section sec;
   bool started = false;
   while (!s.at_end()) {
-    const std::size_t at = s.position();
+    const std::size_t at = s.mark();
     const std::string_view key = s.token();
     if (keyword_is(key, "CELL_DATA") || keyword_is(key, "POINT_DATA")) {
       read_section_start(s, data, sec, keyword_is(key, "CELL_DATA"));

@@ -85,7 +85,10 @@ bool keyword_is(std::string_view token, std::string_view keyword) {
 
 std::string LegacyScanner::where(std::size_t pos) const {
   if (binary_) return "byte " + std::to_string(pos);
-  const auto end = text_.begin() + static_cast<std::ptrdiff_t>(std::min(pos, text_.size()));
+  pos = std::min(pos, text_.size());
+  // At the end of a file that ends with a newline, the last line is the place.
+  if (pos == text_.size() && pos > 0 && text_[pos - 1] == '\n') --pos;
+  const auto end = text_.begin() + static_cast<std::ptrdiff_t>(pos);
   return "line " + std::to_string(1 + std::count(text_.begin(), end, '\n'));
 }
 
@@ -169,7 +172,7 @@ void LegacyScanner::skip_block() {
 }
 
 const LegacyType& LegacyScanner::data_type() {
-  const std::size_t at = pos_;
+  const std::size_t at = mark();
   const std::string_view t = expect_token("a data type");
   for (const LegacyType& d : kTypes)
     if (keyword_is(t, d.name)) return d;

@@ -33,6 +33,11 @@ class LegacyScanner {
   bool binary() const { return binary_; }
   void set_binary(bool b) { binary_ = b; }
   std::size_t position() const { return pos_; }
+  /// Skips whitespace and returns the position of the next token (never before binary data).
+  std::size_t mark() {
+    skip_space();
+    return pos_;
+  }
 
   /// The next line as is (without its newline, trailing '\r' removed); for the header.
   std::string_view line();

@@ -72,7 +72,7 @@ void read_unstructured_mesh(LegacyScanner& s, MeshData& data, CellNumbering& num
     data.points.emplace_back(xyz[3 * p], xyz[3 * p + 1], xyz[3 * p + 2]);
   const auto n_cells = s.integer("a number of cells", 0, kMaxIds);
   for (std::int64_t c = 0; c < n_cells; ++c) {
-    const std::size_t at = s.position();
+    const std::size_t at = s.mark();
     const auto n = s.integer("a number of cell nodes", 0, kMaxIds);
     if (n != 4) s.fail_at(at, "cell " + std::to_string(c) + " has " + std::to_string(n) + " nodes, expected 4 (quads)");
     std::array<std::int64_t, 4> ids{};
@@ -85,7 +85,7 @@ void read_unstructured_mesh(LegacyScanner& s, MeshData& data, CellNumbering& num
 
 void read_material(LegacyScanner& s, const CellNumbering& numbering, std::vector<double>& sums,
                    MeshData& data, std::vector<std::int64_t>& indices) {
-  const std::size_t at = s.position();
+  const std::size_t at = s.mark();
   const auto index = s.integer("a material index", 0, kMaxIds);
   if (std::find(indices.begin(), indices.end(), index) != indices.end())
     s.fail_at(at, "material index " + std::to_string(index) + " listed twice");

@@ -56,7 +56,7 @@ Vec3 read_vec3(LegacyScanner& s, const char* what) {
 }
 
 void read_points(LegacyScanner& s, Geometry& g) {
-  const std::size_t at = s.position();
+  const std::size_t at = s.mark();
   const auto n = s.integer("a number of points", 0, kMaxIds);
   if (g.kind == Kind::structured && g.have_dims && n != n_structured_points(s, g))
     s.fail_at(at, "POINTS " + std::to_string(n) + " does not match DIMENSIONS (" +
@@ -70,7 +70,7 @@ void read_points(LegacyScanner& s, Geometry& g) {
 }
 
 void read_coordinates(LegacyScanner& s, Geometry& g, int axis) {
-  const std::size_t at = s.position();
+  const std::size_t at = s.mark();
   const auto n = s.integer("a number of coordinates", 1, kMaxIds);
   if (!g.have_dims) s.fail_at(at, "coordinates before DIMENSIONS");
   if (n != g.dims[static_cast<std::size_t>(axis)])
@@ -107,12 +107,12 @@ void read_classic_cells(LegacyScanner& s, Geometry& g, std::int64_t n, std::int6
 // VTK 9 layout (file version 5.x): "CELLS n_offsets n_connectivity", OFFSETS, CONNECTIVITY.
 void read_offset_cells(LegacyScanner& s, Geometry& g, std::int64_t n_off, std::int64_t m) {
   auto block = [&](const char* keyword, std::int64_t count) {
-    const std::size_t at = s.position();
+    const std::size_t at = s.mark();
     if (!keyword_is(s.token(), keyword))
       s.fail_at(at, std::string("expected ") + keyword);
     return s.integers(s.data_type(), static_cast<std::size_t>(count), keyword);
   };
-  const std::size_t at = s.position();
+  const std::size_t at = s.mark();
   g.offsets = block("OFFSETS", n_off);
   g.connectivity = block("CONNECTIVITY", m);
   if (g.offsets.empty()) g.offsets.assign(1, 0);
@@ -136,7 +136,7 @@ void read_cells(LegacyScanner& s, Geometry& g) {
 
 void read_cell_types(LegacyScanner& s, Geometry& g) {
   static constexpr detail::LegacyType kInt{"int", ScalarType::int32, 4, false};
-  const std::size_t at = s.position();
+  const std::size_t at = s.mark();
   const auto n = s.integer("a number of cell types", 0, kMaxIds);
   if (!g.have_cells) s.fail_at(at, "CELL_TYPES before CELLS");
   const auto n_cells = static_cast<std::int64_t>(g.offsets.size()) - 1;
@@ -223,15 +223,15 @@ Kind read_header(LegacyScanner& s, MeshData& data) {
     s.fail_at(0, "not a legacy VTK file (expected '# vtk DataFile Version x.x' on line 1)");
   const std::string title(s.line());
   if (!title.empty()) data.metadata.emplace_back("title", title);
-  const std::size_t at = s.position();
+  const std::size_t at = s.mark();
   const std::string_view mode = s.token();
   if (keyword_is(mode, "BINARY"))
     s.set_binary(true);
   else if (!keyword_is(mode, "ASCII"))
     s.fail_at(at, "expected ASCII or BINARY on line 3, found '" + std::string(mode) + "'");
-  const std::size_t at_set = s.position();
+  const std::size_t at_set = s.mark();
   if (!keyword_is(s.token(), "DATASET")) s.fail_at(at_set, "expected DATASET");
-  const std::size_t at_kind = s.position();
+  const std::size_t at_kind = s.mark();
   const std::string_view kind = s.expect_token("a data set type");
   if (keyword_is(kind, "STRUCTURED_POINTS")) return Kind::points;
   if (keyword_is(kind, "RECTILINEAR_GRID")) return Kind::rectilinear;
@@ -251,7 +251,7 @@ MeshData read_vtk_legacy(std::string_view content, const std::string& file,
   Geometry g;
   g.kind = read_header(s, data);
   while (!s.at_end()) {
-    const std::size_t at = s.position();
+    const std::size_t at = s.mark();
     const std::string_view key = s.peek_token();
     if (keyword_is(key, "CELL_DATA") || keyword_is(key, "POINT_DATA")) break;
     s.token();
