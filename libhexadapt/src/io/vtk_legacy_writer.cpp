@@ -39,8 +39,9 @@ const char* legacy_name(ScalarType t) {
     case ScalarType::uint16: return "unsigned_short";
     case ScalarType::int32: return "int";
     case ScalarType::uint32: return "unsigned_int";
-    case ScalarType::int64: return "vtktypeint64";
-    case ScalarType::uint64: return "vtktypeuint64";
+    // meshio's 4.2 reader knows no vtktypeint64; VTK reads long as 8 bytes on LP64 systems.
+    case ScalarType::int64: return "long";
+    case ScalarType::uint64: return "unsigned_long";
     case ScalarType::float32: return "float";
     case ScalarType::float64: return "double";
   }
@@ -83,7 +84,11 @@ std::string encode_name(const std::string& name) {
 // The title line: provenance as "key=value" pairs, one line of at most 255 characters.
 std::string title_of(const MeshData& data) {
   std::string t = "hexadapt";
-  for (const auto& [key, value] : data.metadata) t += (t.size() == 8 ? ": " : "; ") + key + "=" + value;
+  const char* separator = ": ";
+  for (const auto& [key, value] : data.metadata) {
+    t += separator + key + "=" + value;
+    separator = "; ";
+  }
   for (char& c : t)
     if (c == '\n' || c == '\r') c = ' ';
   if (t.size() > 255) t.resize(255);
