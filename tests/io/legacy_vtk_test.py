@@ -61,7 +61,10 @@ def add_arrays(ds, n_points, n_cells, rng):
     cd.AddArray(make(vtk.vtkIntArray, "material", n_cells, 1, -3, 9))
     cd.AddArray(make(vtk.vtkUnsignedCharArray, "flags", n_cells, 1, 0, 255))
     cd.AddArray(make(vtk.vtkLongLongArray, "big", n_cells, 1, -2**40, 2**40))
-    cd.AddArray(make(vtk.vtkDoubleArray, "pair", n_cells, 2, None, None))
+    pair = make(vtk.vtkDoubleArray, "pair", n_cells, 2, None, None)
+    pair.SetComponentName(0, "first")  # makes VTK write a METADATA block
+    pair.SetComponentName(1, "second")
+    cd.AddArray(pair)
     vec = make(vtk.vtkFloatArray, "velocity", n_points, 3, None, None)
     pd.AddArray(vec)
     pd.SetVectors(vec)
@@ -308,7 +311,7 @@ def main():
     meshio_written_files(rng)
     our_files_read_back(rng)
     print(f"{len(FAILURES)} failures; files in {TMP}")
-    if not FAILURES:
+    if not FAILURES and not os.environ.get("KEEP"):
         import shutil
         shutil.rmtree(TMP)
     return 1 if FAILURES else 0

@@ -285,6 +285,8 @@ std::vector<Malformed> malformed_cases() {
       {"zero dimension", kHead + "DATASET STRUCTURED_POINTS\nDIMENSIONS 2 0 1\n", {"out of range"}},
       {"huge dimensions", kHead + "DATASET STRUCTURED_POINTS\nDIMENSIONS 100000 100000 100000\n",
        {"32-bit ids"}},
+      {"lattice without data", kHead + "DATASET STRUCTURED_POINTS\nDIMENSIONS 2000 2000 2\n",
+       {"announce 8000000 points but only"}},
       {"line of points", kHead + "DATASET STRUCTURED_POINTS\nDIMENSIONS 5 1 1\n", {"single row"}},
       {"binary lying size", bin + "POINTS 100000000 float\n" + std::string(24, '\0'),
        {"byte 85", "300000000 point coordinates", "24 bytes left"}},

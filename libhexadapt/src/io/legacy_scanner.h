@@ -8,6 +8,7 @@
 // Errors name the file and the place: "line N" in ASCII files, "byte N" in binary ones.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -33,6 +34,7 @@ class LegacyScanner {
   bool binary() const { return binary_; }
   void set_binary(bool b) { binary_ = b; }
   std::size_t position() const { return pos_; }
+  std::size_t remaining() const { return text_.size() - std::min(pos_, text_.size()); }
   /// Skips whitespace and returns the position of the next token (never before binary data).
   std::size_t mark() {
     skip_space();

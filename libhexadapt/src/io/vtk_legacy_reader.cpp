@@ -213,6 +213,12 @@ void build_geometry(LegacyScanner& s, Geometry& g, MeshData& data, const ReadOpt
   if (g.kind == Kind::rectilinear && !(g.have_coords[0] && g.have_coords[1] && g.have_coords[2]))
     s.fail("a RECTILINEAR_GRID needs X_COORDINATES, Y_COORDINATES and Z_COORDINATES");
   if (g.kind == Kind::structured && !g.have_points) s.fail("a STRUCTURED_GRID needs POINTS");
+  // A lattice is generated, not read: millions of points announced in a file too small to
+  // hold any array for them are a lie (or nothing to work on), refused before allocating.
+  const std::int64_t n = n_structured_points(s, g);
+  if (g.kind != Kind::structured && n > (1 << 20) && static_cast<std::size_t>(n / 8) > s.remaining())
+    s.fail("DIMENSIONS announce " + std::to_string(n) + " points but only " +
+           std::to_string(s.remaining()) + " bytes of data follow");
   std::vector<Vec3> pts = g.kind == Kind::structured ? std::move(g.points) : lattice_points(g);
   detail::fill_structured(data, g.dims, std::move(pts), options, s.file());
 }

@@ -15,14 +15,21 @@ namespace hexadapt::io {
 
 namespace {
 
+// Values are converted and byte-swapped in blocks: one resize per block, no per-value append.
 class BigEndianBuffer {
  public:
-  template <class T>
-  void put(T v) {
-    std::array<char, sizeof(T)> b;
-    std::memcpy(b.data(), &v, sizeof(T));
-    std::reverse(b.begin(), b.end());
-    out_.append(b.data(), sizeof(T));
+  /// Appends n values produced by value(k), stored as T in big-endian order.
+  template <class T, class F>
+  void put_block(std::size_t n, F value) {
+    const std::size_t at = out_.size();
+    out_.resize(at + n * sizeof(T));
+    char* p = out_.data() + at;
+    for (std::size_t k = 0; k < n; ++k, p += sizeof(T)) {
+      const T v = static_cast<T>(value(k));
+      std::array<char, sizeof(T)> b;
+      std::memcpy(b.data(), &v, sizeof(T));
+      std::reverse_copy(b.begin(), b.end(), p);
+    }
   }
   void text(const std::string& s) { out_ += s; }
   std::string& str() { return out_; }
@@ -49,18 +56,20 @@ const char* legacy_name(ScalarType t) {
 }
 
 void put_values(BigEndianBuffer& b, const DataArray& a) {
-  for (double v : a.values) switch (a.type) {
-      case ScalarType::int8: b.put(static_cast<std::int8_t>(v)); break;
-      case ScalarType::uint8: b.put(static_cast<std::uint8_t>(v)); break;
-      case ScalarType::int16: b.put(static_cast<std::int16_t>(v)); break;
-      case ScalarType::uint16: b.put(static_cast<std::uint16_t>(v)); break;
-      case ScalarType::int32: b.put(static_cast<std::int32_t>(v)); break;
-      case ScalarType::uint32: b.put(static_cast<std::uint32_t>(v)); break;
-      case ScalarType::int64: b.put(static_cast<std::int64_t>(v)); break;
-      case ScalarType::uint64: b.put(static_cast<std::uint64_t>(v)); break;
-      case ScalarType::float32: b.put(static_cast<float>(v)); break;
-      case ScalarType::float64: b.put(v); break;
-    }
+  const std::size_t n = a.values.size();
+  const auto v = [&](std::size_t k) { return a.values[k]; };
+  switch (a.type) {
+    case ScalarType::int8: b.put_block<std::int8_t>(n, v); break;
+    case ScalarType::uint8: b.put_block<std::uint8_t>(n, v); break;
+    case ScalarType::int16: b.put_block<std::int16_t>(n, v); break;
+    case ScalarType::uint16: b.put_block<std::uint16_t>(n, v); break;
+    case ScalarType::int32: b.put_block<std::int32_t>(n, v); break;
+    case ScalarType::uint32: b.put_block<std::uint32_t>(n, v); break;
+    case ScalarType::int64: b.put_block<std::int64_t>(n, v); break;
+    case ScalarType::uint64: b.put_block<std::uint64_t>(n, v); break;
+    case ScalarType::float32: b.put_block<float>(n, v); break;
+    case ScalarType::float64: b.put_block<double>(n, v); break;
+  }
   b.text("\n");
 }
 
@@ -122,18 +131,16 @@ void write_cells(BigEndianBuffer& b, const MeshData& data) {
   const auto n = static_cast<std::size_t>(data.n_cells());
   const auto k = static_cast<std::size_t>(data.nodes_per_cell());
   b.text("CELLS " + std::to_string(n) + " " + std::to_string(n * (k + 1)) + "\n");
-  for (std::size_t c = 0; c < n; ++c) {
-    b.put(static_cast<std::int32_t>(k));
-    const NodeId* v = data.cells.data() + c * k;
-    for (std::size_t i = 0; i < k; ++i) {
-      // MeshData hexes are in binary lattice order; VTK_HEXAHEDRON wants its own.
-      const std::size_t from = data.dim == 3 ? static_cast<std::size_t>(ref_hex::vtk_of_binary[i]) : i;
-      b.put(static_cast<std::int32_t>(v[from].value()));
-    }
-  }
+  // Per cell: its node count, then its nodes (hexes from binary lattice order to VTK's).
+  b.put_block<std::int32_t>(n * (k + 1), [&](std::size_t e) {
+    const std::size_t c = e / (k + 1), i = e % (k + 1);
+    if (i == 0) return static_cast<index_t>(k);
+    const std::size_t from = data.dim == 3 ? static_cast<std::size_t>(ref_hex::vtk_of_binary[i - 1]) : i - 1;
+    return data.cells[c * k + from].value();
+  });
   b.text("\nCELL_TYPES " + std::to_string(n) + "\n");
   const std::int32_t type = data.dim == 3 ? detail::vtk_hexahedron : detail::vtk_quad;
-  for (std::size_t c = 0; c < n; ++c) b.put(type);
+  b.put_block<std::int32_t>(n, [&](std::size_t) { return type; });
   b.text("\n");
 }
 
@@ -143,8 +150,8 @@ void write_vtk_legacy(const MeshData& data, const std::string& path) {
   BigEndianBuffer b;
   b.text("# vtk DataFile Version 4.2\n" + title_of(data) + "\nBINARY\nDATASET UNSTRUCTURED_GRID\n");
   b.text("POINTS " + std::to_string(data.points.size()) + " double\n");
-  for (const Vec3& p : data.points)
-    for (int a = 0; a < 3; ++a) b.put(p[a]);
+  b.put_block<double>(3 * data.points.size(),
+                     [&](std::size_t e) { return data.points[e / 3][static_cast<int>(e % 3)]; });
   b.text("\n");
   write_cells(b, data);
   write_section(b, data.cell_data, "CELL_DATA", static_cast<std::size_t>(data.n_cells()));
