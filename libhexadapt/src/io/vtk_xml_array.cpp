@@ -43,7 +43,8 @@ ByteReader payload_reader(const VtkXmlDocument& doc, const pugi::xml_node& e, co
   if (offset > doc.appended.size())
     throw InputError(doc.file, place(e), "offset " + std::to_string(offset) +
                                              " is beyond the end of the appended data (" +
-                                             std::to_string(doc.appended.size()) + " bytes)");
+                                             std::to_string(doc.appended.size()) +
+                                             " bytes; truncated file?)");
   const auto at = static_cast<std::size_t>(offset);
   const std::string_view rest = doc.appended.substr(at);
   return doc.appended_base64 ? ByteReader::base64(rest, doc.appended_offset + at, doc.file)
