@@ -4,31 +4,40 @@
 // Exit 0 on success, 2 with the error message on stderr when the library throws.
 #include <cstdio>
 #include <iostream>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/mesh_file.h"
 
 namespace {
 
-using nlohmann::json;
 using hexadapt::io::DataArray;
 using hexadapt::io::ScalarType;
+using nlohmann::json;
 
 const char* type_name(ScalarType t) {
   switch (t) {
-    case ScalarType::int8: return "int8";
-    case ScalarType::uint8: return "uint8";
-    case ScalarType::int16: return "int16";
-    case ScalarType::uint16: return "uint16";
-    case ScalarType::int32: return "int32";
-    case ScalarType::uint32: return "uint32";
-    case ScalarType::int64: return "int64";
-    case ScalarType::uint64: return "uint64";
-    case ScalarType::float32: return "float32";
-    case ScalarType::float64: return "float64";
+    case ScalarType::int8:
+      return "int8";
+    case ScalarType::uint8:
+      return "uint8";
+    case ScalarType::int16:
+      return "int16";
+    case ScalarType::uint16:
+      return "uint16";
+    case ScalarType::int32:
+      return "int32";
+    case ScalarType::uint32:
+      return "uint32";
+    case ScalarType::int64:
+      return "int64";
+    case ScalarType::uint64:
+      return "uint64";
+    case ScalarType::float32:
+      return "float32";
+    case ScalarType::float64:
+      return "float64";
   }
   return "?";
 }
@@ -36,7 +45,9 @@ const char* type_name(ScalarType t) {
 json arrays_json(const std::vector<DataArray>& arrays) {
   json out = json::array();
   for (const DataArray& a : arrays)
-    out.push_back({{"name", a.name}, {"components", a.n_components}, {"type", type_name(a.type)},
+    out.push_back({{"name", a.name},
+                   {"components", a.n_components},
+                   {"type", type_name(a.type)},
                    {"values", a.values}});
   return out;
 }

@@ -12,7 +12,9 @@
 namespace hexadapt::io {
 namespace {
 
-std::string temp_path(const std::string& name) { return ::testing::TempDir() + "/hexadapt_mf_" + name; }
+std::string temp_path(const std::string& name) {
+  return ::testing::TempDir() + "/hexadapt_mf_" + name;
+}
 
 MeshData small_hexes() {
   MeshData d = from_mesh(make_hex_grid(2, 1, 1));
@@ -74,7 +76,8 @@ TEST(MeshFile, MissingFileIsAnIoErrorWithTheReason) {
 
 TEST(MeshFile, MalformedContentIsAnInputErrorNamingTheFile) {
   const std::string path = temp_path("bad.vtk");
-  std::ofstream(path) << "# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 2 float\n0 0\n";
+  std::ofstream(path)
+      << "# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 2 float\n0 0\n";
   try {
     read_mesh(path);
     FAIL() << "no error";

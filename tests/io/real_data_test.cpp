@@ -12,7 +12,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path shared_data() { return fs::path(HEXADAPT_TESTDATA) / ".." / ".." / "shared" / "data"; }
+fs::path shared_data() {
+  return fs::path(HEXADAPT_TESTDATA) / ".." / ".." / "shared" / "data";
+}
 
 // Every cell's fractions sum to ~1 (raw solver values: within 1e-4).
 void expect_fractions(const MeshData& d, const std::vector<std::string>& materials) {

@@ -13,9 +13,10 @@ namespace {
 
 TEST(TextCase, Structured2DNumbersCellsJFastest) {
   // 2 x 3 cells; file cell 1 is (i=0, j=1), file cell 5 is (i=1, j=2).
-  const MeshData d = read_text_case("2\n2 3\n1\n2\n0 water\n2\n1 0.25\n5 1\n"
-                                    "1 air\n1\n1 0.75\n",
-                                    "t.txt");
+  const MeshData d = read_text_case(
+      "2\n2 3\n1\n2\n0 water\n2\n1 0.25\n5 1\n"
+      "1 air\n1\n1 0.75\n",
+      "t.txt");
   ASSERT_EQ(d.dim, 2);
   ASSERT_EQ(d.n_cells(), 6);
   EXPECT_EQ(d.structured_cells, (std::array<int, 3>{2, 3, 0}));
@@ -62,6 +63,7 @@ TEST(TextCase, MalformedCasesNameTheLine) {
       {"second line", "3\n2 2\n", "line 1", "expected 3 cell counts"},
       {"blocks", "2\n2 2\n2\n", "line 3", "only one block"},
       {"zero cells", "2\n0 2\n", "line 2", "out of range"},
+      {"huge grid, no data", "2\n40000 40000\n1\n1\n0 a\n0\n", "line 2", "bytes follow"},
       {"listed too many", head + "5\n", "line 6", "out of range [0, 4]"},
       {"cell out of range", head + "1\n4 0.5\n", "line 7", "out of range [0, 3]"},
       {"negative cell", head + "1\n-1 0.5\n", "line 7", "out of range"},
@@ -71,11 +73,12 @@ TEST(TextCase, MalformedCasesNameTheLine) {
       {"bad number", head + "1\n0 0.5x\n", "line 7", "found '0.5x'"},
       {"truncated", head + "2\n0 0.5\n", "line 7", "unexpected end of file"},
       {"listed twice", head + "2\n0 0.5\n0 0.5\n", "line 8", "listed twice"},
-      {"sum over 1",
-       "2\n2 2\n1\n2\n0 a\n1\n3 0.6\n1 b\n1\n3 0.400001\n", "line 10", "sum to 1.000001"},
+      {"sum over 1", "2\n2 2\n1\n2\n0 a\n1\n3 0.6\n1 b\n1\n3 0.400001\n", "line 10",
+       "sum to 1.000001"},
       {"same material twice", "2\n2 2\n1\n2\n0 a\n0\n1 a\n0\n", "line 7", "listed twice"},
       {"trailing garbage", head + "0\nextra\n", "line 7", "unexpected 'extra'"},
-      {"unstruct not quad", "2\n4\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n1\n3 0 1 2\n", "line 8", "expected 4"},
+      {"unstruct not quad", "2\n4\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n1\n3 0 1 2\n", "line 8",
+       "expected 4"},
       {"unstruct node range", "2\n4\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n1\n4 0 1 2 4\n", "line 8",
        "out of range [0, 3]"},
       {"unstruct truncated nodes", "2\n4\n0 0 0\n1 0 0\n", "line 2", "node coordinates"},

@@ -26,13 +26,14 @@ std::vector<int> ids(const MeshData& d) {
 const std::string kHead = "# vtk DataFile Version 3.0\ntest case\nASCII\n";
 
 TEST(VtkLegacy, StructuredPoints2DWithNamedLookupTable) {
-  const MeshData d = read_vtk_legacy(kHead +
-                                         "DATASET STRUCTURED_POINTS\n"
-                                         "DIMENSIONS 3 2 1\nSPACING 0.5 2 1\nORIGIN 1 0 0\n"
-                                         "CELL_DATA 2\nSCALARS vf_a double 1\nLOOKUP_TABLE mine\n"
-                                         "0.25 1\nPOINT_DATA 6\nSCALARS t int\nLOOKUP_TABLE default\n"
-                                         "1 2 3 4 5 6\n",
-                                     "sp.vtk");
+  const MeshData d =
+      read_vtk_legacy(kHead +
+                          "DATASET STRUCTURED_POINTS\n"
+                          "DIMENSIONS 3 2 1\nSPACING 0.5 2 1\nORIGIN 1 0 0\n"
+                          "CELL_DATA 2\nSCALARS vf_a double 1\nLOOKUP_TABLE mine\n"
+                          "0.25 1\nPOINT_DATA 6\nSCALARS t int\nLOOKUP_TABLE default\n"
+                          "1 2 3 4 5 6\n",
+                      "sp.vtk");
   ASSERT_EQ(d.dim, 2);
   EXPECT_EQ(d.n_cells(), 2);
   EXPECT_EQ(d.structured_cells, (std::array<int, 3>{2, 1, 0}));
@@ -51,26 +52,29 @@ TEST(VtkLegacy, StructuredPoints2DWithNamedLookupTable) {
 
 TEST(VtkLegacy, StructuredPoints3DAndFlatAxisMappedToXY) {
   const MeshData d3 = read_vtk_legacy(
-      kHead + "DATASET STRUCTURED_POINTS\nDIMENSIONS 2 3 4\nORIGIN 0 0 0\nSPACING 1 1 1\n", "3d.vtk");
+      kHead + "DATASET STRUCTURED_POINTS\nDIMENSIONS 2 3 4\nORIGIN 0 0 0\nSPACING 1 1 1\n",
+      "3d.vtk");
   EXPECT_EQ(d3.dim, 3);
   EXPECT_EQ(d3.n_cells(), 6);
   EXPECT_EQ(d3.structured_cells, (std::array<int, 3>{1, 2, 3}));
   // Flat along x: the (y, z) plane becomes (x, y).
   const MeshData d2 = read_vtk_legacy(
-      kHead + "DATASET STRUCTURED_POINTS\nDIMENSIONS 1 3 2\nORIGIN 7 0 0\nSPACING 1 1 1\n", "yz.vtk");
+      kHead + "DATASET STRUCTURED_POINTS\nDIMENSIONS 1 3 2\nORIGIN 7 0 0\nSPACING 1 1 1\n",
+      "yz.vtk");
   EXPECT_EQ(d2.dim, 2);
   EXPECT_EQ(d2.n_cells(), 2);
   EXPECT_EQ(d2.points[5], Vec3(2, 1, 7));
 }
 
 TEST(VtkLegacy, RectilinearGridKeepsCoordinatesAndCellOrder) {
-  const MeshData d = read_vtk_legacy(kHead +
-                                         "DATASET RECTILINEAR_GRID\nDIMENSIONS 3 2 1\n"
-                                         "X_COORDINATES 3 float\n0 1 3\nY_COORDINATES 2 double\n"
-                                         "0 0.5\nZ_COORDINATES 1 int\n0\n"
-                                         "CELL_DATA 2\nSCALARS m unsigned_char\nLOOKUP_TABLE default\n"
-                                         "7 9\n",
-                                     "rg.vtk");
+  const MeshData d =
+      read_vtk_legacy(kHead +
+                          "DATASET RECTILINEAR_GRID\nDIMENSIONS 3 2 1\n"
+                          "X_COORDINATES 3 float\n0 1 3\nY_COORDINATES 2 double\n"
+                          "0 0.5\nZ_COORDINATES 1 int\n0\n"
+                          "CELL_DATA 2\nSCALARS m unsigned_char\nLOOKUP_TABLE default\n"
+                          "7 9\n",
+                      "rg.vtk");
   EXPECT_EQ(d.n_cells(), 2);
   EXPECT_EQ(d.points[2], Vec3(3, 0, 0));
   EXPECT_EQ(d.points[4], Vec3(1, 0.5, 0));
@@ -116,8 +120,7 @@ TEST(VtkLegacy, UnstructuredClassicQuadsPixelsAndFields) {
   EXPECT_EQ(d.find_cell_array("g")->values[0], -5);
 }
 
-const std::string kCubePoints =
-    "POINTS 8 float\n0 0 0 1 0 0 0 1 0 1 1 0 0 0 1 1 0 1 0 1 1 1 1 1\n";
+const std::string kCubePoints = "POINTS 8 float\n0 0 0 1 0 0 0 1 0 1 1 0 0 0 1 1 0 1 0 1 1 1 1 1\n";
 
 TEST(VtkLegacy, UnstructuredVersion51HexahedronToBinaryOrder) {
   const MeshData d = read_vtk_legacy(
@@ -236,63 +239,85 @@ std::vector<Malformed> malformed_cases() {
       {"no mode", "# vtk DataFile Version 3.0\nt\nTEXT\n", {"line 3", "ASCII or BINARY"}},
       {"no dataset", kHead + "POINTS 1 float\n", {"expected DATASET"}},
       {"polydata", kHead + "DATASET POLYDATA\n", {"unsupported data set type 'POLYDATA'"}},
-      {"truncated points", ug + "POINTS 4 float\n0 0 0 1 0 0\n", {"line 5", "ends before the 12 point coordinates"}},
+      {"truncated points",
+       ug + "POINTS 4 float\n0 0 0 1 0 0\n",
+       {"line 5", "ends before the 12 point coordinates"}},
       {"lying point count", ug + "POINTS 99999999999 float\n0 0 0\n", {"out of range"}},
       {"ascii too few bytes", ug + "POINTS 1000 float\n0 0 0\n", {"3000 point coordinates"}},
       {"bad number", ug + "POINTS 1 float\n0 0 x\n", {"line 6", "found 'x'"}},
-      {"triangle", ug + kCubePoints + "CELLS 1 4\n3 0 1 2\nCELL_TYPES 1\n5\n",
+      {"triangle",
+       ug + kCubePoints + "CELLS 1 4\n3 0 1 2\nCELL_TYPES 1\n5\n",
        {"cell 0", "unsupported VTK cell type 5"}},
-      {"wrong cells size", ug + kCubePoints + "CELLS 1 10\n8 0 1 3 2 4 5 7 6 0\nCELL_TYPES 1\n12\n",
+      {"wrong cells size",
+       ug + kCubePoints + "CELLS 1 10\n8 0 1 3 2 4 5 7 6 0\nCELL_TYPES 1\n12\n",
        {"line 7", "CELLS size is 10 but its 1 cells use 9 entries"}},
-      {"cell past size", ug + kCubePoints + "CELLS 1 5\n8 0 1 3 2\nCELL_TYPES 1\n12\n",
+      {"cell past size",
+       ug + kCubePoints + "CELLS 1 5\n8 0 1 3 2\nCELL_TYPES 1\n12\n",
        {"cell 0 does not fit"}},
-      {"cell types count", ug + kCubePoints + "CELLS 1 9\n8 0 1 3 2 4 5 7 6\nCELL_TYPES 2\n12 12\n",
+      {"cell types count",
+       ug + kCubePoints + "CELLS 1 9\n8 0 1 3 2 4 5 7 6\nCELL_TYPES 2\n12 12\n",
        {"line 9", "CELL_TYPES 2 does not match the 1 cells"}},
-      {"node out of range", ug + kCubePoints + "CELLS 1 9\n8 0 1 3 2 4 5 7 8\nCELL_TYPES 1\n12\n",
+      {"node out of range",
+       ug + kCubePoints + "CELLS 1 9\n8 0 1 3 2 4 5 7 8\nCELL_TYPES 1\n12\n",
        {"cell 0", "node id 8 out of range"}},
-      {"no cell types", ug + kCubePoints + "CELLS 1 9\n8 0 1 3 2 4 5 7 6\n", {"CELLS without CELL_TYPES"}},
+      {"no cell types",
+       ug + kCubePoints + "CELLS 1 9\n8 0 1 3 2 4 5 7 6\n",
+       {"CELLS without CELL_TYPES"}},
       {"types before cells", ug + kCubePoints + "CELL_TYPES 1\n12\n", {"CELL_TYPES before CELLS"}},
       {"mixed dimensions",
        ug + kCubePoints + "CELLS 2 14\n8 0 1 3 2 4 5 7 6\n4 0 1 3 2\nCELL_TYPES 2\n12 9\n",
        {"cell 1", "mixes 2D and 3D"}},
       {"bad offsets",
-       ug + kCubePoints + "CELLS 2 8\nOFFSETS vtktypeint64\n1 8\nCONNECTIVITY vtktypeint64\n0 1 3 2 4 5 7 6\n",
+       ug + kCubePoints +
+           "CELLS 2 8\nOFFSETS vtktypeint64\n1 8\nCONNECTIVITY vtktypeint64\n0 1 3 2 4 5 7 6\n",
        {"OFFSETS must start at 0"}},
       {"missing connectivity",
-       ug + kCubePoints + "CELLS 2 8\nOFFSETS vtktypeint64\n0 8\nCELL_TYPES 1\n12\n", {"expected CONNECTIVITY"}},
-      {"cell data count", ug + kCubePoints + kHexCells + "CELL_DATA 3\n",
+       ug + kCubePoints + "CELLS 2 8\nOFFSETS vtktypeint64\n0 8\nCELL_TYPES 1\n12\n",
+       {"expected CONNECTIVITY"}},
+      {"cell data count",
+       ug + kCubePoints + kHexCells + "CELL_DATA 3\n",
        {"line 11", "CELL_DATA 3 does not match the 1 cells"}},
       {"point data count", ug + kCubePoints + kHexCells + "POINT_DATA 7\n", {"POINT_DATA 7"}},
-      {"unknown data keyword", ug + kCubePoints + kHexCells + "CELL_DATA 1\nFOO x\n",
+      {"unknown data keyword",
+       ug + kCubePoints + kHexCells + "CELL_DATA 1\nFOO x\n",
        {"line 12", "unknown keyword 'FOO'"}},
       {"unknown geometry keyword", ug + "BLAH 3\n", {"line 5", "'BLAH'"}},
       {"bit array", ug + kCubePoints + kHexCells + "CELL_DATA 1\nSCALARS b bit\n", {"bit arrays"}},
       {"unknown type", ug + "POINTS 1 quad\n", {"unknown data type 'quad'"}},
-      {"float ids",
-       ug + kCubePoints + "CELLS 2 8\nOFFSETS float\n0 8\n", {"integer type"}},
-      {"too many components", ug + kCubePoints + kHexCells + "CELL_DATA 1\nSCALARS s float 7\n",
+      {"float ids", ug + kCubePoints + "CELLS 2 8\nOFFSETS float\n0 8\n", {"integer type"}},
+      {"too many components",
+       ug + kCubePoints + kHexCells + "CELL_DATA 1\nSCALARS s float 7\n",
        {"out of range [1, 4]"}},
-      {"field tuples", ug + kCubePoints + kHexCells + "CELL_DATA 1\nFIELD F 1\na 1 2 float\n1 2\n",
+      {"field tuples",
+       ug + kCubePoints + kHexCells + "CELL_DATA 1\nFIELD F 1\na 1 2 float\n1 2\n",
        {"line 13", "field array 'a' has 2 tuples, expected 1"}},
-      {"truncated array", ug + kCubePoints + kHexCells + "CELL_DATA 1\nSCALARS s float\nLOOKUP_TABLE default\n",
+      {"truncated array",
+       ug + kCubePoints + kHexCells + "CELL_DATA 1\nSCALARS s float\nLOOKUP_TABLE default\n",
        {"end of file", "array values"}},
-      {"rectilinear count", kHead + "DATASET RECTILINEAR_GRID\nDIMENSIONS 2 2 1\nX_COORDINATES 3 float\n0 1 2\n",
+      {"rectilinear count",
+       kHead + "DATASET RECTILINEAR_GRID\nDIMENSIONS 2 2 1\nX_COORDINATES 3 float\n0 1 2\n",
        {"line 6", "expected 2 coordinates"}},
-      {"rectilinear missing axis", kHead + "DATASET RECTILINEAR_GRID\nDIMENSIONS 2 2 1\nX_COORDINATES 2 float\n0 1\n",
+      {"rectilinear missing axis",
+       kHead + "DATASET RECTILINEAR_GRID\nDIMENSIONS 2 2 1\nX_COORDINATES 2 float\n0 1\n",
        {"needs X_COORDINATES, Y_COORDINATES and Z_COORDINATES"}},
-      {"structured points count", kHead + "DATASET STRUCTURED_GRID\nDIMENSIONS 2 2 1\nPOINTS 5 float\n",
+      {"structured points count",
+       kHead + "DATASET STRUCTURED_GRID\nDIMENSIONS 2 2 1\nPOINTS 5 float\n",
        {"POINTS 5 does not match DIMENSIONS (4 points)"}},
       {"zero dimension", kHead + "DATASET STRUCTURED_POINTS\nDIMENSIONS 2 0 1\n", {"out of range"}},
-      {"huge dimensions", kHead + "DATASET STRUCTURED_POINTS\nDIMENSIONS 100000 100000 100000\n",
+      {"huge dimensions",
+       kHead + "DATASET STRUCTURED_POINTS\nDIMENSIONS 100000 100000 100000\n",
        {"32-bit ids"}},
-      {"lattice without data", kHead + "DATASET STRUCTURED_POINTS\nDIMENSIONS 2000 2000 2\n",
+      {"lattice without data",
+       kHead + "DATASET STRUCTURED_POINTS\nDIMENSIONS 2000 2000 2\n",
        {"announce 8000000 points but only"}},
       {"line of points", kHead + "DATASET STRUCTURED_POINTS\nDIMENSIONS 5 1 1\n", {"single row"}},
-      {"binary lying size", bin + "POINTS 100000000 float\n" + std::string(24, '\0'),
+      {"binary lying size",
+       bin + "POINTS 100000000 float\n" + std::string(24, '\0'),
        {"byte 85", "300000000 point coordinates", "24 bytes left"}},
       {"binary truncated types",
        bin + "POINTS 1 double\n" + std::string(24, '\0') + "\nCELLS 0 0\nCELL_TYPES 0\n" +
-           "CELL_DATA 0\nPOINT_DATA 1\nSCALARS s double 1\nLOOKUP_TABLE default\n" + std::string(5, '\0'),
+           "CELL_DATA 0\nPOINT_DATA 1\nSCALARS s double 1\nLOOKUP_TABLE default\n" +
+           std::string(5, '\0'),
        {"byte 191", "1 array values", "5 bytes left"}},
   };
 }
@@ -336,7 +361,8 @@ TEST(VtkLegacy, LargeAsciiFileParsesQuickly) {
     f += "\n";
   };
   axis("X_COORDINATES", nx), axis("Y_COORDINATES", ny), axis("Z_COORDINATES", nz);
-  f += "CELL_DATA " + std::to_string(nx * ny * nz) + "\nSCALARS vf_a double 1\nLOOKUP_TABLE default\n";
+  f += "CELL_DATA " + std::to_string(nx * ny * nz) +
+       "\nSCALARS vf_a double 1\nLOOKUP_TABLE default\n";
   for (int c = 0; c < nx * ny * nz; ++c) f += c % 3 ? "0.333333333333 " : "1\n";
   const auto t0 = std::chrono::steady_clock::now();
   const MeshData d = read_vtk_legacy(f, "big.vtk");

@@ -109,7 +109,8 @@ void read_field(LegacyScanner& s, MeshData& data, const Section& sec) {
     const std::size_t at = s.mark();
     DataArray a;
     if (read_field_array(s, a, nullptr)) {
-      if (a.n_tuples() != sec.n_tuples || a.values.size() != sec.n_tuples * static_cast<std::size_t>(a.n_components))
+      if (a.n_tuples() != sec.n_tuples ||
+          a.values.size() != sec.n_tuples * static_cast<std::size_t>(a.n_components))
         s.fail_at(at, "field array '" + a.name + "' has " + std::to_string(a.n_tuples()) +
                           " tuples, expected " + std::to_string(sec.n_tuples));
       add_array(data, sec, std::move(a));
@@ -119,7 +120,8 @@ void read_field(LegacyScanner& s, MeshData& data, const Section& sec) {
 }
 
 void read_section_start(LegacyScanner& s, MeshData& data, Section& sec, bool cells) {
-  const std::size_t expected = cells ? static_cast<std::size_t>(data.n_cells()) : data.points.size();
+  const std::size_t expected =
+      cells ? static_cast<std::size_t>(data.n_cells()) : data.points.size();
   const std::size_t at = s.mark();
   sec.cells = cells;
   sec.n_tuples = static_cast<std::size_t>(s.integer("a number of tuples", 0, INT64_MAX));
@@ -143,7 +145,8 @@ void read_attributes(LegacyScanner& s, MeshData& data) {
       started = true;
       continue;
     }
-    if (!started) s.fail_at(at, "expected CELL_DATA or POINT_DATA, found '" + std::string(key) + "'");
+    if (!started)
+      s.fail_at(at, "expected CELL_DATA or POINT_DATA, found '" + std::string(key) + "'");
     if (keyword_is(key, "SCALARS")) {
       read_scalars(s, data, sec);
     } else if (keyword_is(key, "VECTORS") || keyword_is(key, "NORMALS")) {
@@ -181,8 +184,7 @@ void read_dataset_field(LegacyScanner& s, MeshData& data) {
   for (std::int64_t k = 0; k < n_arrays; ++k) {
     DataArray a;
     std::string text;
-    if (!read_field_array(s, a, &text) && !a.name.empty())
-      data.metadata.emplace_back(a.name, text);
+    if (!read_field_array(s, a, &text) && !a.name.empty()) data.metadata.emplace_back(a.name, text);
     skip_metadata(s);
   }
 }

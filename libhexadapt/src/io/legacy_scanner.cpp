@@ -36,9 +36,13 @@ constexpr std::array<LegacyType, 21> kTypes = {{
     {"vtktypefloat64", ScalarType::float64, 8, true},
 }};
 
-bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; }
+bool is_space(char c) {
+  return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v';
+}
 
-char lower(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; }
+char lower(char c) {
+  return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;
+}
 
 template <class T>
 T load_big_endian(const char* p) {
@@ -92,7 +96,9 @@ std::string LegacyScanner::where(std::size_t pos) const {
   return "line " + std::to_string(1 + std::count(text_.begin(), end, '\n'));
 }
 
-void LegacyScanner::fail(const std::string& message) const { fail_at(pos_, message); }
+void LegacyScanner::fail(const std::string& message) const {
+  fail_at(pos_, message);
+}
 
 void LegacyScanner::fail_at(std::size_t pos, const std::string& message) const {
   throw InputError(file_, where(pos), message);
@@ -195,23 +201,35 @@ template <class T, class Out>
 void LegacyScanner::binary_values(std::size_t n, Out* out, const char* what) {
   check_room(n, sizeof(T), what);
   const char* p = text_.data() + pos_;
-  for (std::size_t k = 0; k < n; ++k) out[k] = static_cast<Out>(load_big_endian<T>(p + k * sizeof(T)));
+  for (std::size_t k = 0; k < n; ++k)
+    out[k] = static_cast<Out>(load_big_endian<T>(p + k * sizeof(T)));
   pos_ += n * sizeof(T);
 }
 
 template <class Out>
-void LegacyScanner::dispatch_binary(const LegacyType& t, std::size_t n, Out* out, const char* what) {
+void LegacyScanner::dispatch_binary(const LegacyType& t, std::size_t n, Out* out,
+                                    const char* what) {
   switch (t.type) {
-    case ScalarType::int8: return binary_values<std::int8_t>(n, out, what);
-    case ScalarType::uint8: return binary_values<std::uint8_t>(n, out, what);
-    case ScalarType::int16: return binary_values<std::int16_t>(n, out, what);
-    case ScalarType::uint16: return binary_values<std::uint16_t>(n, out, what);
-    case ScalarType::int32: return binary_values<std::int32_t>(n, out, what);
-    case ScalarType::uint32: return binary_values<std::uint32_t>(n, out, what);
-    case ScalarType::int64: return binary_values<std::int64_t>(n, out, what);
-    case ScalarType::uint64: return binary_values<std::uint64_t>(n, out, what);
-    case ScalarType::float32: return binary_values<float>(n, out, what);
-    case ScalarType::float64: return binary_values<double>(n, out, what);
+    case ScalarType::int8:
+      return binary_values<std::int8_t>(n, out, what);
+    case ScalarType::uint8:
+      return binary_values<std::uint8_t>(n, out, what);
+    case ScalarType::int16:
+      return binary_values<std::int16_t>(n, out, what);
+    case ScalarType::uint16:
+      return binary_values<std::uint16_t>(n, out, what);
+    case ScalarType::int32:
+      return binary_values<std::int32_t>(n, out, what);
+    case ScalarType::uint32:
+      return binary_values<std::uint32_t>(n, out, what);
+    case ScalarType::int64:
+      return binary_values<std::int64_t>(n, out, what);
+    case ScalarType::uint64:
+      return binary_values<std::uint64_t>(n, out, what);
+    case ScalarType::float32:
+      return binary_values<float>(n, out, what);
+    case ScalarType::float64:
+      return binary_values<double>(n, out, what);
   }
 }
 
@@ -231,7 +249,8 @@ std::vector<double> LegacyScanner::reals(const LegacyType& t, std::size_t n, con
 
 std::vector<std::int64_t> LegacyScanner::integers(const LegacyType& t, std::size_t n,
                                                   const char* what) {
-  if (t.is_float) fail(std::string(what) + " must have an integer type, not " + std::string(t.name));
+  if (t.is_float)
+    fail(std::string(what) + " must have an integer type, not " + std::string(t.name));
   if (binary_) {
     end_line();
     check_room(n, static_cast<std::size_t>(t.size), what);

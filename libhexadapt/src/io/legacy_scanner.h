@@ -22,7 +22,7 @@ namespace hexadapt::io::detail {
 struct LegacyType {
   std::string_view name;  ///< as written in files (lower case)
   ScalarType type;
-  int size;               ///< bytes per value in binary files
+  int size;  ///< bytes per value in binary files
   bool is_float;
 };
 
@@ -52,8 +52,7 @@ class LegacyScanner {
   /// The next token, which must be present; `what` describes it for the error.
   std::string_view expect_token(const char* what);
   /// The next token as an integer in [lo, hi].
-  std::int64_t integer(const char* what, std::int64_t lo = 0,
-                       std::int64_t hi = INT64_MAX);
+  std::int64_t integer(const char* what, std::int64_t lo = 0, std::int64_t hi = INT64_MAX);
   /// The next token as a floating-point number.
   double real(const char* what);
   /// Skips the rest of the current line with its newline (binary data starts after it).

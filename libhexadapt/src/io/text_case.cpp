@@ -37,9 +37,7 @@ std::size_t tokens_on_next_line(LegacyScanner& s) {
 struct CellNumbering {
   std::int64_t n_cells = 0;
   std::int64_t ni = 0, nj = 0;  ///< > 0 for the 2D structured format only
-  std::int64_t operator()(std::int64_t c) const {
-    return nj > 0 ? (c / nj) + ni * (c % nj) : c;
-  }
+  std::int64_t operator()(std::int64_t c) const { return nj > 0 ? (c / nj) + ni * (c % nj) : c; }
 };
 
 void read_structured_mesh(LegacyScanner& s, int dim, MeshData& data, CellNumbering& numbering) {
@@ -51,6 +49,11 @@ void read_structured_mesh(LegacyScanner& s, int dim, MeshData& data, CellNumberi
     n_points *= n + 1;
     if (n_points > kMaxIds) s.fail("too many cells for 32-bit ids");
   }
+  // Refuse millions of cells announced in a file too small to list fractions for them,
+  // before allocating the lattice.
+  if (n_points > (1 << 20) && static_cast<std::size_t>(n_points / 8) > s.remaining())
+    s.fail("the grid has " + std::to_string(n_points) + " nodes but only " +
+           std::to_string(s.remaining()) + " bytes follow");
   const auto blocks = s.integer("the number of blocks", 0, kMaxIds);
   if (blocks != 1) s.fail("only one block is supported, found " + std::to_string(blocks));
   std::vector<Vec3> pts;
@@ -74,7 +77,9 @@ void read_unstructured_mesh(LegacyScanner& s, MeshData& data, CellNumbering& num
   for (std::int64_t c = 0; c < n_cells; ++c) {
     const std::size_t at = s.mark();
     const auto n = s.integer("a number of cell nodes", 0, kMaxIds);
-    if (n != 4) s.fail_at(at, "cell " + std::to_string(c) + " has " + std::to_string(n) + " nodes, expected 4 (quads)");
+    if (n != 4)
+      s.fail_at(at, "cell " + std::to_string(c) + " has " + std::to_string(n) +
+                        " nodes, expected 4 (quads)");
     std::array<std::int64_t, 4> ids{};
     for (auto& id : ids) id = s.integer("a node index", 0, n_nodes - 1);
     detail::append_vtk_cell(data, detail::vtk_quad, ids.data(), 4, c, s.file());
@@ -92,12 +97,14 @@ void read_material(LegacyScanner& s, const CellNumbering& numbering, std::vector
   indices.push_back(index);
   DataArray a;
   a.name = "vf_" + std::string(s.expect_token("a material name"));
-  if (data.find_cell_array(a.name)) s.fail_at(at, "material '" + a.name.substr(3) + "' listed twice");
+  if (data.find_cell_array(a.name))
+    s.fail_at(at, "material '" + a.name.substr(3) + "' listed twice");
   a.values.assign(static_cast<std::size_t>(numbering.n_cells), 0.0);
   std::vector<bool> seen(a.values.size(), false);
   const auto n = s.integer("a number of listed cells", 0, numbering.n_cells);
   for (std::int64_t e = 0; e < n; ++e) {
-    const auto c = static_cast<std::size_t>(numbering(s.integer("a cell index", 0, numbering.n_cells - 1)));
+    const auto c =
+        static_cast<std::size_t>(numbering(s.integer("a cell index", 0, numbering.n_cells - 1)));
     const double f = s.real("a volume fraction");
     if (!(f >= 0.0 && f <= 1.0)) s.fail("volume fraction " + std::to_string(f) + " outside [0, 1]");
     if (seen[c]) s.fail("cell listed twice for material '" + a.name.substr(3) + "'");
@@ -129,7 +136,8 @@ MeshData read_text_case(std::string_view content, const std::string& file) {
   std::vector<double> sums(static_cast<std::size_t>(numbering.n_cells), 0.0);
   std::vector<std::int64_t> indices;
   for (std::int64_t m = 0; m < n_mat; ++m) read_material(s, numbering, sums, data, indices);
-  if (!s.at_end()) s.fail("unexpected '" + std::string(s.peek_token()) + "' after the last material");
+  if (!s.at_end())
+    s.fail("unexpected '" + std::string(s.peek_token()) + "' after the last material");
   return data;
 }
 

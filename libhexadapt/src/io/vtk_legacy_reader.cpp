@@ -108,8 +108,7 @@ void read_classic_cells(LegacyScanner& s, Geometry& g, std::int64_t n, std::int6
 void read_offset_cells(LegacyScanner& s, Geometry& g, std::int64_t n_off, std::int64_t m) {
   auto block = [&](const char* keyword, std::int64_t count) {
     const std::size_t at = s.mark();
-    if (!keyword_is(s.token(), keyword))
-      s.fail_at(at, std::string("expected ") + keyword);
+    if (!keyword_is(s.token(), keyword)) s.fail_at(at, std::string("expected ") + keyword);
     return s.integers(s.data_type(), static_cast<std::size_t>(count), keyword);
   };
   const std::size_t at = s.mark();
@@ -184,8 +183,9 @@ std::vector<Vec3> lattice_points(const Geometry& g) {
     for (std::int64_t j = 0; j < d[1]; ++j)
       for (std::int64_t i = 0; i < d[0]; ++i) {
         if (g.kind == Kind::points)
-          pts.push_back(g.origin + Vec3(static_cast<double>(i), static_cast<double>(j),
-                                        static_cast<double>(k)).cwiseProduct(g.spacing));
+          pts.push_back(g.origin +
+                        Vec3(static_cast<double>(i), static_cast<double>(j), static_cast<double>(k))
+                            .cwiseProduct(g.spacing));
         else
           pts.emplace_back(g.coords[0][static_cast<std::size_t>(i)],
                            g.coords[1][static_cast<std::size_t>(j)],
@@ -216,7 +216,8 @@ void build_geometry(LegacyScanner& s, Geometry& g, MeshData& data, const ReadOpt
   // A lattice is generated, not read: millions of points announced in a file too small to
   // hold any array for them are a lie (or nothing to work on), refused before allocating.
   const std::int64_t n = n_structured_points(s, g);
-  if (g.kind != Kind::structured && n > (1 << 20) && static_cast<std::size_t>(n / 8) > s.remaining())
+  if (g.kind != Kind::structured && n > (1 << 20) &&
+      static_cast<std::size_t>(n / 8) > s.remaining())
     s.fail("DIMENSIONS announce " + std::to_string(n) + " points but only " +
            std::to_string(s.remaining()) + " bytes of data follow");
   std::vector<Vec3> pts = g.kind == Kind::structured ? std::move(g.points) : lattice_points(g);
@@ -267,7 +268,8 @@ MeshData read_vtk_legacy(std::string_view content, const std::string& file,
     else if (keyword_is(key, "METADATA"))
       s.skip_block();
     else
-      s.fail_at(at, "unknown or misplaced keyword '" + std::string(key) + "' in the geometry of the data set");
+      s.fail_at(at, "unknown or misplaced keyword '" + std::string(key) +
+                        "' in the geometry of the data set");
   }
   build_geometry(s, g, data, options);
   detail::read_attributes(s, data);

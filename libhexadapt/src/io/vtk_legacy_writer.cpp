@@ -40,17 +40,27 @@ class BigEndianBuffer {
 
 const char* legacy_name(ScalarType t) {
   switch (t) {
-    case ScalarType::int8: return "char";
-    case ScalarType::uint8: return "unsigned_char";
-    case ScalarType::int16: return "short";
-    case ScalarType::uint16: return "unsigned_short";
-    case ScalarType::int32: return "int";
-    case ScalarType::uint32: return "unsigned_int";
+    case ScalarType::int8:
+      return "char";
+    case ScalarType::uint8:
+      return "unsigned_char";
+    case ScalarType::int16:
+      return "short";
+    case ScalarType::uint16:
+      return "unsigned_short";
+    case ScalarType::int32:
+      return "int";
+    case ScalarType::uint32:
+      return "unsigned_int";
     // meshio's 4.2 reader knows no vtktypeint64; VTK reads long as 8 bytes on LP64 systems.
-    case ScalarType::int64: return "long";
-    case ScalarType::uint64: return "unsigned_long";
-    case ScalarType::float32: return "float";
-    case ScalarType::float64: return "double";
+    case ScalarType::int64:
+      return "long";
+    case ScalarType::uint64:
+      return "unsigned_long";
+    case ScalarType::float32:
+      return "float";
+    case ScalarType::float64:
+      return "double";
   }
   return "double";
 }
@@ -59,16 +69,36 @@ void put_values(BigEndianBuffer& b, const DataArray& a) {
   const std::size_t n = a.values.size();
   const auto v = [&](std::size_t k) { return a.values[k]; };
   switch (a.type) {
-    case ScalarType::int8: b.put_block<std::int8_t>(n, v); break;
-    case ScalarType::uint8: b.put_block<std::uint8_t>(n, v); break;
-    case ScalarType::int16: b.put_block<std::int16_t>(n, v); break;
-    case ScalarType::uint16: b.put_block<std::uint16_t>(n, v); break;
-    case ScalarType::int32: b.put_block<std::int32_t>(n, v); break;
-    case ScalarType::uint32: b.put_block<std::uint32_t>(n, v); break;
-    case ScalarType::int64: b.put_block<std::int64_t>(n, v); break;
-    case ScalarType::uint64: b.put_block<std::uint64_t>(n, v); break;
-    case ScalarType::float32: b.put_block<float>(n, v); break;
-    case ScalarType::float64: b.put_block<double>(n, v); break;
+    case ScalarType::int8:
+      b.put_block<std::int8_t>(n, v);
+      break;
+    case ScalarType::uint8:
+      b.put_block<std::uint8_t>(n, v);
+      break;
+    case ScalarType::int16:
+      b.put_block<std::int16_t>(n, v);
+      break;
+    case ScalarType::uint16:
+      b.put_block<std::uint16_t>(n, v);
+      break;
+    case ScalarType::int32:
+      b.put_block<std::int32_t>(n, v);
+      break;
+    case ScalarType::uint32:
+      b.put_block<std::uint32_t>(n, v);
+      break;
+    case ScalarType::int64:
+      b.put_block<std::int64_t>(n, v);
+      break;
+    case ScalarType::uint64:
+      b.put_block<std::uint64_t>(n, v);
+      break;
+    case ScalarType::float32:
+      b.put_block<float>(n, v);
+      break;
+    case ScalarType::float64:
+      b.put_block<double>(n, v);
+      break;
   }
   b.text("\n");
 }
@@ -114,7 +144,8 @@ void write_section(BigEndianBuffer& b, const std::vector<DataArray>& arrays, con
       ++n_field;
       continue;
     }
-    b.text("SCALARS " + encode_name(a.name) + " " + legacy_name(a.type) + " 1\nLOOKUP_TABLE default\n");
+    b.text("SCALARS " + encode_name(a.name) + " " + legacy_name(a.type) +
+           " 1\nLOOKUP_TABLE default\n");
     put_values(b, a);
   }
   if (n_field == 0) return;
@@ -135,7 +166,8 @@ void write_cells(BigEndianBuffer& b, const MeshData& data) {
   b.put_block<std::int32_t>(n * (k + 1), [&](std::size_t e) {
     const std::size_t c = e / (k + 1), i = e % (k + 1);
     if (i == 0) return static_cast<index_t>(k);
-    const std::size_t from = data.dim == 3 ? static_cast<std::size_t>(ref_hex::vtk_of_binary[i - 1]) : i - 1;
+    const std::size_t from =
+        data.dim == 3 ? static_cast<std::size_t>(ref_hex::vtk_of_binary[i - 1]) : i - 1;
     return data.cells[c * k + from].value();
   });
   b.text("\nCELL_TYPES " + std::to_string(n) + "\n");
@@ -151,7 +183,7 @@ void write_vtk_legacy(const MeshData& data, const std::string& path) {
   b.text("# vtk DataFile Version 4.2\n" + title_of(data) + "\nBINARY\nDATASET UNSTRUCTURED_GRID\n");
   b.text("POINTS " + std::to_string(data.points.size()) + " double\n");
   b.put_block<double>(3 * data.points.size(),
-                     [&](std::size_t e) { return data.points[e / 3][static_cast<int>(e % 3)]; });
+                      [&](std::size_t e) { return data.points[e / 3][static_cast<int>(e % 3)]; });
   b.text("\n");
   write_cells(b, data);
   write_section(b, data.cell_data, "CELL_DATA", static_cast<std::size_t>(data.n_cells()));
