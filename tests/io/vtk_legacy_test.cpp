@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -80,6 +81,23 @@ TEST(VtkLegacy, RectilinearGridKeepsCoordinatesAndCellOrder) {
   EXPECT_EQ(d.points[4], Vec3(1, 0.5, 0));
   EXPECT_EQ(d.find_cell_array("m")->type, ScalarType::uint8);
   EXPECT_EQ(d.find_cell_array("m")->values, (std::vector<double>{7, 9}));
+  EXPECT_EQ(d.points[5], Vec3(3, 0.5, 0));
+}
+
+TEST(VtkLegacy, AsciiNumbersInEveryNotation) {
+  const MeshData d =
+      read_vtk_legacy(kHead +
+                          "DATASET RECTILINEAR_GRID\nDIMENSIONS 2 2 1\n"
+                          "X_COORDINATES 2 double\n+0 1e+00\nY_COORDINATES 2 double\n"
+                          "-1.5E-1 .5\nZ_COORDINATES 1 double\n0\n"
+                          "CELL_DATA 1\nSCALARS s double\nLOOKUP_TABLE default\nnan\n"
+                          "POINT_DATA 4\nSCALARS p double\nLOOKUP_TABLE default\n"
+                          "inf -inf +2 -0\n",
+                      "num.vtk");
+  EXPECT_EQ(d.points[3], Vec3(1, 0.5, 0));
+  EXPECT_EQ(d.points[0].y(), -0.15);
+  EXPECT_TRUE(std::isnan(d.cell_data[0].values[0]));
+  EXPECT_EQ(d.point_data[0].values, (std::vector<double>{HUGE_VAL, -HUGE_VAL, 2, 0}));
 }
 
 TEST(VtkLegacy, StructuredGridWithVectorsAndMetadata) {

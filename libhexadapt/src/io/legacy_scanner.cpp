@@ -54,6 +54,11 @@ T load_big_endian(const char* p) {
   return v;
 }
 
+// std::from_chars takes no leading '+', which some writers put before numbers.
+const char* number_start(std::string_view t) {
+  return t.size() > 1 && t[0] == '+' && t[1] != '-' ? t.data() + 1 : t.data();
+}
+
 int hex_digit(char c) {
   if (c >= '0' && c <= '9') return c - '0';
   if (c >= 'a' && c <= 'f') return c - 'a' + 10;
@@ -146,7 +151,7 @@ std::string_view LegacyScanner::expect_token(const char* what) {
 std::int64_t LegacyScanner::integer(const char* what, std::int64_t lo, std::int64_t hi) {
   const std::string_view t = expect_token(what);
   std::int64_t v = 0;
-  const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
+  const auto r = std::from_chars(number_start(t), t.data() + t.size(), v);
   if (r.ec != std::errc() || r.ptr != t.data() + t.size())
     fail(std::string("expected ") + what + " (an integer), found '" + std::string(t) + "'");
   if (v < lo || v > hi)
@@ -158,7 +163,7 @@ std::int64_t LegacyScanner::integer(const char* what, std::int64_t lo, std::int6
 double LegacyScanner::real(const char* what) {
   const std::string_view t = expect_token(what);
   double v = 0;
-  const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
+  const auto r = std::from_chars(number_start(t), t.data() + t.size(), v);
   if (r.ec != std::errc() || r.ptr != t.data() + t.size())
     fail(std::string("expected ") + what + " (a number), found '" + std::string(t) + "'");
   return v;

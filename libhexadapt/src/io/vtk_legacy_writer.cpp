@@ -5,7 +5,9 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <string>
+#include <type_traits>
 
 #include "hexadapt/io/atomic_file.h"
 #include "hexadapt/io/vtk_legacy.h"
@@ -14,6 +16,18 @@
 namespace hexadapt::io {
 
 namespace {
+
+// Integer arrays hold integers in range when they come from a file; anything else (NaN, a
+// value set by hand beyond the type) is clamped rather than converted with undefined results.
+template <class T, class V>
+T convert(V v) {
+  if constexpr (std::is_integral_v<T> && std::is_floating_point_v<V>) {
+    if (!(v == v)) return T(0);
+    if (v <= static_cast<V>(std::numeric_limits<T>::min())) return std::numeric_limits<T>::min();
+    if (v >= static_cast<V>(std::numeric_limits<T>::max())) return std::numeric_limits<T>::max();
+  }
+  return static_cast<T>(v);
+}
 
 // Values are converted and byte-swapped in blocks: one resize per block, no per-value append.
 class BigEndianBuffer {
@@ -25,7 +39,7 @@ class BigEndianBuffer {
     out_.resize(at + n * sizeof(T));
     char* p = out_.data() + at;
     for (std::size_t k = 0; k < n; ++k, p += sizeof(T)) {
-      const T v = static_cast<T>(value(k));
+      const T v = convert<T>(value(k));
       std::array<char, sizeof(T)> b;
       std::memcpy(b.data(), &v, sizeof(T));
       std::reverse_copy(b.begin(), b.end(), p);
