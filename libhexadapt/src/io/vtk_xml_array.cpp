@@ -76,9 +76,19 @@ std::vector<T> read_values(const VtkXmlDocument& doc, const pugi::xml_node& e, S
     return out;
   }
   ByteReader in = payload_reader(doc, e, format);
-  const Payload p = read_payload(in, doc.layout, n * scalar_size(t), what);
-  std::vector<T> out(n);
   const bool swap = doc.layout.big_endian == native_little_endian();
+  // Doubles in native order need no conversion: zlib inflates straight into the result.
+  const bool direct = std::is_same_v<T, double> && t == ScalarType::float64 && !swap;
+  std::vector<T> out;
+  if (direct && doc.layout.zlib) {
+    read_payload(in, doc.layout, n * scalar_size(t), what, [&](std::size_t) {
+      out.resize(n);
+      return reinterpret_cast<unsigned char*>(out.data());
+    });
+    return out;
+  }
+  const Payload p = read_payload(in, doc.layout, n * scalar_size(t), what);
+  out.resize(n);
   if constexpr (std::is_same_v<T, double>) {
     unpack(p.data, t, swap, n, out.data());
   } else {

@@ -103,7 +103,8 @@ bool inflate_block(const unsigned char* src, std::uint64_t n, unsigned char* dst
 }
 
 Payload read_compressed(ByteReader& in, const BinaryLayout& layout,
-                        std::optional<std::size_t> expected_bytes, const std::string& what) {
+                        std::optional<std::size_t> expected_bytes, const std::string& what,
+                        const std::function<unsigned char*(std::size_t)>& allocate) {
   const std::size_t at = in.file_offset();
   const BlockTable t = read_block_table(in, layout, what);
   const std::size_t expected = expected_bytes.value_or(static_cast<std::size_t>(t.total));
@@ -114,7 +115,13 @@ Payload read_compressed(ByteReader& in, const BinaryLayout& layout,
   const std::size_t data_at = in.file_offset();
   Payload packed = in.take(static_cast<std::size_t>(t.compressed_total), what + " (zlib blocks)");
   Payload out;
-  out.owned.resize(expected);
+  unsigned char* into = nullptr;
+  if (allocate) {
+    into = allocate(expected);
+  } else {
+    out.owned.resize(expected);
+    into = out.owned.data();
+  }
   std::vector<std::size_t> start(t.n_blocks + 1, 0);
   for (std::size_t k = 0; k < t.n_blocks; ++k) start[k + 1] = start[k] + t.compressed[k];
   std::vector<char> ok(t.n_blocks, 0);
@@ -122,15 +129,15 @@ Payload read_compressed(ByteReader& in, const BinaryLayout& layout,
     const auto k = static_cast<std::size_t>(b);
     const std::uint64_t size = std::min<std::uint64_t>(t.block_size, expected - k * t.block_size);
     ok[k] = inflate_block(packed.data + start[k], t.compressed[k],
-                          out.owned.data() + k * t.block_size, size);
+                          into + k * t.block_size, size);
   });
   const auto bad = static_cast<std::size_t>(std::find(ok.begin(), ok.end(), 0) - ok.begin());
   if (bad < t.n_blocks)
     throw InputError(in.file(), "byte " + std::to_string(data_at + start[bad]),
                      what + ": zlib block " + std::to_string(bad) + " is corrupt or does not "
                      "inflate to its declared size");
-  out.data = out.owned.data();
-  out.size = out.owned.size();
+  out.data = into;
+  out.size = expected;
   return out;
 }
 
@@ -175,8 +182,9 @@ Payload ByteReader::take(std::size_t n, const std::string& what) {
 }
 
 Payload read_payload(ByteReader& in, const BinaryLayout& layout,
-                     std::optional<std::size_t> expected_bytes, const std::string& what) {
-  if (layout.zlib) return read_compressed(in, layout, expected_bytes, what);
+                     std::optional<std::size_t> expected_bytes, const std::string& what,
+                     const std::function<unsigned char*(std::size_t)>& allocate) {
+  if (layout.zlib) return read_compressed(in, layout, expected_bytes, what, allocate);
   const std::size_t at = in.file_offset();
   const Payload head = in.take(layout.header64 ? 8 : 4, what + " (size header)");
   const std::uint64_t n = header_word(head.data, layout);

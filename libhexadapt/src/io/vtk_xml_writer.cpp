@@ -2,6 +2,7 @@
 // appended data (UInt64 headers, zlib blocks when asked).
 #include <pugixml.hpp>
 
+#include <cstring>
 #include <sstream>
 
 #include "hexadapt/core/error.h"
@@ -27,13 +28,11 @@ OutArray data_array(const DataArray& a) {
 }
 
 OutArray points_array(const MeshData& d) {
-  const Vec3* p = d.points.data();
+  static_assert(sizeof(Vec3) == 3 * sizeof(double), "points are stored as packed xyz doubles");
+  const double* xyz = d.points.empty() ? nullptr : d.points.front().data();
   return {"Points", 3, ScalarType::float64, 3 * d.points.size(),
-          [p](std::size_t first, std::size_t count, unsigned char* out) {
-            for (std::size_t k = 0; k < count; ++k) {
-              const double v = p[(first + k) / 3][static_cast<Eigen::Index>((first + k) % 3)];
-              std::memcpy(out + 8 * k, &v, 8);
-            }
+          [xyz](std::size_t first, std::size_t count, unsigned char* out) {
+            std::memcpy(out, xyz + first, count * sizeof(double));
           }};
 }
 
@@ -91,8 +90,14 @@ class XmlFile {
     e.append_attribute("NumberOfComponents") = a.n_components;
     e.append_attribute("format") = "appended";
     e.append_attribute("offset") = static_cast<unsigned long long>(offset_);
-    blocks_.push_back(detail::encode_array(a, encoding_));
-    offset_ += blocks_.back().size();
+    if (encoding_.zlib) {
+      arrays_.push_back({detail::encode_array(a, encoding_), {}});
+      offset_ += arrays_.back().bytes.size();
+    } else {
+      // Plain data is converted while it is written: no copy of the whole array.
+      arrays_.push_back({{}, a});
+      offset_ += 8 + a.n_values * detail::scalar_size(a.type);
+    }
   }
 
   // Metadata as string arrays: one string (NUL-terminated character codes) per key.
@@ -123,8 +128,12 @@ class XmlFile {
     AtomicFile file(path);
     std::ofstream& out = file.stream();
     out.write(text.data(), static_cast<std::streamsize>(mark + 1));
-    for (const auto& b : blocks_)
-      out.write(reinterpret_cast<const char*>(b.data()), static_cast<std::streamsize>(b.size()));
+    for (const Encoded& a : arrays_) {
+      if (a.plain.fill)
+        write_plain(out, a.plain);
+      else
+        out.write(reinterpret_cast<const char*>(a.bytes.data()), static_cast<std::streamsize>(a.bytes.size()));
+    }
     // A line break after the data, as VTK writes it (meshio's raw reader relies on it).
     out.write("\n  ", 3);
     out.write(text.data() + mark + 1, static_cast<std::streamsize>(text.size() - mark - 1));
@@ -134,8 +143,26 @@ class XmlFile {
  private:
   pugi::xml_document doc_;
   pugi::xml_node root_, dataset_;
+  struct Encoded {
+    std::vector<unsigned char> bytes;  ///< header and zlib blocks, or empty for plain data
+    OutArray plain;                    ///< plain data to convert while writing
+  };
+
+  static void write_plain(std::ofstream& out, const OutArray& a) {
+    const std::size_t size = detail::scalar_size(a.type);
+    const std::uint64_t n_bytes = a.n_values * size;
+    out.write(reinterpret_cast<const char*>(&n_bytes), 8);
+    const std::size_t chunk = (std::size_t(1) << 20) / size;
+    std::vector<unsigned char> buffer(chunk * size);
+    for (std::size_t first = 0; first < a.n_values; first += chunk) {
+      const std::size_t count = std::min(chunk, a.n_values - first);
+      a.fill(first, count, buffer.data());
+      out.write(reinterpret_cast<const char*>(buffer.data()), static_cast<std::streamsize>(count * size));
+    }
+  }
+
   detail::Encoding encoding_;
-  std::vector<std::vector<unsigned char>> blocks_;
+  std::vector<Encoded> arrays_;
   std::size_t offset_ = 0;
 };
 
