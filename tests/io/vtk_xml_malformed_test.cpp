@@ -106,6 +106,7 @@ std::vector<Case> cases() {
       {"unknown format", replace(ascii_quad, "Name=\"vf\" format=\"ascii\"", "Name=\"vf\" format=\"hex\""), "format 'hex'"},
       {"wrong components", replace(ascii_quad, "NumberOfComponents=\"3\"", "NumberOfComponents=\"2\""), "expected 3 components"},
       {"triangle", replace(replace(ascii_quad, ">9<", ">5<"), ">4<", ">4<"), "unsupported VTK cell type 5"},
+      {"cell type wraps", replace(ascii_quad, ">9<", ">4294967305<"), "4294967305 is not a VTK cell type"},
       {"node out of range", replace(ascii_quad, ">0 1 2 3<", ">0 1 2 7<"), "out of range"},
       {"wrong node count", replace(ascii_quad, ">4<", ">3<"), "more than the expected 3"},
       {"wrong node count in the types", replace(replace(ascii_quad, ">4<", ">3<"), ">0 1 2 3<", ">0 1 2<"), "has 3 nodes, expected 4"},

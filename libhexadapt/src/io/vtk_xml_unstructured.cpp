@@ -64,6 +64,9 @@ void read_unstructured(const VtkXmlDocument& doc, const ReadOptions& options, Me
   std::size_t start = 0;
   for (std::size_t c = 0; c < n_cells; ++c) {
     const auto end = static_cast<std::size_t>(offsets[c]);
+    if (types[c] < 0 || types[c] > 255)  // VTK cell types are bytes; keep int() from wrapping
+      throw InputError(doc.file, "cell " + std::to_string(c),
+                       "cell type " + std::to_string(types[c]) + " is not a VTK cell type");
     append_vtk_cell(data, static_cast<int>(types[c]), ids.data() + start, end - start,
                     static_cast<std::int64_t>(c), doc.file);
     start = end;
