@@ -5,8 +5,8 @@
 //   hexadapt_io_bench [--threads N] [--read-only] FILE.vti...
 #include <chrono>
 #include <cstdio>
-#include <ctime>
 #include <cstring>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -29,7 +29,9 @@ double seconds(const std::function<void()>& f, double* cpu = nullptr) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-double mb(std::uintmax_t bytes) { return static_cast<double>(bytes) / 1e6; }
+double mb(std::uintmax_t bytes) {
+  return static_cast<double>(bytes) / 1e6;
+}
 
 std::size_t array_bytes(const hexadapt::io::MeshData& d) {
   std::size_t n = 0;
@@ -41,21 +43,24 @@ std::size_t array_bytes(const hexadapt::io::MeshData& d) {
 void bench_file(const std::string& path, bool write) {
   std::string content;
   double cpu = 0;
-  const double t_load = seconds([&] {
-    std::ifstream in(path, std::ios::binary);
-    content.resize(std::filesystem::file_size(path));
-    in.read(content.data(), static_cast<std::streamsize>(content.size()));
-  }, &cpu);
+  const double t_load = seconds(
+      [&] {
+        std::ifstream in(path, std::ios::binary);
+        content.resize(std::filesystem::file_size(path));
+        in.read(content.data(), static_cast<std::streamsize>(content.size()));
+      },
+      &cpu);
   hexadapt::io::MeshData data;
   const double t_parse = seconds([&] { data = hexadapt::io::read_vtk_xml(content, path); }, &cpu);
   const std::size_t payload = array_bytes(data);
   std::printf("%s: %.1f MB file, %d cells, %zu arrays (%.1f MB of values)\n", path.c_str(),
               mb(content.size()), data.n_cells(), data.cell_data.size() + data.point_data.size(),
               mb(payload));
-  std::printf("  read   %.3f s (load %.3f + decode %.3f; cpu %.3f s): %.0f MB/s of file, "
-              "%.0f MB/s of values\n",
-              t_load + t_parse, t_load, t_parse, cpu, mb(content.size()) / (t_load + t_parse),
-              mb(payload) / (t_load + t_parse));
+  std::printf(
+      "  read   %.3f s (load %.3f + decode %.3f; cpu %.3f s): %.0f MB/s of file, "
+      "%.0f MB/s of values\n",
+      t_load + t_parse, t_load, t_parse, cpu, mb(content.size()) / (t_load + t_parse),
+      mb(payload) / (t_load + t_parse));
   content.clear();
   content.shrink_to_fit();
   if (!write) return;
@@ -65,17 +70,19 @@ void bench_file(const std::string& path, bool write) {
       hexadapt::io::WriteOptions o;
       o.compress = compress;
       double cpu_write = 0;
-      const double t = seconds([&] {
-        if (std::strcmp(ext, ".vts") == 0)
-          hexadapt::io::write_vts(data, out, o);
-        else
-          hexadapt::io::write_vtu(data, out, o);
-      }, &cpu_write);
+      const double t = seconds(
+          [&] {
+            if (std::strcmp(ext, ".vts") == 0)
+              hexadapt::io::write_vts(data, out, o);
+            else
+              hexadapt::io::write_vtu(data, out, o);
+          },
+          &cpu_write);
       const auto size = std::filesystem::file_size(out);
-      std::printf("  write %s %-4s %.3f s (cpu %.3f s): %.1f MB file, %.0f MB/s of file, "
-                  "%.0f MB/s of values\n",
-                  ext, compress ? "zlib" : "raw", t, cpu_write, mb(size), mb(size) / t,
-                  mb(payload) / t);
+      std::printf(
+          "  write %s %-4s %.3f s (cpu %.3f s): %.1f MB file, %.0f MB/s of file, "
+          "%.0f MB/s of values\n",
+          ext, compress ? "zlib" : "raw", t, cpu_write, mb(size), mb(size) / t, mb(payload) / t);
       std::filesystem::remove(out);
     }
 }
