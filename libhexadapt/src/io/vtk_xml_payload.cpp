@@ -66,8 +66,7 @@ BlockTable read_block_table(ByteReader& in, const BinaryLayout& layout, const st
   if (t.n_blocks > in.max_remaining() / w)
     throw InputError(in.file(), where,
                      what + ": compression header claims " + std::to_string(t.n_blocks) +
-                         " blocks, more than the "
-                         "file holds (truncated or corrupt)");
+                         " blocks, more than the file holds (truncated or corrupt)");
   if (t.n_blocks > 0 && (t.block_size == 0 || t.last_size > t.block_size))
     throw InputError(in.file(), where,
                      what + ": inconsistent block sizes (block " + std::to_string(t.block_size) +
@@ -80,23 +79,19 @@ BlockTable read_block_table(ByteReader& in, const BinaryLayout& layout, const st
         t.compressed_total + t.compressed[k] > in.max_remaining())
       throw InputError(in.file(), where,
                        what +
-                           ": compressed blocks need more bytes than the "
-                           "file holds (truncated or corrupt)");
+                           ": compressed blocks need more bytes than the file holds "
+                           "(truncated or corrupt)");
     t.compressed_total += t.compressed[k];
   }
-  if (t.n_blocks > 0) {
-    const std::uint64_t last = t.last_size == 0 ? t.block_size : t.last_size;
-    if (t.block_size > (std::uint64_t(1) << 40))
+  // Each block's size is bounded by zlib's ratio first, so the total cannot overflow.
+  const std::uint64_t last = t.last_size == 0 ? t.block_size : t.last_size;
+  for (std::size_t k = 0; k < t.n_blocks; ++k) {
+    const std::uint64_t size = k + 1 == t.n_blocks ? last : t.block_size;
+    if (size > t.compressed[k] * max_zlib_ratio + 64)
       throw InputError(in.file(), where,
-                       what + ": block size " + std::to_string(t.block_size) + " is not plausible");
-    t.total = (t.n_blocks - 1) * t.block_size + last;
-    for (std::size_t k = 0; k < t.n_blocks; ++k) {
-      const std::uint64_t size = k + 1 == t.n_blocks ? last : t.block_size;
-      if (size > t.compressed[k] * max_zlib_ratio + 64)
-        throw InputError(in.file(), where,
-                         what + ": block " + std::to_string(k) + " claims " + bytes_text(size) +
-                             " from " + bytes_text(t.compressed[k]) + " of zlib data");
-    }
+                       what + ": block " + std::to_string(k) + " claims " + bytes_text(size) +
+                           " from " + bytes_text(t.compressed[k]) + " of zlib data");
+    t.total += size;
   }
   return t;
 }
