@@ -6,9 +6,8 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
-#include <sstream>
-
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/vtk_xml.h"
@@ -16,7 +15,7 @@
 namespace {
 
 const char* type_name(hexadapt::io::ScalarType t) {
-  static const char* names[] = {"Int8",  "UInt8",  "Int16", "UInt16",  "Int32",
+  static const char* names[] = {"Int8",   "UInt8", "Int16",  "UInt16",  "Int32",
                                 "UInt32", "Int64", "UInt64", "Float32", "Float64"};
   return names[static_cast<int>(t)];
 }
@@ -24,8 +23,10 @@ const char* type_name(hexadapt::io::ScalarType t) {
 nlohmann::json arrays(const std::vector<hexadapt::io::DataArray>& list) {
   nlohmann::json out = nlohmann::json::array();
   for (const auto& a : list)
-    out.push_back({{"name", a.name}, {"type", type_name(a.type)},
-                   {"n_components", a.n_components}, {"values", a.values}});
+    out.push_back({{"name", a.name},
+                   {"type", type_name(a.type)},
+                   {"n_components", a.n_components},
+                   {"values", a.values}});
   return out;
 }
 
@@ -36,14 +37,19 @@ nlohmann::json summary(const hexadapt::io::MeshData& d) {
   for (auto n : d.cells) cells.push_back(n.value());
   nlohmann::json meta = nlohmann::json::object();
   for (const auto& [k, v] : d.metadata) meta[k] = v;
-  return {{"dim", d.dim}, {"points", points}, {"cells", cells},
-          {"structured_cells", d.structured_cells}, {"point_data", arrays(d.point_data)},
-          {"cell_data", arrays(d.cell_data)}, {"metadata", meta}};
+  return {{"dim", d.dim},
+          {"points", points},
+          {"cells", cells},
+          {"structured_cells", d.structured_cells},
+          {"point_data", arrays(d.point_data)},
+          {"cell_data", arrays(d.cell_data)},
+          {"metadata", meta}};
 }
 
 int run(int argc, char** argv) {
   if (argc < 2) {
-    std::cerr << "usage: hexadapt_io_roundtrip IN [--vtu OUT] [--vts OUT] [--raw] [--meta K=V]...\n";
+    std::cerr
+        << "usage: hexadapt_io_roundtrip IN [--vtu OUT] [--vts OUT] [--raw] [--meta K=V]...\n";
     return 1;
   }
   std::ifstream in(argv[1], std::ios::binary);
@@ -53,7 +59,7 @@ int run(int argc, char** argv) {
   const std::string content = buffer.str();
   hexadapt::io::MeshData data = hexadapt::io::read_vtk_xml(content, argv[1]);
   hexadapt::io::WriteOptions options;
-  options.compress_above = 0;
+  options.compress_above = 500;  // the small test meshes get both stored and compressed arrays
   for (int k = 2; k < argc; ++k) {
     const std::string arg = argv[k];
     if (arg == "--raw") options.compress = false;

@@ -44,7 +44,8 @@ TEST(VtkXmlReader, HexahedronComesInBinaryOrderWithItsArrays) {
   // Binary node b sits at (b & 1, b >> 1 & 1, b >> 2 & 1).
   for (int b = 0; b < 8; ++b)
     EXPECT_EQ(d.points[static_cast<std::size_t>(d.cells[static_cast<std::size_t>(b)].value())],
-              Vec3(b & 1, b >> 1 & 1, b >> 2 & 1)) << b;
+              Vec3(b & 1, b >> 1 & 1, b >> 2 & 1))
+        << b;
   ASSERT_EQ(d.cell_data.size(), 1u);
   EXPECT_EQ(d.cell_data[0].type, ScalarType::int16);
   EXPECT_EQ(d.cell_data[0].values, std::vector<double>{-7});
@@ -99,9 +100,11 @@ std::string two_quads(const char* connectivity, const char* types) {
     <Points><DataArray type="Float32" NumberOfComponents="3" format="ascii">
       0 0 5  1 0 5  2 0 5  0 1 5  1 1 5  2 1 5</DataArray></Points>
     <Cells>
-      <DataArray type="Int64" Name="connectivity" format="ascii">)") + connectivity + R"(</DataArray>
+      <DataArray type="Int64" Name="connectivity" format="ascii">)") +
+         connectivity + R"(</DataArray>
       <DataArray type="Int64" Name="offsets" format="ascii">4 8</DataArray>
-      <DataArray type="UInt8" Name="types" format="ascii">)" + types + R"(</DataArray>
+      <DataArray type="UInt8" Name="types" format="ascii">)" +
+         types + R"(</DataArray>
     </Cells>
   </Piece></UnstructuredGrid>
 </VTKFile>)";

@@ -29,9 +29,9 @@ inline MeshData sample_mesh(int n, bool hexes) {
   for (std::size_t k = 0; k < d.points.size(); ++k)
     d.points[k] += Vec3(1e-3 * static_cast<double>(k % 7), 2e-3 * static_cast<double>(k % 5),
                         hexes ? 1e-3 * static_cast<double>(k % 3) : 0.0);
-  const auto types = {ScalarType::int8,  ScalarType::uint8,  ScalarType::int16,
-                      ScalarType::uint16, ScalarType::int32, ScalarType::uint32,
-                      ScalarType::int64, ScalarType::uint64, ScalarType::float32,
+  const auto types = {ScalarType::int8,   ScalarType::uint8,  ScalarType::int16,
+                      ScalarType::uint16, ScalarType::int32,  ScalarType::uint32,
+                      ScalarType::int64,  ScalarType::uint64, ScalarType::float32,
                       ScalarType::float64};
   int k = 0;
   for (ScalarType t : types) {
@@ -39,16 +39,18 @@ inline MeshData sample_mesh(int n, bool hexes) {
     a.name = "cell_" + std::to_string(k++);
     a.type = t;
     for (index_t c = 0; c < d.n_cells(); ++c)
-      a.values.push_back(t == ScalarType::float64   ? 0.1 * c - 3.0
-                         : t == ScalarType::float32 ? static_cast<double>(0.5f * static_cast<float>(c))
-                                                    : static_cast<double>(c % 100));
+      a.values.push_back(t == ScalarType::float64 ? 0.1 * c - 3.0
+                         : t == ScalarType::float32
+                             ? static_cast<double>(0.5f * static_cast<float>(c))
+                             : static_cast<double>(c % 100));
     d.set_cell_array(a);
   }
   DataArray v;
   v.name = "velocity";
   v.n_components = 3;
   for (std::size_t p = 0; p < d.points.size(); ++p)
-    v.values.insert(v.values.end(), {d.points[p].x(), -d.points[p].y(), 1.0 / (1.0 + static_cast<double>(p))});
+    v.values.insert(v.values.end(),
+                    {d.points[p].x(), -d.points[p].y(), 1.0 / (1.0 + static_cast<double>(p))});
   d.set_point_array(v);
   d.metadata = {{"tool", "hexadapt-test"}, {"options", "--x <a & b> \"q\""}};
   return d;

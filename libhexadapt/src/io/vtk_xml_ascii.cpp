@@ -9,7 +9,9 @@ namespace hexadapt::io::detail {
 
 namespace {
 
-bool is_space(char c) { return c == ' ' || c == '\n' || c == '\t' || c == '\r'; }
+bool is_space(char c) {
+  return c == ' ' || c == '\n' || c == '\t' || c == '\r';
+}
 
 struct Tokens {
   std::string_view text;
@@ -25,8 +27,8 @@ struct Tokens {
 [[noreturn]] void bad_value(std::string_view token, std::size_t offset, ScalarType t, std::size_t k,
                             const std::string& file, const std::string& what) {
   throw InputError(file, "byte " + std::to_string(offset),
-                   what + ": value " + std::to_string(k) + " '" +
-                       std::string(token.substr(0, 40)) + "' is not a valid " + vtk_name(t));
+                   what + ": value " + std::to_string(k) + " '" + std::string(token.substr(0, 40)) +
+                       "' is not a valid " + vtk_name(t));
 }
 
 template <class T>
@@ -36,8 +38,10 @@ bool parse_one(std::string_view tok, ScalarType t, T& out) {
   if (t == ScalarType::float32 || t == ScalarType::float64) {
     double v = 0;
     const auto r = std::from_chars(b, e, v);
-    if (r.ec == std::errc::result_out_of_range && r.ptr == e) v = 0;  // denormal underflow
-    else if (r.ec != std::errc() || r.ptr != e) return false;
+    if (r.ec == std::errc::result_out_of_range && r.ptr == e)
+      v = 0;  // denormal underflow
+    else if (r.ec != std::errc() || r.ptr != e)
+      return false;
     // A Float32 array holds floats: round as a binary file would have stored the value.
     if (t == ScalarType::float32) v = static_cast<double>(static_cast<float>(v));
     if constexpr (std::is_same_v<T, double>) {
@@ -72,9 +76,9 @@ void parse(std::string_view text, std::size_t text_offset, ScalarType t, std::si
   for (std::size_t k = 0; k < n; ++k) {
     const std::string_view tok = tokens.next();
     if (tok.empty())
-      throw InputError(file, "byte " + std::to_string(text_offset + tokens.pos),
-                       what + ": found " + std::to_string(k) + " values, expected " +
-                           std::to_string(n));
+      throw InputError(
+          file, "byte " + std::to_string(text_offset + tokens.pos),
+          what + ": found " + std::to_string(k) + " values, expected " + std::to_string(n));
     if (!parse_one(tok, t, out[k]))
       bad_value(tok, text_offset + tokens.pos - tok.size(), t, k, file, what);
   }

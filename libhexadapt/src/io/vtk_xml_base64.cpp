@@ -86,8 +86,10 @@ bool Base64Reader::next_quantum(const std::string& what) {
 void Base64Reader::read(std::size_t n, std::vector<unsigned char>& out, const std::string& what) {
   if (n > max_remaining())
     throw InputError(file_, "byte " + std::to_string(file_offset()),
-                     what + ": needs " + std::to_string(n) + " more bytes, the base64 text holds "
-                     "at most " + std::to_string(max_remaining()) + " (truncated file?)");
+                     what + ": needs " + std::to_string(n) +
+                         " more bytes, the base64 text holds "
+                         "at most " +
+                         std::to_string(max_remaining()) + " (truncated file?)");
   const std::size_t first = out.size();
   out.resize(first + n);
   unsigned char* dst = out.data() + first;
@@ -108,9 +110,9 @@ void Base64Reader::read(std::size_t n, std::vector<unsigned char>& out, const st
       }
       if (n == 0) return;
       if (!next_quantum(what))
-        throw InputError(file_, "byte " + std::to_string(file_offset()),
-                         what + ": base64 data ends " + std::to_string(n) +
-                             " bytes early (truncated file?)");
+        throw InputError(
+            file_, "byte " + std::to_string(file_offset()),
+            what + ": base64 data ends " + std::to_string(n) + " bytes early (truncated file?)");
     }
     while (n > 0 && pending_pos_ < pending_.size()) {
       *dst++ = pending_[pending_pos_++];

@@ -23,7 +23,9 @@ class Base64Reader {
   /// the alphabet or when the text ends first (`what` names the array).
   void read(std::size_t n, std::vector<unsigned char>& out, const std::string& what);
   /// An upper bound on the bytes still decodable (to check sizes before allocating).
-  std::size_t max_remaining() const { return pending_.size() + (text_.size() - pos_) / 4 * 3 + 3; }
+  std::size_t max_remaining() const {
+    return pending_.size() - pending_pos_ + (text_.size() - pos_) / 4 * 3 + 3;
+  }
   /// File offset of the next undecoded character.
   std::size_t file_offset() const { return file_offset_ + pos_; }
 

@@ -44,12 +44,14 @@ void read_layout(VtkXmlDocument& doc) {
   doc.layout.header64 = header == "UInt64";
   const std::string order = r.attribute("byte_order").as_string("LittleEndian");
   if (order != "LittleEndian" && order != "BigEndian")
-    throw InputError(doc.file, where, "byte_order '" + order + "': expected LittleEndian or BigEndian");
+    throw InputError(doc.file, where,
+                     "byte_order '" + order + "': expected LittleEndian or BigEndian");
   doc.layout.big_endian = order == "BigEndian";
   const std::string compressor = r.attribute("compressor").as_string();
   if (!compressor.empty() && compressor != "vtkZLibDataCompressor")
-    throw InputError(doc.file, where, "compressor '" + compressor +
-                                          "' is not supported (only vtkZLibDataCompressor)");
+    throw InputError(
+        doc.file, where,
+        "compressor '" + compressor + "' is not supported (only vtkZLibDataCompressor)");
   doc.layout.zlib = !compressor.empty();
 }
 
@@ -85,14 +87,16 @@ std::string place(const pugi::xml_node& e) {
   return s;
 }
 
-std::uint64_t count_attribute(const VtkXmlDocument& doc, const pugi::xml_node& e, const char* name) {
+std::uint64_t count_attribute(const VtkXmlDocument& doc, const pugi::xml_node& e,
+                              const char* name) {
   const pugi::xml_attribute a = e.attribute(name);
   const std::string_view v = a.as_string();
   std::uint64_t n = 0;
   const auto r = std::from_chars(v.data(), v.data() + v.size(), n);
   if (!a || r.ec != std::errc() || r.ptr != v.data() + v.size())
-    throw InputError(doc.file, place(e), std::string("expected a non-negative integer attribute ") +
-                                             name + (a ? ", found '" + std::string(v) + "'" : ""));
+    throw InputError(doc.file, place(e),
+                     std::string("expected a non-negative integer attribute ") + name +
+                         (a ? ", found '" + std::string(v) + "'" : ""));
   return n;
 }
 

@@ -3,9 +3,8 @@
 // (with the AppendedData element closed); arrays then find their bytes by offset.
 #pragma once
 
-#include <pugixml.hpp>
-
 #include <cstddef>
+#include <pugixml.hpp>
 #include <string>
 #include <string_view>
 
@@ -16,12 +15,12 @@ namespace hexadapt::io::detail {
 struct VtkXmlDocument {
   std::string file;
   pugi::xml_document xml;
-  pugi::xml_node root;          ///< the VTKFile element
-  std::string type;             ///< its type attribute: "UnstructuredGrid", "ImageData", ...
+  pugi::xml_node root;  ///< the VTKFile element
+  std::string type;     ///< its type attribute: "UnstructuredGrid", "ImageData", ...
   BinaryLayout layout;
   bool has_appended = false;
-  bool appended_base64 = false;   ///< encoding="base64" (else raw)
-  std::string_view appended;      ///< the bytes after the '_' marker
+  bool appended_base64 = false;     ///< encoding="base64" (else raw)
+  std::string_view appended;        ///< the bytes after the '_' marker
   std::size_t appended_offset = 0;  ///< file offset of appended[0]
 };
 

@@ -55,7 +55,8 @@ std::vector<unsigned char> encode_zlib(const OutArray& a, std::size_t n_bytes, i
     a.fill(first, count, raw.data());
     uLongf n = compressBound(static_cast<uLong>(raw.size()));
     blocks[k].resize(n);
-    ok[k] = compress2(blocks[k].data(), &n, raw.data(), static_cast<uLong>(raw.size()), level) == Z_OK;
+    ok[k] =
+        compress2(blocks[k].data(), &n, raw.data(), static_cast<uLong>(raw.size()), level) == Z_OK;
     blocks[k].resize(n);
   });
   for (char c : ok)

@@ -25,7 +25,7 @@ struct OutArray {
 
 /// How the arrays of one file are encoded.
 struct Encoding {
-  bool zlib = false;          ///< the file declares vtkZLibDataCompressor
+  bool zlib = false;               ///< the file declares vtkZLibDataCompressor
   std::size_t compress_above = 0;  ///< arrays of at most this many bytes are stored uncompressed
 };
 

@@ -44,7 +44,9 @@ std::uint64_t header_word(const unsigned char* p, const BinaryLayout& layout) {
   return static_cast<std::uint64_t>(v);
 }
 
-std::string bytes_text(std::uint64_t n) { return std::to_string(n) + " bytes"; }
+std::string bytes_text(std::uint64_t n) {
+  return std::to_string(n) + " bytes";
+}
 
 struct BlockTable {
   std::uint64_t n_blocks = 0, block_size = 0, last_size = 0, total = 0;
@@ -62,48 +64,49 @@ BlockTable read_block_table(ByteReader& in, const BinaryLayout& layout, const st
   t.block_size = header_word(first.data + w, layout);
   t.last_size = header_word(first.data + 2 * w, layout);
   if (t.n_blocks > in.max_remaining() / w)
-    throw InputError(in.file(), where, what + ": compression header claims " +
-                                           std::to_string(t.n_blocks) + " blocks, more than the "
-                                           "file holds (truncated or corrupt)");
+    throw InputError(in.file(), where,
+                     what + ": compression header claims " + std::to_string(t.n_blocks) +
+                         " blocks, more than the file holds (truncated or corrupt)");
   if (t.n_blocks > 0 && (t.block_size == 0 || t.last_size > t.block_size))
-    throw InputError(in.file(), where, what + ": inconsistent block sizes (block " +
-                                           std::to_string(t.block_size) + ", last block " +
-                                           std::to_string(t.last_size) + ")");
+    throw InputError(in.file(), where,
+                     what + ": inconsistent block sizes (block " + std::to_string(t.block_size) +
+                         ", last block " + std::to_string(t.last_size) + ")");
   Payload sizes = in.take(static_cast<std::size_t>(t.n_blocks) * w, what + " (block sizes)");
   t.compressed.resize(t.n_blocks);
   for (std::size_t k = 0; k < t.n_blocks; ++k) {
     t.compressed[k] = header_word(sizes.data + k * w, layout);
-    if (t.compressed[k] > in.max_remaining() || t.compressed_total + t.compressed[k] > in.max_remaining())
-      throw InputError(in.file(), where, what + ": compressed blocks need more bytes than the "
-                                             "file holds (truncated or corrupt)");
+    if (t.compressed[k] > in.max_remaining() ||
+        t.compressed_total + t.compressed[k] > in.max_remaining())
+      throw InputError(in.file(), where,
+                       what +
+                           ": compressed blocks need more bytes than the file holds "
+                           "(truncated or corrupt)");
     t.compressed_total += t.compressed[k];
   }
-  if (t.n_blocks > 0) {
-    const std::uint64_t last = t.last_size == 0 ? t.block_size : t.last_size;
-    if (t.block_size > (std::uint64_t(1) << 40))
-      throw InputError(in.file(), where, what + ": block size " + std::to_string(t.block_size) +
-                                             " is not plausible");
-    t.total = (t.n_blocks - 1) * t.block_size + last;
-    for (std::size_t k = 0; k < t.n_blocks; ++k) {
-      const std::uint64_t size = k + 1 == t.n_blocks ? last : t.block_size;
-      if (size > t.compressed[k] * max_zlib_ratio + 64)
-        throw InputError(in.file(), where, what + ": block " + std::to_string(k) + " claims " +
-                                               bytes_text(size) + " from " +
-                                               bytes_text(t.compressed[k]) + " of zlib data");
-    }
+  // Each block's size is bounded by zlib's ratio first, so the total cannot overflow.
+  const std::uint64_t last = t.last_size == 0 ? t.block_size : t.last_size;
+  for (std::size_t k = 0; k < t.n_blocks; ++k) {
+    const std::uint64_t size = k + 1 == t.n_blocks ? last : t.block_size;
+    if (size > t.compressed[k] * max_zlib_ratio + 64)
+      throw InputError(in.file(), where,
+                       what + ": block " + std::to_string(k) + " claims " + bytes_text(size) +
+                           " from " + bytes_text(t.compressed[k]) + " of zlib data");
+    t.total += size;
   }
   return t;
 }
 
 // Inflates one block into exactly `size` bytes; returns false when the data is not that.
-bool inflate_block(const unsigned char* src, std::uint64_t n, unsigned char* dst, std::uint64_t size) {
+bool inflate_block(const unsigned char* src, std::uint64_t n, unsigned char* dst,
+                   std::uint64_t size) {
   uLongf out = static_cast<uLongf>(size);
   const int rc = uncompress(dst, &out, src, static_cast<uLong>(n));
   return rc == Z_OK && out == size;
 }
 
 Payload read_compressed(ByteReader& in, const BinaryLayout& layout,
-                        std::optional<std::size_t> expected_bytes, const std::string& what) {
+                        std::optional<std::size_t> expected_bytes, const std::string& what,
+                        const std::function<unsigned char*(std::size_t)>& allocate) {
   const std::size_t at = in.file_offset();
   const BlockTable t = read_block_table(in, layout, what);
   const std::size_t expected = expected_bytes.value_or(static_cast<std::size_t>(t.total));
@@ -114,23 +117,29 @@ Payload read_compressed(ByteReader& in, const BinaryLayout& layout,
   const std::size_t data_at = in.file_offset();
   Payload packed = in.take(static_cast<std::size_t>(t.compressed_total), what + " (zlib blocks)");
   Payload out;
-  out.owned.resize(expected);
+  unsigned char* into = nullptr;
+  if (allocate) {
+    into = allocate(expected);
+  } else {
+    out.owned.resize(expected);
+    into = out.owned.data();
+  }
   std::vector<std::size_t> start(t.n_blocks + 1, 0);
   for (std::size_t k = 0; k < t.n_blocks; ++k) start[k + 1] = start[k] + t.compressed[k];
   std::vector<char> ok(t.n_blocks, 0);
   for_blocks(static_cast<std::int64_t>(t.n_blocks), [&](std::int64_t b) {
     const auto k = static_cast<std::size_t>(b);
     const std::uint64_t size = std::min<std::uint64_t>(t.block_size, expected - k * t.block_size);
-    ok[k] = inflate_block(packed.data + start[k], t.compressed[k],
-                          out.owned.data() + k * t.block_size, size);
+    ok[k] = inflate_block(packed.data + start[k], t.compressed[k], into + k * t.block_size, size);
   });
   const auto bad = static_cast<std::size_t>(std::find(ok.begin(), ok.end(), 0) - ok.begin());
   if (bad < t.n_blocks)
     throw InputError(in.file(), "byte " + std::to_string(data_at + start[bad]),
-                     what + ": zlib block " + std::to_string(bad) + " is corrupt or does not "
-                     "inflate to its declared size");
-  out.data = out.owned.data();
-  out.size = out.owned.size();
+                     what + ": zlib block " + std::to_string(bad) +
+                         " is corrupt or does not "
+                         "inflate to its declared size");
+  out.data = into;
+  out.size = expected;
   return out;
 }
 
@@ -142,7 +151,8 @@ ByteReader::ByteReader(std::string_view bytes, std::size_t file_offset, const st
   if (b64) b64_.emplace(bytes, file_offset, file);
 }
 
-ByteReader ByteReader::raw(std::string_view bytes, std::size_t file_offset, const std::string& file) {
+ByteReader ByteReader::raw(std::string_view bytes, std::size_t file_offset,
+                           const std::string& file) {
   return ByteReader(bytes, file_offset, file, false);
 }
 ByteReader ByteReader::base64(std::string_view text, std::size_t file_offset,
@@ -175,15 +185,16 @@ Payload ByteReader::take(std::size_t n, const std::string& what) {
 }
 
 Payload read_payload(ByteReader& in, const BinaryLayout& layout,
-                     std::optional<std::size_t> expected_bytes, const std::string& what) {
-  if (layout.zlib) return read_compressed(in, layout, expected_bytes, what);
+                     std::optional<std::size_t> expected_bytes, const std::string& what,
+                     const std::function<unsigned char*(std::size_t)>& allocate) {
+  if (layout.zlib) return read_compressed(in, layout, expected_bytes, what, allocate);
   const std::size_t at = in.file_offset();
   const Payload head = in.take(layout.header64 ? 8 : 4, what + " (size header)");
   const std::uint64_t n = header_word(head.data, layout);
   if (expected_bytes && n != *expected_bytes)
-    throw InputError(in.file(), "byte " + std::to_string(at),
-                     what + ": header gives " + bytes_text(n) + ", expected " +
-                         bytes_text(*expected_bytes));
+    throw InputError(
+        in.file(), "byte " + std::to_string(at),
+        what + ": header gives " + bytes_text(n) + ", expected " + bytes_text(*expected_bytes));
   if (n > in.max_remaining())
     throw InputError(in.file(), "byte " + std::to_string(at),
                      what + ": header gives " + bytes_text(n) + ", only " +

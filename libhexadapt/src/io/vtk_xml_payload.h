@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -50,8 +51,10 @@ class ByteReader {
 
 /// Reads the header and data of one array holding exactly `expected_bytes` bytes (any size
 /// the header gives when nullopt); decompresses zlib blocks in parallel. `what` names the
-/// array in errors.
+/// array in errors. With `allocate`, zlib data is inflated into the memory it returns for
+/// the size (called once the sizes are checked) rather than into a new buffer.
 Payload read_payload(ByteReader& in, const BinaryLayout& layout,
-                     std::optional<std::size_t> expected_bytes, const std::string& what);
+                     std::optional<std::size_t> expected_bytes, const std::string& what,
+                     const std::function<unsigned char*(std::size_t)>& allocate = {});
 
 }  // namespace hexadapt::io::detail

@@ -63,7 +63,8 @@ void read_attributes(const VtkXmlDocument& doc, const pugi::xml_node& dataset,
 
 }  // namespace detail
 
-MeshData read_vtk_xml(std::string_view content, const std::string& file, const ReadOptions& options) {
+MeshData read_vtk_xml(std::string_view content, const std::string& file,
+                      const ReadOptions& options) {
   detail::VtkXmlDocument doc;
   detail::load_vtk_xml(doc, content, file);
   MeshData data;
@@ -77,8 +78,9 @@ MeshData read_vtk_xml(std::string_view content, const std::string& file, const R
     detail::read_structured(doc, options, data);
   else
     throw InputError(file, detail::place(doc.root),
-                     "data set type '" + doc.type + "' is not supported (expected UnstructuredGrid, "
-                     "ImageData, RectilinearGrid or StructuredGrid)");
+                     "data set type '" + doc.type +
+                         "' is not supported (expected UnstructuredGrid, "
+                         "ImageData, RectilinearGrid or StructuredGrid)");
   return data;
 }
 

@@ -40,16 +40,26 @@ T load(const unsigned char* p, bool swap) {
 template <class F>
 decltype(auto) visit_type(ScalarType t, F&& f) {
   switch (t) {
-    case ScalarType::int8: return f(std::int8_t{});
-    case ScalarType::uint8: return f(std::uint8_t{});
-    case ScalarType::int16: return f(std::int16_t{});
-    case ScalarType::uint16: return f(std::uint16_t{});
-    case ScalarType::int32: return f(std::int32_t{});
-    case ScalarType::uint32: return f(std::uint32_t{});
-    case ScalarType::int64: return f(std::int64_t{});
-    case ScalarType::uint64: return f(std::uint64_t{});
-    case ScalarType::float32: return f(float{});
-    default: return f(double{});
+    case ScalarType::int8:
+      return f(std::int8_t{});
+    case ScalarType::uint8:
+      return f(std::uint8_t{});
+    case ScalarType::int16:
+      return f(std::int16_t{});
+    case ScalarType::uint16:
+      return f(std::uint16_t{});
+    case ScalarType::int32:
+      return f(std::int32_t{});
+    case ScalarType::uint32:
+      return f(std::uint32_t{});
+    case ScalarType::int64:
+      return f(std::int64_t{});
+    case ScalarType::uint64:
+      return f(std::uint64_t{});
+    case ScalarType::float32:
+      return f(float{});
+    default:
+      return f(double{});
   }
 }
 
@@ -73,13 +83,17 @@ std::optional<ScalarType> scalar_type_of(std::string_view vtk_name_) {
   return std::nullopt;
 }
 
-const char* vtk_name(ScalarType t) { return names[static_cast<std::size_t>(t)].name; }
+const char* vtk_name(ScalarType t) {
+  return names[static_cast<std::size_t>(t)].name;
+}
 
 std::size_t scalar_size(ScalarType t) {
   return visit_type(t, [](auto v) { return sizeof(v); });
 }
 
-bool is_integer(ScalarType t) { return t != ScalarType::float32 && t != ScalarType::float64; }
+bool is_integer(ScalarType t) {
+  return t != ScalarType::float32 && t != ScalarType::float64;
+}
 
 bool native_little_endian() {
   const std::uint16_t one = 1;
@@ -96,7 +110,8 @@ void unpack(const unsigned char* src, ScalarType t, bool swap, std::size_t n, do
   }
   visit_type(t, [&](auto zero) {
     using T = decltype(zero);
-    for (std::size_t i = 0; i < n; ++i) out[i] = static_cast<double>(load<T>(src + i * sizeof(T), swap));
+    for (std::size_t i = 0; i < n; ++i)
+      out[i] = static_cast<double>(load<T>(src + i * sizeof(T), swap));
   });
 }
 

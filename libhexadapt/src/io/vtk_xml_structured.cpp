@@ -33,7 +33,8 @@ struct Block {
 };
 
 // The extent of the piece (or of the whole data set), its point and cell counts.
-Block block_of(const VtkXmlDocument& doc, const pugi::xml_node& dataset, const pugi::xml_node& piece) {
+Block block_of(const VtkXmlDocument& doc, const pugi::xml_node& dataset,
+               const pugi::xml_node& piece) {
   const pugi::xml_node e = piece.attribute("Extent") ? piece : dataset;
   const char* attr = piece.attribute("Extent") ? "Extent" : "WholeExtent";
   if (!e.attribute(attr)) throw InputError(doc.file, place(piece), "no Extent or WholeExtent");
@@ -45,8 +46,9 @@ Block block_of(const VtkXmlDocument& doc, const pugi::xml_node& dataset, const p
     b.extent[2 * a] = v[2 * a];
     b.extent[2 * a + 1] = v[2 * a + 1];
     if (v[2 * a + 1] < v[2 * a] || v[2 * a + 1] - v[2 * a] >= std::numeric_limits<index_t>::max())
-      throw InputError(doc.file, place(e), std::string(attr) + " axis " + std::to_string(a) +
-                                               ": expected min <= max within 32-bit ids");
+      throw InputError(doc.file, place(e),
+                       std::string(attr) + " axis " + std::to_string(a) +
+                           ": expected min <= max within 32-bit ids");
     b.dims[a] = v[2 * a + 1] - v[2 * a] + 1;
     b.n_points *= static_cast<std::size_t>(b.dims[a]);
     b.n_cells *= static_cast<std::size_t>(std::max<std::int64_t>(b.dims[a] - 1, 1));
@@ -55,7 +57,6 @@ Block block_of(const VtkXmlDocument& doc, const pugi::xml_node& dataset, const p
   }
   return b;
 }
-
 
 template <class F>
 void for_each_point(const Block& b, F&& f) {

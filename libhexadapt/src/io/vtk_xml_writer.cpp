@@ -1,7 +1,7 @@
 // Writing .vtu and .vts: the XML part is built with pugixml, the arrays follow as raw
 // appended data (UInt64 headers, zlib blocks when asked).
+#include <cstring>
 #include <pugixml.hpp>
-
 #include <sstream>
 
 #include "hexadapt/core/error.h"
@@ -27,13 +27,11 @@ OutArray data_array(const DataArray& a) {
 }
 
 OutArray points_array(const MeshData& d) {
-  const Vec3* p = d.points.data();
+  static_assert(sizeof(Vec3) == 3 * sizeof(double), "points are stored as packed xyz doubles");
+  const double* xyz = d.points.empty() ? nullptr : d.points.front().data();
   return {"Points", 3, ScalarType::float64, 3 * d.points.size(),
-          [p](std::size_t first, std::size_t count, unsigned char* out) {
-            for (std::size_t k = 0; k < count; ++k) {
-              const double v = p[(first + k) / 3][static_cast<Eigen::Index>((first + k) % 3)];
-              std::memcpy(out + 8 * k, &v, 8);
-            }
+          [xyz](std::size_t first, std::size_t count, unsigned char* out) {
+            std::memcpy(out, xyz + first, count * sizeof(double));
           }};
 }
 
@@ -55,14 +53,16 @@ std::vector<OutArray> cell_arrays(const MeshData& d) {
   const bool hex = d.dim == 3;
   std::vector<OutArray> out;
   out.push_back(int64_array("connectivity", d.cells.size(), [cells, hex](std::size_t i) {
-    const std::size_t k = hex ? (i & ~std::size_t(7)) + std::size_t(ref_hex::vtk_of_binary[i & 7]) : i;
+    const std::size_t k =
+        hex ? (i & ~std::size_t(7)) + std::size_t(ref_hex::vtk_of_binary[i & 7]) : i;
     return std::int64_t(cells[k].value());
   }));
   out.push_back(int64_array("offsets", static_cast<std::size_t>(d.n_cells()),
                             [npc](std::size_t c) { return std::int64_t((c + 1) * npc); }));
   const unsigned char type = hex ? 12 : 9;  // VTK_HEXAHEDRON, VTK_QUAD
-  out.push_back({"types", 1, ScalarType::uint8, static_cast<std::size_t>(d.n_cells()),
-                 [type](std::size_t, std::size_t count, unsigned char* o) { std::memset(o, type, count); }});
+  out.push_back(
+      {"types", 1, ScalarType::uint8, static_cast<std::size_t>(d.n_cells()),
+       [type](std::size_t, std::size_t count, unsigned char* o) { std::memset(o, type, count); }});
   return out;
 }
 
@@ -77,7 +77,8 @@ class XmlFile {
     root_ = doc_.append_child("VTKFile");
     root_.append_attribute("type") = type;
     root_.append_attribute("version") = "1.0";
-    root_.append_attribute("byte_order") = detail::native_little_endian() ? "LittleEndian" : "BigEndian";
+    root_.append_attribute("byte_order") =
+        detail::native_little_endian() ? "LittleEndian" : "BigEndian";
     root_.append_attribute("header_type") = "UInt64";
     if (encoding_.zlib) root_.append_attribute("compressor") = "vtkZLibDataCompressor";
     dataset_ = root_.append_child(type);
@@ -91,8 +92,14 @@ class XmlFile {
     e.append_attribute("NumberOfComponents") = a.n_components;
     e.append_attribute("format") = "appended";
     e.append_attribute("offset") = static_cast<unsigned long long>(offset_);
-    blocks_.push_back(detail::encode_array(a, encoding_));
-    offset_ += blocks_.back().size();
+    if (encoding_.zlib) {
+      arrays_.push_back({detail::encode_array(a, encoding_), {}});
+      offset_ += arrays_.back().bytes.size();
+    } else {
+      // Plain data is converted while it is written: no copy of the whole array.
+      arrays_.push_back({{}, a});
+      offset_ += 8 + a.n_values * detail::scalar_size(a.type);
+    }
   }
 
   // Metadata as string arrays: one string (NUL-terminated character codes) per key.
@@ -123,8 +130,13 @@ class XmlFile {
     AtomicFile file(path);
     std::ofstream& out = file.stream();
     out.write(text.data(), static_cast<std::streamsize>(mark + 1));
-    for (const auto& b : blocks_)
-      out.write(reinterpret_cast<const char*>(b.data()), static_cast<std::streamsize>(b.size()));
+    for (const Encoded& a : arrays_) {
+      if (a.plain.fill)
+        write_plain(out, a.plain);
+      else
+        out.write(reinterpret_cast<const char*>(a.bytes.data()),
+                  static_cast<std::streamsize>(a.bytes.size()));
+    }
     // A line break after the data, as VTK writes it (meshio's raw reader relies on it).
     out.write("\n  ", 3);
     out.write(text.data() + mark + 1, static_cast<std::streamsize>(text.size() - mark - 1));
@@ -134,15 +146,35 @@ class XmlFile {
  private:
   pugi::xml_document doc_;
   pugi::xml_node root_, dataset_;
+  struct Encoded {
+    std::vector<unsigned char> bytes;  ///< header and zlib blocks, or empty for plain data
+    OutArray plain;                    ///< plain data to convert while writing
+  };
+
+  static void write_plain(std::ofstream& out, const OutArray& a) {
+    const std::size_t size = detail::scalar_size(a.type);
+    const std::uint64_t n_bytes = a.n_values * size;
+    out.write(reinterpret_cast<const char*>(&n_bytes), 8);
+    const std::size_t chunk = (std::size_t(1) << 20) / size;
+    std::vector<unsigned char> buffer(chunk * size);
+    for (std::size_t first = 0; first < a.n_values; first += chunk) {
+      const std::size_t count = std::min(chunk, a.n_values - first);
+      a.fill(first, count, buffer.data());
+      out.write(reinterpret_cast<const char*>(buffer.data()),
+                static_cast<std::streamsize>(count * size));
+    }
+  }
+
   detail::Encoding encoding_;
-  std::vector<std::vector<unsigned char>> blocks_;
+  std::vector<Encoded> arrays_;
   std::size_t offset_ = 0;
 };
 
 std::size_t largest_array(const MeshData& d) {
   std::size_t n = std::max(d.points.size() * 24, d.cells.size() * 8);
   for (const auto* group : {&d.point_data, &d.cell_data})
-    for (const DataArray& a : *group) n = std::max(n, a.values.size() * detail::scalar_size(a.type));
+    for (const DataArray& a : *group)
+      n = std::max(n, a.values.size() * detail::scalar_size(a.type));
   return n;
 }
 
@@ -173,9 +205,11 @@ bool is_structured(const MeshData& d) {
   if (d.points.size() != np) return false;
   std::vector<NodeId> expected;
   if (d.dim == 3)
-    for (const auto& c : structured_hexes(n[0], n[1], n[2])) expected.insert(expected.end(), c.begin(), c.end());
+    for (const auto& c : structured_hexes(n[0], n[1], n[2]))
+      expected.insert(expected.end(), c.begin(), c.end());
   else
-    for (const auto& c : structured_quads(n[0], n[1])) expected.insert(expected.end(), c.begin(), c.end());
+    for (const auto& c : structured_quads(n[0], n[1]))
+      expected.insert(expected.end(), c.begin(), c.end());
   return expected == d.cells;
 }
 
@@ -198,8 +232,9 @@ void write_vtu(const MeshData& data, const std::string& path, const WriteOptions
 void write_vts(const MeshData& data, const std::string& path, const WriteOptions& options) {
   check_writable(data, path);
   if (!is_structured(data))
-    throw OptionError(path + ": a .vts needs a structured block of cells (structured_cells "
-                             "set and matching the cells); write a .vtu instead");
+    throw OptionError(path +
+                      ": a .vts needs a structured block of cells (structured_cells "
+                      "set and matching the cells); write a .vtu instead");
   const auto& n = data.structured_cells;
   const std::string extent = "0 " + std::to_string(n[0]) + " 0 " + std::to_string(n[1]) + " 0 " +
                              std::to_string(data.dim == 3 ? n[2] : 0);
