@@ -1,0 +1,186 @@
+// hexadapt-measure end to end: files written by the library, the built tool run on them,
+// exit codes and JSON fields checked.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "hexadapt/io/mesh_file.h"
+#include "hexadapt/mesh/structured.h"
+#include "hexadapt/quality/scaled_jacobian.h"
+
+namespace hexadapt {
+namespace {
+
+namespace fs = std::filesystem;
+
+class MeasureCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("hexadapt-measure-" + std::to_string(::getpid()) + "-" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  // Runs the tool with these arguments; returns its exit code, stdout in `out`.
+  int run(const std::string& args, std::string* out = nullptr) const {
+    const std::string log = path("stdout.txt");
+    const std::string cmd = std::string(HEXADAPT_TOOLS_DIR) + "/hexadapt-measure " + args +
+                            " > " + log + " 2> " + path("stderr.txt");
+    const int status = std::system(cmd.c_str());
+    if (out) *out = slurp(log);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+
+  static std::string slurp(const std::string& file) {
+    std::ifstream in(file);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  }
+
+  nlohmann::json report() const { return nlohmann::json::parse(slurp(path("report.json"))); }
+
+  fs::path dir_;
+};
+
+io::MeshData hex_grid_data(double bad_shift) {
+  io::MeshData d = io::from_mesh(make_hex_grid(3, 3, 3));
+  // Node (1,1,1) (id 21) pushed along the diagonal: the cells around it lose quality.
+  d.points[21] += Vec3(bad_shift, bad_shift, bad_shift);
+  return d;
+}
+
+TEST_F(MeasureCli, GoodGridPasses) {
+  io::write_mesh(hex_grid_data(0), path("grid.vtu"));
+  std::string out;
+  ASSERT_EQ(run(path("grid.vtu") + " --json " + path("report.json"), &out), 0);
+  EXPECT_NE(out.find("27 cells"), std::string::npos) << out;
+  const auto j = report();
+  EXPECT_EQ(j["tool"], "hexadapt-measure");
+  EXPECT_EQ(j["mesh"]["cells"], 27);
+  EXPECT_EQ(j["mesh"]["nodes"], 64);
+  EXPECT_EQ(j["mesh"]["dim"], 3);
+  EXPECT_DOUBLE_EQ(j["quality"]["scaled_jacobian"]["min"].get<double>(), 1.0);
+  EXPECT_EQ(j["quality"]["histogram"]["counts"].size(), 20u);
+  EXPECT_EQ(j["quality"]["histogram"]["counts"][19], 27);
+  EXPECT_TRUE(j["mesh_check"]["passed"].get<bool>());
+  EXPECT_TRUE(j["passed"].get<bool>());
+  EXPECT_EQ(j["exit_code"], 0);
+}
+
+TEST_F(MeasureCli, ThresholdDecidesTheExitCode) {
+  const io::MeshData d = hex_grid_data(0.3);
+  io::write_mesh(d, path("bent.vtk"));
+  double worst = 1;
+  for (CellId c : id_range<CellId>(d.n_cells())) {
+    std::array<Vec3, 8> p;
+    for (std::size_t k = 0; k < 8; ++k) p[k] = d.points[d.cells[c.idx() * 8 + k].idx()];
+    worst = std::min(worst, hex_scaled_jacobian(p));
+  }
+  ASSERT_GT(worst, 0.05);
+  ASSERT_LT(worst, 0.3);
+  EXPECT_EQ(run(path("bent.vtk") + " -q --bins 8 --json " + path("report.json")), 3);
+  auto j = report();
+  EXPECT_NEAR(j["quality"]["scaled_jacobian"]["min"].get<double>(), worst, 1e-12);
+  EXPECT_GT(j["quality"]["below_threshold"]["count"].get<int>(), 0);
+  EXPECT_FALSE(j["quality"]["passed"].get<bool>());
+  EXPECT_TRUE(j["mesh_check"]["passed"].get<bool>());
+  EXPECT_EQ(j["quality"]["histogram"]["counts"].size(), 8u);
+  EXPECT_EQ(run(path("bent.vtk") + " --threshold 0.05 --json " + path("report.json")), 0);
+  EXPECT_EQ(report()["quality"]["below_threshold"]["count"], 0);
+}
+
+TEST_F(MeasureCli, HangingNodeFailsTheCheck) {
+  io::MeshData d;
+  d.dim = 2;
+  d.points = {{0, 0, 0}, {1, 0, 0}, {1, 2, 0}, {0, 2, 0}, {1, 1, 0}, {2, 0, 0}, {2, 1, 0}, {2, 2, 0}};
+  for (int n : {0, 1, 2, 3, 1, 5, 6, 4, 4, 6, 7, 2}) d.cells.push_back(NodeId(n));
+  io::write_mesh(d, path("t.vtu"));
+  EXPECT_EQ(run(path("t.vtu") + " --json " + path("report.json")), 3);
+  const auto j = report();
+  EXPECT_EQ(j["mesh_check"]["hanging_nodes"], 1);
+  EXPECT_EQ(j["mesh_check"]["first"]["hanging_nodes"][0]["node"], 4);
+  EXPECT_TRUE(j["quality"]["passed"].get<bool>());
+  EXPECT_FALSE(j["passed"].get<bool>());
+}
+
+TEST_F(MeasureCli, FaceSharedByThreeCellsIsAFailedCheck) {
+  io::MeshData d = io::from_mesh(make_hex_grid(1, 1, 2));
+  for (int v = 0; v < 4; ++v)
+    d.points.push_back(d.points[d.cells[12 + static_cast<std::size_t>(v)].idx()] + Vec3(0, 0, 5));
+  for (int v = 0; v < 8; ++v)
+    d.cells.push_back(v < 4 ? d.cells[8 + static_cast<std::size_t>(v)] : NodeId(12 + v - 4));
+  io::write_mesh(d, path("three.vtu"));
+  EXPECT_EQ(run(path("three.vtu") + " --json " + path("report.json")), 3);
+  const auto j = report();
+  EXPECT_FALSE(j["mesh_check"]["representable"].get<bool>());
+  EXPECT_EQ(j["mesh"]["cells"], 3);
+}
+
+TEST_F(MeasureCli, QualityFieldHoldsThePerCellValues) {
+  const io::MeshData d = hex_grid_data(0.3);
+  io::write_mesh(d, path("in.vtu"));
+  EXPECT_EQ(run(path("in.vtu") + " -q --threshold 0 --quality-field " + path("q.vtu")), 0);
+  const io::MeshData q = io::read_mesh(path("q.vtu"));
+  const io::DataArray* sj = q.find_cell_array("scaled_jacobian");
+  ASSERT_NE(sj, nullptr);
+  ASSERT_NE(q.find_cell_array("shape"), nullptr);
+  ASSERT_EQ(sj->values.size(), 27u);
+  for (CellId c : id_range<CellId>(d.n_cells())) {
+    std::array<Vec3, 8> p;
+    for (std::size_t k = 0; k < 8; ++k) p[k] = d.points[d.cells[c.idx() * 8 + k].idx()];
+    EXPECT_DOUBLE_EQ(sj->values[c.idx()], hex_scaled_jacobian(p)) << c.value();
+  }
+  // Never over the input.
+  EXPECT_EQ(run(path("in.vtu") + " --quality-field " + path("in.vtu")), 1);
+}
+
+TEST_F(MeasureCli, PurityOfAMaterialArray) {
+  io::MeshData d = io::from_mesh(make_quad_grid(2, 2));
+  io::DataArray m;
+  m.name = "material";
+  m.type = io::ScalarType::int32;
+  m.values = {0, 1, 1, 0};
+  d.set_cell_array(m);
+  io::write_mesh(d, path("m.vtu"));
+  EXPECT_EQ(run(path("m.vtu") + " --json " + path("report.json")), 0);
+  const auto j = report();
+  EXPECT_TRUE(j["purity"]["material_array"].get<bool>());
+  EXPECT_EQ(j["purity"]["invalid_material_cells"], 0);
+}
+
+TEST_F(MeasureCli, BadInputAndUsage) {
+  EXPECT_EQ(run(path("missing.vtu")), 2);
+  {
+    std::ofstream(path("garbage.vtu")) << "this is not a VTK file\n";
+  }
+  EXPECT_EQ(run(path("garbage.vtu")), 2);
+  io::write_mesh(hex_grid_data(0), path("grid.vtu"));
+  EXPECT_EQ(run(path("grid.vtu") + " --bins 0"), 1);
+  EXPECT_EQ(run(path("grid.vtu") + " --no-such-option"), 1);
+  EXPECT_EQ(run(""), 1);
+}
+
+TEST_F(MeasureCli, HelpDocumentsEveryOption) {
+  std::string out;
+  ASSERT_EQ(run("--help", &out), 0);
+  for (const char* opt : {"--threshold", "--bins", "--quality-field", "--json", "--threads", "-q",
+                          "-v", "--list", "--duplicate-tolerance", "--conformity-tolerance",
+                          "--material-array", "--plane"})
+    EXPECT_NE(out.find(opt), std::string::npos) << opt;
+}
+
+}  // namespace
+}  // namespace hexadapt
