@@ -8,8 +8,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 
 #include "hexadapt/io/mesh_file.h"
@@ -36,8 +36,8 @@ class MeasureCli : public ::testing::Test {
   // Runs the tool with these arguments; returns its exit code, stdout in `out`.
   int run(const std::string& args, std::string* out = nullptr) const {
     const std::string log = path("stdout.txt");
-    const std::string cmd = std::string(HEXADAPT_TOOLS_DIR) + "/hexadapt-measure " + args +
-                            " > " + log + " 2> " + path("stderr.txt");
+    const std::string cmd = std::string(HEXADAPT_TOOLS_DIR) + "/hexadapt-measure " + args + " > " +
+                            log + " 2> " + path("stderr.txt");
     const int status = std::system(cmd.c_str());
     if (out) *out = slurp(log);
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -105,7 +105,8 @@ TEST_F(MeasureCli, ThresholdDecidesTheExitCode) {
 TEST_F(MeasureCli, HangingNodeFailsTheCheck) {
   io::MeshData d;
   d.dim = 2;
-  d.points = {{0, 0, 0}, {1, 0, 0}, {1, 2, 0}, {0, 2, 0}, {1, 1, 0}, {2, 0, 0}, {2, 1, 0}, {2, 2, 0}};
+  d.points = {{0, 0, 0}, {1, 0, 0}, {1, 2, 0}, {0, 2, 0},
+              {1, 1, 0}, {2, 0, 0}, {2, 1, 0}, {2, 2, 0}};
   for (int n : {0, 1, 2, 3, 1, 5, 6, 4, 4, 6, 7, 2}) d.cells.push_back(NodeId(n));
   io::write_mesh(d, path("t.vtu"));
   EXPECT_EQ(run(path("t.vtu") + " --json " + path("report.json")), 3);
@@ -163,9 +164,7 @@ TEST_F(MeasureCli, PurityOfAMaterialArray) {
 
 TEST_F(MeasureCli, BadInputAndUsage) {
   EXPECT_EQ(run(path("missing.vtu")), 2);
-  {
-    std::ofstream(path("garbage.vtu")) << "this is not a VTK file\n";
-  }
+  { std::ofstream(path("garbage.vtu")) << "this is not a VTK file\n"; }
   EXPECT_EQ(run(path("garbage.vtu")), 2);
   io::write_mesh(hex_grid_data(0), path("grid.vtu"));
   EXPECT_EQ(run(path("grid.vtu") + " --bins 0"), 1);
@@ -176,9 +175,9 @@ TEST_F(MeasureCli, BadInputAndUsage) {
 TEST_F(MeasureCli, HelpDocumentsEveryOption) {
   std::string out;
   ASSERT_EQ(run("--help", &out), 0);
-  for (const char* opt : {"--threshold", "--bins", "--quality-field", "--json", "--threads", "-q",
-                          "-v", "--list", "--duplicate-tolerance", "--conformity-tolerance",
-                          "--material-array", "--plane"})
+  for (const char* opt :
+       {"--threshold", "--bins", "--quality-field", "--json", "--threads", "-q", "-v", "--list",
+        "--duplicate-tolerance", "--conformity-tolerance", "--material-array", "--plane"})
     EXPECT_NE(out.find(opt), std::string::npos) << opt;
 }
 

@@ -3,6 +3,7 @@
 #include "hexadapt/measure/quality_report.h"
 
 #include <gtest/gtest.h>
+
 #include <nlohmann/json.hpp>
 
 #include "hexadapt/core/error.h"
@@ -70,7 +71,8 @@ TEST(QualityReport, UnrepresentableTopologyIsAFailedCheck) {
   const HexMesh column = make_hex_grid(1, 1, 2);
   io::MeshData d = io::from_mesh(column);
   for (int v = 0; v < 4; ++v) {
-    d.points.push_back(d.points[d.cells[8 + 4 + static_cast<std::size_t>(v)].idx()] + Vec3(0, 0, 5));
+    d.points.push_back(d.points[d.cells[8 + 4 + static_cast<std::size_t>(v)].idx()] +
+                       Vec3(0, 0, 5));
   }
   for (int v = 0; v < 8; ++v) {
     const NodeId n = d.cells[8 + static_cast<std::size_t>(v)];
@@ -101,7 +103,8 @@ TEST(QualityReport, Purity) {
   EXPECT_EQ(r.purity.fraction_arrays, (std::vector<std::string>{"vf_a", "vf_b"}));
   EXPECT_TRUE(r.purity.ok());
 
-  d.set_cell_array(cell_array("material", {2, 0.5, -1}));  // beyond 2 materials, fractional, negative
+  d.set_cell_array(
+      cell_array("material", {2, 0.5, -1}));  // beyond 2 materials, fractional, negative
   r = quality_report(d, {});
   EXPECT_EQ(r.purity.invalid_material_cells, 3);
   EXPECT_FALSE(r.purity.ok());

@@ -13,13 +13,16 @@ namespace {
 using Q = QuadMesh::CellNodes;
 using H = HexMesh::CellNodes;
 
-Q q(int a, int b, int c, int d) { return {NodeId(a), NodeId(b), NodeId(c), NodeId(d)}; }
+Q q(int a, int b, int c, int d) {
+  return {NodeId(a), NodeId(b), NodeId(c), NodeId(d)};
+}
 
 // The cells of mesh m without the listed ones.
 HexMesh without(const HexMesh& m, std::vector<int> drop) {
   std::vector<H> cells;
   for (CellId c : id_range<CellId>(m.n_cells()))
-    if (std::find(drop.begin(), drop.end(), c.value()) == drop.end()) cells.push_back(m.cell_nodes(c));
+    if (std::find(drop.begin(), drop.end(), c.value()) == drop.end())
+      cells.push_back(m.cell_nodes(c));
   return HexMesh(m.points(), cells);
 }
 
@@ -153,7 +156,8 @@ TEST(MeshCheck, BowTieNodes) {
   const QuadMesh grid = make_quad_grid(2, 2);
   std::vector<Vec3> gp;
   for (NodeId n : id_range<NodeId>(grid.n_nodes())) gp.push_back(grid.point(n));
-  const auto r2b = check_mesh(QuadMesh(gp, {grid.cell_nodes(CellId(1)), grid.cell_nodes(CellId(2))}));
+  const auto r2b =
+      check_mesh(QuadMesh(gp, {grid.cell_nodes(CellId(1)), grid.cell_nodes(CellId(2))}));
   EXPECT_EQ(r2b.nonmanifold_nodes, 1);
   EXPECT_EQ(r2b.unreferenced_nodes, 2);
 

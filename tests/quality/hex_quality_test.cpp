@@ -22,7 +22,9 @@ Hex mapped_cube(const std::function<Vec3(const Vec3&)>& f) {
   return p;
 }
 
-Hex unit_cube() { return mapped_cube([](const Vec3& x) { return x; }); }
+Hex unit_cube() {
+  return mapped_cube([](const Vec3& x) { return x; });
+}
 
 // Corner 7 of the unit cube pulled out to (1 + t)(1, 1, 1). At corner 7 the (mirrored)
 // edges are the rows of I + t J (J all ones): det 1 + 3t, each length sqrt((1+t)^2 + 2t^2).
@@ -52,8 +54,7 @@ struct HexCase {
 
 std::vector<HexCase> hex_cases() {
   const double s = 0.7;  // shear factor
-  const Eigen::Matrix3d rot =
-      Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  const Eigen::Matrix3d rot = Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized()).toRotationMatrix();
   return {
       {"unit cube", unit_cube(), 1.0, 1.0},
       {"scaled, rotated, translated cube",
@@ -61,10 +62,12 @@ std::vector<HexCase> hex_cases() {
        1.0},
       // A box a x b x c: right angles, so the scaled Jacobian is 1; shape = 3 (abc)^(2/3) /
       // (a^2 + b^2 + c^2).
-      {"box 1 x 2 x 4", mapped_cube([](const Vec3& x) { return Vec3(x.x(), 2 * x.y(), 4 * x.z()); }),
-       1.0, 3 * std::cbrt(64.0) / 21},
+      {"box 1 x 2 x 4",
+       mapped_cube([](const Vec3& x) { return Vec3(x.x(), 2 * x.y(), 4 * x.z()); }), 1.0,
+       3 * std::cbrt(64.0) / 21},
       // x += s y: every frame is (e1, e2 + s e1, e3): det 1, lengths 1, sqrt(1 + s^2), 1.
-      {"sheared cube", mapped_cube([&](const Vec3& x) { return Vec3(x.x() + s * x.y(), x.y(), x.z()); }),
+      {"sheared cube",
+       mapped_cube([&](const Vec3& x) { return Vec3(x.x() + s * x.y(), x.y(), x.z()); }),
        1 / std::sqrt(1 + s * s), 3 / (3 + s * s)},
       {"mirrored (inverted) cube",
        mapped_cube([](const Vec3& x) { return Vec3(-x.x(), x.y(), x.z()); }), -1.0, 0.0},
@@ -73,11 +76,13 @@ std::vector<HexCase> hex_cases() {
        pulled_corner_shape(0.3)},
       // Corner 7 pushed to the centre: its mirrored frame is -(rows of (J - I) / 2), with
       // det(J - I) = 2, so the corner value is -(2 / 8) / (3/4)^(3/2) = -4 / (3 sqrt 3).
-      {"corner pushed to the centre", [] {
+      {"corner pushed to the centre",
+       [] {
          Hex p = unit_cube();
          p[7] = Vec3(0.5, 0.5, 0.5);
          return p;
-       }(), -4 / (3 * std::sqrt(3.0)), 0.0},
+       }(),
+       -4 / (3 * std::sqrt(3.0)), 0.0},
   };
 }
 
@@ -118,7 +123,8 @@ TEST(HexQuality, IndependentOfUnits) {
 }
 
 TEST(HexQuality, VolumeOfAShearedBox) {
-  const Hex p = mapped_cube([](const Vec3& x) { return Vec3(2 * x.x() + x.y(), 3 * x.y(), x.z()); });
+  const Hex p =
+      mapped_cube([](const Vec3& x) { return Vec3(2 * x.x() + x.y(), 3 * x.y(), x.z()); });
   EXPECT_NEAR(hex_volume(p), 6.0, 1e-12);
 }
 

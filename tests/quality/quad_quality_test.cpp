@@ -20,7 +20,9 @@ Quad quad(double x0, double y0, double x1, double y1, double x2, double y2, doub
 // The unit square with corner 2 moved to (t, t). At corner 2 the edges are (-t, 1 - t) and
 // (1 - t, -t): cross = 2t - 1, lengths^2 = t^2 + (1 - t)^2 = l2. At corners 1 and 3 one edge
 // becomes (t - 1, t) (length sqrt(l2)) and the cross is t.
-Quad kite(double t) { return quad(0, 0, 1, 0, t, t, 0, 1); }
+Quad kite(double t) {
+  return quad(0, 0, 1, 0, t, t, 0, 1);
+}
 double kite_sj(double t) {
   const double l2 = t * t + (1 - t) * (1 - t);
   return std::min({1.0, (2 * t - 1) / l2, t / std::sqrt(l2)});
@@ -39,12 +41,16 @@ struct QuadCase {
 
 std::vector<QuadCase> quad_cases() {
   const double c = std::cos(0.4), s = std::sin(0.4), k = 3.0;
-  auto rotated = [&](double x, double y) { return Vec3(k * (c * x - s * y) + 5, k * (s * x + c * y) - 2, 0); };
+  auto rotated = [&](double x, double y) {
+    return Vec3(k * (c * x - s * y) + 5, k * (s * x + c * y) - 2, 0);
+  };
   const double sh = 0.5;
   return {
       {"unit square", quad(0, 0, 1, 0, 1, 1, 0, 1), 1.0, 1.0},
       {"scaled, rotated, translated square",
-       {rotated(0, 0), rotated(1, 0), rotated(1, 1), rotated(0, 1)}, 1.0, 1.0},
+       {rotated(0, 0), rotated(1, 0), rotated(1, 1), rotated(0, 1)},
+       1.0,
+       1.0},
       // Rectangle a x b: right angles; shape = 2ab / (a^2 + b^2).
       {"rectangle 1 x 3", quad(0, 0, 1, 0, 1, 3, 0, 3), 1.0, 6.0 / 10.0},
       // Parallelogram x += s y: corners see (1, 0) and (s, 1) (or their negatives): cross 1.

@@ -51,9 +51,9 @@ void add_options(CLI::App& app, Args& a) {
                  "Cell array of material indices checked for purity")
       ->capture_default_str();
   const std::map<std::string, io::Plane> planes = {{"auto", io::Plane::automatic},
-                                                  {"xy", io::Plane::xy},
-                                                  {"yz", io::Plane::yz},
-                                                  {"xz", io::Plane::xz}};
+                                                   {"xy", io::Plane::xy},
+                                                   {"yz", io::Plane::yz},
+                                                   {"xz", io::Plane::xz}};
   app.add_option("--plane", a.plane,
                  "Plane of 2D data sets: auto (the flat axis of a structured grid), xy, yz, xz")
       ->transform(CLI::CheckedTransformer(planes, CLI::ignore_case))
@@ -79,23 +79,25 @@ void print_summary(const std::string& file, const QualityReport& r) {
     std::printf("  mesh check: FAILED: %s\n", r.topology_error.c_str());
   } else {
     const auto& c = r.check;
-    std::printf("  mesh check: %s  (hanging nodes %d, duplicate nodes %d, unreferenced nodes %d, "
-                "inverted cells %d, non-manifold nodes %d)\n",
-                c.ok() ? "ok" : "FAILED", c.hanging_nodes, c.duplicate_nodes,
-                c.unreferenced_nodes, c.inverted_cells, c.nonmanifold_nodes);
+    std::printf(
+        "  mesh check: %s  (hanging nodes %d, duplicate nodes %d, unreferenced nodes %d, "
+        "inverted cells %d, non-manifold nodes %d)\n",
+        c.ok() ? "ok" : "FAILED", c.hanging_nodes, c.duplicate_nodes, c.unreferenced_nodes,
+        c.inverted_cells, c.nonmanifold_nodes);
   }
   const auto& p = r.purity;
   if (p.has_material)
     std::printf("  purity: %d cells with an invalid material index\n", p.invalid_material_cells);
   if (!p.fraction_arrays.empty())
-    std::printf("  fractions: %zu arrays, %d mixed cells\n", p.fraction_arrays.size(), p.mixed_cells);
+    std::printf("  fractions: %zu arrays, %d mixed cells\n", p.fraction_arrays.size(),
+                p.mixed_cells);
 }
 
 void write_quality_field(const CLI::App& app, const io::MeshData& data, const std::string& path) {
   const CellQualities q = cell_qualities(data);
   io::MeshData out = data;
-  for (auto [name, values] : {std::pair{"scaled_jacobian", &q.scaled_jacobian},
-                              std::pair{"shape", &q.shape}}) {
+  for (auto [name, values] :
+       {std::pair{"scaled_jacobian", &q.scaled_jacobian}, std::pair{"shape", &q.shape}}) {
     io::DataArray a;
     a.name = name;
     a.values = *values;
@@ -141,11 +143,12 @@ int measure(const CLI::App& app, const cli::CommonOptions& common, const Args& a
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app("Measure a quad or hex mesh: quality (scaled Jacobian, shape), histogram, mesh "
-               "check (conformity, duplicate / unreferenced nodes, inverted cells, "
-               "manifoldness) and purity. Exit codes: 0 passed, 1 usage, 2 bad input, "
-               "3 threshold not met or mesh check failed, 4 internal error.",
-               "hexadapt-measure");
+  CLI::App app(
+      "Measure a quad or hex mesh: quality (scaled Jacobian, shape), histogram, mesh "
+      "check (conformity, duplicate / unreferenced nodes, inverted cells, "
+      "manifoldness) and purity. Exit codes: 0 passed, 1 usage, 2 bad input, "
+      "3 threshold not met or mesh check failed, 4 internal error.",
+      "hexadapt-measure");
   cli::CommonOptions common;
   Args args;
   add_options(app, args);

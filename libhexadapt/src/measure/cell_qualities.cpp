@@ -27,9 +27,10 @@ CellQualities cell_qualities(const io::MeshData& data) {
   for (std::size_t i = 0; i < data.cells.size(); ++i) {
     const NodeId n = data.cells[i];
     if (!n.valid() || n.value() >= n_points)
-      throw InputError("", "cell " + std::to_string(i / static_cast<std::size_t>(data.nodes_per_cell())),
-                       "refers to node " + std::to_string(n.value()) + " but there are " +
-                           std::to_string(n_points) + " points");
+      throw InputError(
+          "", "cell " + std::to_string(i / static_cast<std::size_t>(data.nodes_per_cell())),
+          "refers to node " + std::to_string(n.value()) + " but there are " +
+              std::to_string(n_points) + " points");
   }
   CellQualities q;
   const auto n = static_cast<std::size_t>(data.n_cells());

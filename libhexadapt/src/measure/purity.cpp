@@ -1,13 +1,14 @@
 // Purity: every cell holds one material. A `material` array must hold integer indices, not
 // negative and, when fraction arrays name the materials, below their number. Fraction
 // arrays (vf_*) tell how many cells are still mixed.
+#include "purity.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/mesh_data.h"
-#include "purity.h"
 
 namespace hexadapt {
 
@@ -17,8 +18,7 @@ bool starts_with(const std::string& s, const std::string& prefix) {
   return s.size() >= prefix.size() && s.compare(0, prefix.size(), prefix) == 0;
 }
 
-void count_mixed(const io::MeshData& data, const QualityReportOptions& options,
-                 PurityReport& r) {
+void count_mixed(const io::MeshData& data, const QualityReportOptions& options, PurityReport& r) {
   std::vector<const io::DataArray*> fractions;
   for (const auto& a : data.cell_data)
     if (a.n_components == 1 && starts_with(a.name, options.fraction_prefix)) {
@@ -39,12 +39,12 @@ void check_material(const io::MeshData& data, const QualityReportOptions& option
   const io::DataArray* m = data.find_cell_array(options.material_array);
   if (!m) return;
   if (m->n_components != 1)
-    throw InputError("", "cell array '" + m->name + "'",
-                     "expected one component (a material index), found " +
-                         std::to_string(m->n_components));
+    throw InputError(
+        "", "cell array '" + m->name + "'",
+        "expected one component (a material index), found " + std::to_string(m->n_components));
   r.has_material = true;
-  const double n_materials =
-      r.fraction_arrays.empty() ? std::numeric_limits<double>::infinity() : double(r.fraction_arrays.size());
+  const double n_materials = r.fraction_arrays.empty() ? std::numeric_limits<double>::infinity()
+                                                       : double(r.fraction_arrays.size());
   for (std::size_t c = 0; c < m->values.size(); ++c) {
     const double v = m->values[c];
     if (v >= 0 && v < n_materials && v == std::floor(v)) continue;

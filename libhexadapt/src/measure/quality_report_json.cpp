@@ -9,9 +9,13 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-Json vec(const Vec3& p) { return Json::array({p.x(), p.y(), p.z()}); }
+Json vec(const Vec3& p) {
+  return Json::array({p.x(), p.y(), p.z()});
+}
 
-Json stats(const QualityStats& s) { return {{"min", s.min}, {"mean", s.mean}, {"max", s.max}}; }
+Json stats(const QualityStats& s) {
+  return {{"min", s.min}, {"mean", s.mean}, {"max", s.max}};
+}
 
 Json node_issues(const std::vector<NodeIssue>& v, bool face, bool other) {
   Json a = Json::array();
@@ -30,7 +34,8 @@ Json node_issues(const std::vector<NodeIssue>& v, bool face, bool other) {
 Json cell_issues(const std::vector<CellIssue>& v) {
   Json a = Json::array();
   for (const auto& i : v)
-    a.push_back({{"cell", i.cell.value()}, {"scaled_jacobian", i.quality}, {"centroid", vec(i.centroid)}});
+    a.push_back(
+        {{"cell", i.cell.value()}, {"scaled_jacobian", i.quality}, {"centroid", vec(i.centroid)}});
   return a;
 }
 
@@ -87,8 +92,10 @@ std::string quality_report_json(const QualityReport& r) {
   q["threshold"] = r.threshold;
   q["scaled_jacobian"] = stats(r.scaled_jacobian);
   q["shape"] = stats(r.shape);
-  q["histogram"] = {{"lo", r.histogram.lo}, {"hi", r.histogram.hi},
-                    {"bins", r.histogram.counts.size()}, {"counts", r.histogram.counts}};
+  q["histogram"] = {{"lo", r.histogram.lo},
+                    {"hi", r.histogram.hi},
+                    {"bins", r.histogram.counts.size()},
+                    {"counts", r.histogram.counts}};
   q["below_threshold"] = {{"count", r.below_threshold}, {"first", cell_issues(r.first_below)}};
   j["quality"] = q;
   j["mesh_check"] = check_json(r);

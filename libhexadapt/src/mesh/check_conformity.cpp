@@ -39,7 +39,8 @@ double distance_to_bilinear(const std::array<Vec3, 4>& q, const Vec3& p) {
   }
   double best = (q[0] + u * e + v * f + u * v * g - p).norm();
   // The clamped iteration may stall on a side: the sides are exact segments.
-  for (std::size_t k = 0; k < 4; ++k) best = std::min(best, distance_to_segment(q[k], q[(k + 1) % 4], p));
+  for (std::size_t k = 0; k < 4; ++k)
+    best = std::min(best, distance_to_segment(q[k], q[(k + 1) % 4], p));
   return best;
 }
 

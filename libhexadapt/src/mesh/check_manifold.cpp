@@ -34,7 +34,8 @@ int star_components(const M& mesh, NodeId n) {
     for (int lf = 0; lf < M::faces_per_cell; ++lf) {
       const CellId o = mesh.neighbour(star[i], lf);
       if (!o.valid() || !holds(mesh.face_nodes(star[i], lf), n)) continue;
-      const auto j = static_cast<std::size_t>(std::lower_bound(star.begin(), star.end(), o) - star.begin());
+      const auto j =
+          static_cast<std::size_t>(std::lower_bound(star.begin(), star.end(), o) - star.begin());
       const std::size_t a = root(i), b = root(j);
       if (a != b) {
         parent[a] = b;

@@ -39,8 +39,9 @@ PointGrid::PointGrid(const std::vector<Vec3>& points, std::vector<NodeId> ids, d
     Key k;
     if (key_of(points[n.idx()], k)) entries.emplace_back(k, n);
   }
-  std::sort(entries.begin(), entries.end(),
-            [](const auto& a, const auto& b) { return a.first != b.first ? a.first < b.first : a.second < b.second; });
+  std::sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) {
+    return a.first != b.first ? a.first < b.first : a.second < b.second;
+  });
   keys_.reserve(entries.size());
   ids_.reserve(entries.size());
   for (const auto& [k, n] : entries) {
@@ -70,8 +71,8 @@ bool PointGrid::rows_of(const Vec3& lo, const Vec3& hi, Key& a, Key& b) const {
   return rows < double(ids_.size()) + 1;
 }
 
-std::pair<std::size_t, std::size_t> PointGrid::row(std::int64_t k, std::int64_t j,
-                                                   std::int64_t i0, std::int64_t i1) const {
+std::pair<std::size_t, std::size_t> PointGrid::row(std::int64_t k, std::int64_t j, std::int64_t i0,
+                                                   std::int64_t i1) const {
   const auto it = rows_.find({k, j});
   if (it == rows_.end()) return {0, 0};
   const auto begin = keys_.begin() + static_cast<std::ptrdiff_t>(it->second.first);

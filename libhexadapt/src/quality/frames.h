@@ -2,12 +2,11 @@
 // are built from, shared by scaled_jacobian.cpp and shape.cpp.
 #pragma once
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <utility>
-
-#include <Eigen/Core>
 
 #include "hexadapt/mesh/geometry.h"
 

@@ -33,8 +33,8 @@ double quad_shape(const std::array<Vec3, 4>& p) {
     a /= scale;
     b /= scale;
     if (!(a.norm() > tiny && b.norm() > tiny)) return 0.0;
-    worst = std::min(worst, 2.0 * (a.x() * b.y() - a.y() * b.x()) /
-                                (a.squaredNorm() + b.squaredNorm()));
+    worst = std::min(worst,
+                     2.0 * (a.x() * b.y() - a.y() * b.x()) / (a.squaredNorm() + b.squaredNorm()));
   }
   return std::clamp(worst, 0.0, 1.0);
 }

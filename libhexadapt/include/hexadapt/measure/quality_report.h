@@ -27,10 +27,10 @@ struct MeshData;
 }
 
 struct QualityReportOptions {
-  double threshold = 0.3;   ///< S_q: cells with scaled Jacobian below it fail
-  int bins = 20;            ///< histogram bins over [-1, 1]
-  int max_listed = 10;      ///< how many cells below the threshold (or impure) are listed
-  MeshCheckOptions check;   ///< options of the mesh check
+  double threshold = 0.3;  ///< S_q: cells with scaled Jacobian below it fail
+  int bins = 20;           ///< histogram bins over [-1, 1]
+  int max_listed = 10;     ///< how many cells below the threshold (or impure) are listed
+  MeshCheckOptions check;  ///< options of the mesh check
   std::string material_array = "material";  ///< cell array of material indices
   std::string fraction_prefix = "vf_";      ///< cell arrays of volume fractions
   double pure_tolerance = 1e-6;  ///< a cell is mixed when its largest fraction is below 1 - this
@@ -47,8 +47,8 @@ struct QualityStats {
 };
 
 struct QualityHistogram {
-  double lo = -1, hi = 1;        ///< bin b covers [lo + b w, lo + (b + 1) w), the last one closed
-  std::vector<index_t> counts;   ///< cells per bin
+  double lo = -1, hi = 1;       ///< bin b covers [lo + b w, lo + (b + 1) w), the last one closed
+  std::vector<index_t> counts;  ///< cells per bin
 };
 
 struct PurityReport {
@@ -56,7 +56,7 @@ struct PurityReport {
   index_t invalid_material_cells = 0;  ///< not an integer, negative, or >= number of fractions
   std::vector<CellId> first_invalid;
   std::vector<std::string> fraction_arrays;  ///< the vf_* arrays found, in file order
-  index_t mixed_cells = 0;             ///< cells whose largest fraction is below 1 - tolerance
+  index_t mixed_cells = 0;  ///< cells whose largest fraction is below 1 - tolerance
   std::vector<CellId> first_mixed;
   bool ok() const { return invalid_material_cells == 0; }
 };
@@ -67,7 +67,7 @@ struct QualityReport {
   double threshold = 0;
   QualityStats scaled_jacobian, shape;
   QualityHistogram histogram;
-  index_t below_threshold = 0;        ///< cells with scaled Jacobian < threshold
+  index_t below_threshold = 0;         ///< cells with scaled Jacobian < threshold
   std::vector<CellIssue> first_below;  ///< the lowest ids among them
   /// Empty when the kernels could build the mesh; otherwise why not (e.g. a face shared by
   /// three cells), and `check` was not run.

@@ -41,9 +41,9 @@ struct MeshCheckOptions {
 struct NodeIssue {
   NodeId node;
   Vec3 position = Vec3::Zero();
-  CellId cell;       ///< hanging: the cell whose boundary face holds the node
+  CellId cell;  ///< hanging: the cell whose boundary face holds the node
   int local_face = -1;
-  NodeId other;      ///< duplicates: the lower-id node at the same place
+  NodeId other;  ///< duplicates: the lower-id node at the same place
 };
 
 struct CellIssue {
@@ -53,14 +53,14 @@ struct CellIssue {
 };
 
 struct MeshCheckResult {
-  index_t hanging_nodes = 0;         ///< distinct nodes lying on another cell's boundary face
-  index_t nonconformal_faces = 0;    ///< boundary faces holding at least one hanging node
+  index_t hanging_nodes = 0;       ///< distinct nodes lying on another cell's boundary face
+  index_t nonconformal_faces = 0;  ///< boundary faces holding at least one hanging node
   index_t unreferenced_nodes = 0;
-  index_t duplicate_nodes = 0;       ///< nodes with a lower-id node within the tolerance
-  index_t inverted_cells = 0;        ///< scaled Jacobian <= 0
+  index_t duplicate_nodes = 0;  ///< nodes with a lower-id node within the tolerance
+  index_t inverted_cells = 0;   ///< scaled Jacobian <= 0
   index_t nonmanifold_nodes = 0;
-  index_t boundary_faces = 0;        ///< faces (2D: edges) with a cell on one side only
-  double duplicate_distance = 0;     ///< the absolute tolerance used for duplicates
+  index_t boundary_faces = 0;     ///< faces (2D: edges) with a cell on one side only
+  double duplicate_distance = 0;  ///< the absolute tolerance used for duplicates
   std::vector<NodeIssue> first_hanging, first_unreferenced, first_duplicates, first_nonmanifold;
   std::vector<CellIssue> first_inverted;
 
