@@ -11,9 +11,22 @@ namespace hexadapt {
 
 namespace {
 
-std::array<NodeId, 4> sorted(std::array<NodeId, 4> f) {
-  std::sort(f.begin(), f.end());
-  return f;
+// Bit mask of the local nodes of each local face.
+constexpr std::array<unsigned, 6> face_masks = [] {
+  std::array<unsigned, 6> m{};
+  for (std::size_t lf = 0; lf < 6; ++lf)
+    for (int v : ref_hex::face_nodes[lf]) m[lf] |= 1u << v;
+  return m;
+}();
+
+// The local face of `cell` made of the nodes `face` (in any order), or -1.
+int local_face_of(const HexMesh::CellNodes& cell, const HexMesh::FaceNodes& face) {
+  unsigned mask = 0;
+  for (std::size_t k = 0; k < 8; ++k)
+    for (NodeId n : face) mask |= static_cast<unsigned>(cell[k] == n) << k;
+  for (int lf = 0; lf < 6; ++lf)
+    if (face_masks[static_cast<std::size_t>(lf)] == mask) return lf;
+  return -1;
 }
 
 void check_cells(const std::vector<HexMesh::CellNodes>& cells, index_t n_nodes) {
@@ -37,29 +50,26 @@ HexMesh::HexMesh(std::vector<Vec3> points, std::vector<CellNodes> cells)
   checked_index(cells_.size() * 6, "hex half-faces");
   check_cells(cells_, n_nodes());
   opposite_.assign(cells_.size() * 6, HalfFaceId::invalid());
-  std::vector<std::string> errors(cells_.size());
-  // Each half-face looks for the other cell holding the same 4 nodes around its smallest
-  // node; every half-face writes only its own slot, so the loop is order-independent.
+  std::vector<std::int8_t> shared_face(cells_.size(), -1);  // a face with 3+ cells
+  // Each half-face looks for the other cell holding its 4 nodes among the cells around one
+  // of them; every half-face writes only its own slot, so the loop is order-independent.
   parallel_for(n_cells(), [&](std::int64_t i) {
     const CellId c(i);
     for (int lf = 0; lf < 6; ++lf) {
-      const auto key = sorted(face_nodes(c, lf));
+      const FaceNodes f = face_nodes(c, lf);
       int found = 0;
-      for (CellId c2 : node_cells(key[0])) {
+      for (CellId c2 : node_cells(f[0])) {
         if (c2 == c) continue;
-        for (int lf2 = 0; lf2 < 6; ++lf2) {
-          if (sorted(face_nodes(c2, lf2)) != key) continue;
-          if (++found == 1) opposite_[half_face(c, lf).idx()] = half_face(c2, lf2);
-        }
+        const int lf2 = local_face_of(cells_[c2.idx()], f);
+        if (lf2 >= 0 && ++found == 1) opposite_[half_face(c, lf).idx()] = half_face(c2, lf2);
       }
-      if (found > 1 && errors[c.idx()].empty())
-        errors[c.idx()] = "face " + std::to_string(lf) + " of cell " + std::to_string(i) +
-                          " is shared by " + std::to_string(found + 1) +
-                          " cells (non-manifold)";
+      if (found > 1) shared_face[c.idx()] = static_cast<std::int8_t>(lf);
     }
   });
-  for (const auto& e : errors)
-    if (!e.empty()) throw MeshError(e);
+  for (std::size_t c = 0; c < shared_face.size(); ++c)
+    if (shared_face[c] >= 0)
+      throw MeshError("face " + std::to_string(shared_face[c]) + " of cell " + std::to_string(c) +
+                      " is shared by more than two cells (non-manifold)");
 }
 
 HexMesh::FaceNodes HexMesh::face_nodes(CellId c, int lf) const {
