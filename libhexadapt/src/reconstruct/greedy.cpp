@@ -23,6 +23,14 @@ class Greedy {
       free_index_[static_cast<std::size_t>(slot_of_block_[i])] = static_cast<index_t>(i);
     vf_.assign(slot_of_block_.size() * static_cast<std::size_t>(px.pixels_per_block() * nm_), 0.0);
     next_ = vf_;
+    // Neighbours of the free pixels, looked up once for all the diffusion sweeps.
+    const int nf = px.faces_per_pixel();
+    const std::int64_t n_free = static_cast<std::int64_t>(slot_of_block_.size()) * px.pixels_per_block();
+    nbr_.resize(static_cast<std::size_t>(n_free * nf));
+    parallel_for(n_free, [&](std::int64_t i) {
+      const std::int64_t p = pixel_of_slot(i);
+      for (int lf = 0; lf < nf; ++lf) nbr_[static_cast<std::size_t>(i * nf + lf)] = px.neighbour(p, lf);
+    });
     owed_.assign(slot_of_block_.size() * static_cast<std::size_t>(nm_), 0.0);
     for (std::size_t i = 0; i < slot_of_block_.size(); ++i) {
       const index_t b = slot_of_block_[i];
@@ -145,8 +153,9 @@ class Greedy {
     const CellId c = px_.block_cell(px_.pixel_block(p));
     std::copy(self, self + nm_, out);
     int n = 1;
-    for (int lf = 0; lf < px_.faces_per_pixel(); ++lf) {
-      const std::int64_t q = px_.neighbour(p, lf);
+    const int nf = px_.faces_per_pixel();
+    for (int lf = 0; lf < nf; ++lf) {
+      const std::int64_t q = nbr_[static_cast<std::size_t>(i * nf + lf)];
       if (q < 0) continue;
       ++n;
       if (px_.label(q) >= 0) {
@@ -172,11 +181,14 @@ class Greedy {
   std::vector<index_t> slot_of_block_;
   std::vector<index_t> free_index_;
   std::vector<double> vf_, next_, owed_;
+  std::vector<std::int64_t> nbr_;
 };
 
 }  // namespace
 
-double greedy_bytes_per_free_pixel(int n_materials) { return 16.0 * n_materials; }
+double greedy_bytes_per_free_pixel(int n_materials, int dim) {
+  return 16.0 * n_materials + 16.0 * dim;
+}
 
 GreedyResult greedy_assign(PixelMesh& pixels, const Fractions& fractions,
                            const GreedyOptions& options) {

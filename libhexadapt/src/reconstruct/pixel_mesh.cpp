@@ -105,20 +105,24 @@ void check_inputs(const M& mesh, const Fractions& f, const std::vector<int>& ass
                            " is not in [0, " + std::to_string(f.n_materials()) + ")");
 }
 
-/// 1 for cells to pixelate: mixed cells and cells sharing a node with one.
+/// Per cell: 0 plain, 1 fixed block (pure, shares a node with a mixed cell), 2 free block.
 template <class M>
 std::vector<std::uint8_t> pixelated_cells(const M& mesh, const Fractions& f) {
-  std::vector<std::uint8_t> mixed(static_cast<std::size_t>(mesh.n_cells()));
+  std::vector<std::uint8_t> kind(static_cast<std::size_t>(mesh.n_cells()), 0);
+  std::vector<std::uint8_t> near_mixed(static_cast<std::size_t>(mesh.n_nodes()), 0);
   parallel_for(mesh.n_cells(), [&](std::int64_t c) {
-    mixed[static_cast<std::size_t>(c)] = f.is_pure(CellId(c)) ? 0 : 1;
+    if (!f.is_pure(CellId(c))) kind[static_cast<std::size_t>(c)] = 2;
   });
-  std::vector<std::uint8_t> pix(mixed.size(), 0);
+  for (CellId c : id_range<CellId>(mesh.n_cells()))
+    if (kind[c.idx()] == 2)
+      for (NodeId n : mesh.cell_nodes(c)) near_mixed[n.idx()] = 1;
   parallel_for(mesh.n_cells(), [&](std::int64_t c) {
+    auto& k = kind[static_cast<std::size_t>(c)];
+    if (k == 2) return;
     for (NodeId n : mesh.cell_nodes(CellId(c)))
-      for (CellId o : mesh.node_cells(n))
-        if (mixed[o.idx()]) pix[static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(1 + mixed[static_cast<std::size_t>(c)]);
+      if (near_mixed[n.idx()]) k = 1;
   });
-  return pix;  // 0: plain, 1: fixed block, 2: free block
+  return kind;
 }
 
 std::string megabytes(double bytes) {
@@ -130,16 +134,15 @@ std::string megabytes(double bytes) {
 
 }  // namespace
 
+namespace {
+
 template <class M>
-PixelPlan plan_pixels(const M& mesh, const Fractions& fractions,
-                      const std::vector<int>& assignment, const PixelOptions& options) {
-  check_inputs(mesh, fractions, assignment);
+PixelPlan plan_of(const M& mesh, const std::vector<std::uint8_t>& pix, const PixelOptions& options) {
   PixelPlan plan;
   plan.dim = M::dim;
   plan.nsub = options.nsub == 0 ? default_nsub(M::dim) : options.nsub;
   if (plan.nsub < 1 || plan.nsub > 64)
     throw OptionError("nsub must be in [1, 64], got " + std::to_string(plan.nsub));
-  const auto pix = pixelated_cells(mesh, fractions);
   for (auto v : pix) {
     plan.n_blocks += v ? 1 : 0;
     plan.n_free_blocks += v == 2 ? 1 : 0;
@@ -154,6 +157,40 @@ PixelPlan plan_pixels(const M& mesh, const Fractions& fractions,
                per_pixel * static_cast<double>(plan.n_pixels) +
                options.method_bytes_per_free_pixel * static_cast<double>(plan.n_free_pixels);
   return plan;
+}
+
+// Parallelepiped cells (every Cartesian and rectilinear cell) split into equal pixels.
+template <std::size_t N>
+bool is_affine(const std::array<Vec3, N>& x, const detail::RefCell& rc) {
+  const Vec3 o = x[0];
+  Vec3 e[3] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+  for (std::size_t v = 0; v < N; ++v) {
+    int bits = 0, axis = -1;
+    for (int a = 0; a < rc.dim; ++a)
+      if (rc.corner[v][static_cast<std::size_t>(a)]) {
+        ++bits;
+        axis = a;
+      }
+    if (bits == 1) e[axis] = x[v] - o;
+  }
+  double scale = 0;
+  for (const Vec3& d : e) scale = std::max(scale, d.norm());
+  for (std::size_t v = 0; v < N; ++v) {
+    Vec3 want = o;
+    for (int a = 0; a < rc.dim; ++a)
+      if (rc.corner[v][static_cast<std::size_t>(a)]) want += e[a];
+    if ((x[v] - want).norm() > 1e-12 * scale) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+template <class M>
+PixelPlan plan_pixels(const M& mesh, const Fractions& fractions,
+                      const std::vector<int>& assignment, const PixelOptions& options) {
+  check_inputs(mesh, fractions, assignment);
+  return plan_of(mesh, pixelated_cells(mesh, fractions), options);
 }
 
 template <class M>
@@ -200,7 +237,9 @@ template <class M>
 PixelMesh build_pixel_mesh(const M& mesh, const Fractions& fractions,
                            const std::vector<int>& assignment, const PixelOptions& options,
                            PixelPlan* plan_out) {
-  const PixelPlan plan = plan_pixels(mesh, fractions, assignment, options);
+  check_inputs(mesh, fractions, assignment);
+  const auto pix = pixelated_cells(mesh, fractions);
+  const PixelPlan plan = plan_of(mesh, pix, options);
   if (plan_out) *plan_out = plan;
   log_info("pixels: " + std::to_string(plan.n_pixels) + " in " + std::to_string(plan.n_blocks) +
            " cells (" + std::to_string(plan.n_free_pixels) + " free), nsub " +
@@ -210,7 +249,6 @@ PixelMesh build_pixel_mesh(const M& mesh, const Fractions& fractions,
                       std::to_string(plan.n_pixels) + " pixels, nsub " +
                       std::to_string(plan.nsub) + "), more than the allowed " +
                       megabytes(options.max_memory) + ": lower --nsub or raise --max-memory");
-  const auto pix = pixelated_cells(mesh, fractions);
   std::vector<CellId> cells;
   std::vector<std::uint8_t> free;
   for (CellId c : id_range<CellId>(mesh.n_cells()))
@@ -239,8 +277,16 @@ PixelMesh build_pixel_mesh(const M& mesh, const Fractions& fractions,
   });
   parallel_for(pm.n_blocks(), [&](std::int64_t bi) {
     const auto b = static_cast<index_t>(bi);
-    const int fixed = pm.block_free(b) ? PixelMesh::unassigned : assignment[pm.block_cell(b).idx()];
+    const CellId c = pm.block_cell(b);
+    const int fixed = pm.block_free(b) ? PixelMesh::unassigned : assignment[c.idx()];
+    const bool affine = is_affine(mesh.cell_points(c), rc);
+    const double equal = mesh.cell_volume(c) / pm.pixels_per_block();
     for (std::int64_t p = pm.first_pixel(b); p < pm.first_pixel(b + 1); ++p) {
+      pm.set_label(p, fixed);
+      if (affine) {
+        volumes[static_cast<std::size_t>(p)] = equal;
+        continue;
+      }
       const auto L = pm.lattice(p);
       std::array<Vec3, 8> x;
       for (std::size_t v = 0; v < npc; ++v)
@@ -248,7 +294,6 @@ PixelMesh build_pixel_mesh(const M& mesh, const Fractions& fractions,
                                      double(L[2] + rc.corner[v][2])}});
       volumes[static_cast<std::size_t>(p)] =
           M::dim == 3 ? hex_volume(x) : quad_area({x[0], x[1], x[2], x[3]});
-      pm.set_label(p, fixed);
     }
   });
   double width = 0;

@@ -25,7 +25,7 @@ namespace {
 
 double method_bytes(Method m, int n_materials, int dim) {
   switch (m) {
-    case Method::greedy: return greedy_bytes_per_free_pixel(n_materials);
+    case Method::greedy: return greedy_bytes_per_free_pixel(n_materials, dim);
     case Method::annealing: return 0;
     case Method::graph_cut: return graph_cut_bytes_per_free_pixel(n_materials, dim);
     case Method::mip: return mip_bytes_per_free_pixel(n_materials, dim);

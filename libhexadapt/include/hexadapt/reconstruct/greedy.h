@@ -29,11 +29,12 @@ struct GreedyResult {
   std::int64_t fallback_pixels = 0;  ///< pixels placed by the final "owed most" pass
 };
 
-/// Assigns every free pixel. Working memory: two fraction vectors per free pixel.
+/// Assigns every free pixel. Working memory: two fraction vectors and the neighbour ids of
+/// every free pixel.
 GreedyResult greedy_assign(PixelMesh& pixels, const Fractions& fractions,
                            const GreedyOptions& options = {});
 
 /// Bytes greedy_assign needs per free pixel with n_materials materials.
-double greedy_bytes_per_free_pixel(int n_materials);
+double greedy_bytes_per_free_pixel(int n_materials, int dim);
 
 }  // namespace hexadapt::reconstruct
