@@ -114,6 +114,7 @@ int main(int argc, char** argv) {
   std::printf("setup (grid + fractions) %.2f s, peak %.0f MB\n", setup, static_cast<double>(setup_kb) / 1e3);
   std::printf("reconstruct %.2f s:", run);
   for (const auto& [phase, s] : r.times) std::printf(" %s %.2f s", phase.c_str(), s);
+  std::printf("\ngreedy rounds %d, fallback pixels %lld", r.greedy.rounds, static_cast<long long>(r.greedy.fallback_pixels));
   std::printf("\nestimate %.0f MB, peak RSS %.0f MB\n", r.plan.bytes / 1e6, static_cast<double>(peak_kb()) / 1e3);
   std::printf("edgecut %lld, discrepancy %.6g (relative %.3g), model %zu facets %zu curves %zu corners\n",
               static_cast<long long>(r.edgecut), r.discrepancy + r.unpixelated_discrepancy,

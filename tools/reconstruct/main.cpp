@@ -2,6 +2,7 @@
 // sec. 4). Reads the grid with its vf_ arrays and `material` array, writes the pixel mesh
 // (-o), the geometric model (--model) and a report (--json).
 #include <cmath>
+#include <iostream>
 #include <string>
 #include <variant>
 
@@ -108,7 +109,7 @@ cli::Json method_json(const reconstruct::ReconstructResult& r, Method m) {
 }
 
 template <class M>
-int run(const M& mesh, io::MeshData& data, const Fractions& f, const std::vector<int>& assignment,
+int run(const M& mesh, const Fractions& f, const std::vector<int>& assignment,
         Options& o, const cli::CommonOptions& common, const CLI::App& app) {
   auto& lib = o.lib;
   lib.method = reconstruct::parse_method(o.method);
@@ -116,6 +117,16 @@ int run(const M& mesh, io::MeshData& data, const Fractions& f, const std::vector
   lib.pixels.output_bytes_per_pixel = reconstruct::pixel_output_bytes_per_pixel(M::dim);
   lib.extract_model = !o.model.empty();
   lib.progress = cli::terminal_progress(common);
+  if (!common.quiet) {
+    // The estimate is shown before anything big is allocated (the build refuses beyond
+    // --max-memory).
+    auto po = lib.pixels;
+    const auto plan = reconstruct::plan_pixels(mesh, f, assignment, po);
+    std::cerr << app.get_name() << ": " << plan.n_pixels << " pixels (" << plan.n_free_pixels
+              << " free) in " << plan.n_blocks << " cells, nsub " << plan.nsub
+              << "; pixel memory estimate " << plan.bytes / 1e6 << " MB plus the "
+              << o.method << " working arrays\n";
+  }
   const auto rec = reconstruct::reconstruct(mesh, f, assignment, lib);
   const auto& r = rec.result;
   Timer t;
@@ -169,7 +180,6 @@ int run(const M& mesh, io::MeshData& data, const Fractions& f, const std::vector
   j["files"] = files;
   j["times"] = cli::phase_times_json(times);
   cli::write_report(common, j);
-  (void)data;
   return cli::ok;
 }
 
@@ -224,7 +234,7 @@ int main(int argc, char** argv) {
     const Fractions f = extract_fractions(data, fo, nullptr, o.input);
     const std::vector<int> assignment = read_assignment(data, f, o);
     const AnyMesh mesh = io::to_mesh(data);
-    return std::visit([&](const auto& m) { return run(m, data, f, assignment, o, common, app); },
+    return std::visit([&](const auto& m) { return run(m, f, assignment, o, common, app); },
                       mesh);
   });
 }

@@ -27,9 +27,23 @@ class Greedy {
     const int nf = px.faces_per_pixel();
     const std::int64_t n_free = static_cast<std::int64_t>(slot_of_block_.size()) * px.pixels_per_block();
     nbr_.resize(static_cast<std::size_t>(n_free * nf));
+    // Codes: >= 0 the free index of a free neighbour, -1 none, <= -2 a fixed pixel of
+    // material -code - 2.
+    slot_label_.assign(static_cast<std::size_t>(n_free), PixelMesh::unassigned);
     parallel_for(n_free, [&](std::int64_t i) {
       const std::int64_t p = pixel_of_slot(i);
-      for (int lf = 0; lf < nf; ++lf) nbr_[static_cast<std::size_t>(i * nf + lf)] = px.neighbour(p, lf);
+      for (int lf = 0; lf < nf; ++lf) {
+        const std::int64_t q = px.neighbour(p, lf);
+        std::int64_t code = -1;
+        if (q >= 0) {
+          const index_t qb = px.pixel_block(q);
+          code = px.block_free(qb)
+                     ? static_cast<std::int64_t>(free_index_[static_cast<std::size_t>(qb)]) *
+                               px.pixels_per_block() + (q - px.first_pixel(qb))
+                     : -2 - px.label(q);
+        }
+        nbr_[static_cast<std::size_t>(i * nf + lf)] = code;
+      }
     });
     owed_.assign(slot_of_block_.size() * static_cast<std::size_t>(nm_), 0.0);
     for (std::size_t i = 0; i < slot_of_block_.size(); ++i) {
@@ -49,7 +63,7 @@ class Greedy {
   void diffuse(int sweeps) {
     const std::int64_t n = static_cast<std::int64_t>(slot_of_block_.size()) * px_.pixels_per_block();
     for (int s = 0; s < sweeps; ++s) {
-      parallel_for(n, [&](std::int64_t i) { smooth_one(pixel_of_slot(i), i); });
+      parallel_for(n, [&](std::int64_t i) { smooth_one(i); });
       std::swap(vf_, next_);
     }
   }
@@ -126,6 +140,8 @@ class Greedy {
   }
   void assign(index_t slot, std::int64_t p, int m) {
     px_.set_label(p, m);
+    slot_label_[static_cast<std::size_t>(static_cast<std::int64_t>(slot) * px_.pixels_per_block() +
+                                         (p - px_.first_pixel(px_.pixel_block(p))))] = m;
     owed(slot, m) -= px_.volume(p);
     double* v = vf(p);
     for (int k = 0; k < nm_; ++k) v[k] = k == m ? 1.0 : 0.0;
@@ -143,25 +159,24 @@ class Greedy {
     for (int m = 0; m < nm_; ++m) owing += owed(slot, m) > 0 ? 1 : 0;
     for (int m = 0; m < nm_; ++m) v[m] = owing && owed(slot, m) > 0 ? 1.0 / owing : 0.0;
   }
-  void smooth_one(std::int64_t p, std::int64_t i) {
+  void smooth_one(std::int64_t i) {
     double* out = next_.data() + i * nm_;
-    const double* self = vf(p);
-    if (px_.label(p) >= 0) {
-      std::copy(self, self + nm_, out);
-      return;
-    }
-    const CellId c = px_.block_cell(px_.pixel_block(p));
+    const double* self = vf_.data() + i * nm_;
     std::copy(self, self + nm_, out);
+    if (slot_label_[static_cast<std::size_t>(i)] >= 0) return;
+    const index_t slot = static_cast<index_t>(i / px_.pixels_per_block());
+    const CellId c = px_.block_cell(slot_of_block_[static_cast<std::size_t>(slot)]);
     int n = 1;
     const int nf = px_.faces_per_pixel();
     for (int lf = 0; lf < nf; ++lf) {
-      const std::int64_t q = nbr_[static_cast<std::size_t>(i * nf + lf)];
-      if (q < 0) continue;
+      const std::int64_t code = nbr_[static_cast<std::size_t>(i * nf + lf)];
+      if (code == -1) continue;
       ++n;
-      if (px_.label(q) >= 0) {
-        out[px_.label(q)] += 1.0;
+      const int fixed = code <= -2 ? static_cast<int>(-2 - code) : slot_label_[static_cast<std::size_t>(code)];
+      if (fixed >= 0) {
+        out[fixed] += 1.0;
       } else {
-        const double* w = vf(q);
+        const double* w = vf_.data() + code * nm_;
         for (int m = 0; m < nm_; ++m) out[m] += w[m];
       }
     }
@@ -182,6 +197,7 @@ class Greedy {
   std::vector<index_t> free_index_;
   std::vector<double> vf_, next_, owed_;
   std::vector<std::int64_t> nbr_;
+  std::vector<int> slot_label_;
 };
 
 }  // namespace

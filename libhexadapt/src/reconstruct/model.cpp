@@ -5,6 +5,7 @@
 #include <map>
 #include <unordered_map>
 
+#include "hexadapt/core/parallel.h"
 #include "hexadapt/mesh/cell_complex.h"
 #include "ref_cell.h"
 
@@ -37,22 +38,43 @@ class Extractor {
     model_.dim = M::dim;
   }
 
+  // Facets are found in parallel over fixed chunks of cells, then numbered in chunk order,
+  // so the model does not depend on the thread count.
   InterfaceModel run() {
-    for (CellId c : id_range<CellId>(mesh_.n_cells())) {
-      if (px_.cell_block(c) >= 0) inner_faces(c);
-      for (int lf = 0; lf < M::faces_per_cell; ++lf) coarse_face(c, lf);
+    constexpr index_t chunk = 2048;
+    const index_t n_chunks = (mesh_.n_cells() + chunk - 1) / chunk;
+    std::vector<std::vector<Facet>> found(static_cast<std::size_t>(n_chunks));
+    parallel_for(n_chunks, [&](std::int64_t k) {
+      auto& out = found[static_cast<std::size_t>(k)];
+      const auto first = static_cast<index_t>(k * chunk);
+      const index_t last = std::min(mesh_.n_cells(), first + chunk);
+      for (index_t c = first; c < last; ++c) {
+        if (px_.cell_block(CellId(c)) >= 0) inner_faces(CellId(c), out);
+        for (int lf = 0; lf < M::faces_per_cell; ++lf) coarse_face(CellId(c), lf, out);
+      }
+    });
+    for (auto& facets : found) {
+      for (const Facet& f : facets) emit(f);
+      std::vector<Facet>().swap(facets);
     }
     features();
     return std::move(model_);
   }
 
  private:
+  // Face lf of pixel L of cell c, between materials la (inside) and lb.
+  struct Facet {
+    CellId c;
+    std::array<int, 3> L;
+    int lf, la, lb;
+  };
+
   int label(CellId c, const std::array<int, 3>& L) const {
     const index_t b = px_.cell_block(c);
     return b >= 0 ? px_.label(px_.pixel_at(b, L)) : assign_[c.idx()];
   }
 
-  void inner_faces(CellId c) {
+  void inner_faces(CellId c, std::vector<Facet>& out) const {
     for_lattice([&](const std::array<int, 3>& L) {
       for (int lf = 0; lf < rc_.n_faces; ++lf) {
         const auto a = static_cast<std::size_t>(rc_.face_axis[static_cast<std::size_t>(lf)]);
@@ -60,12 +82,12 @@ class Extractor {
         auto R = L;
         ++R[a];
         const int la = label(c, L), lb = label(c, R);
-        if (la != lb) emit(c, L, lf, la, lb);
+        if (la != lb) out.push_back({c, L, lf, la, lb});
       }
     });
   }
 
-  void coarse_face(CellId c, int lf) {
+  void coarse_face(CellId c, int lf, std::vector<Facet>& out) const {
     const CellId o = mesh_.neighbour(c, lf);
     if (!o.valid() || o < c) return;
     if (px_.cell_block(c) < 0 && px_.cell_block(o) < 0 && assign_[c.idx()] == assign_[o.idx()])
@@ -81,7 +103,7 @@ class Extractor {
         R[t] = fl.flip[t] ? n_ - 1 - v : v;
       }
       const int la = label(c, L), lb = label(o, R);
-      if (la != lb) emit(c, L, lf, la, lb);
+      if (la != lb) out.push_back({c, L, lf, la, lb});
     });
   }
 
@@ -93,7 +115,11 @@ class Extractor {
         for (int i = 0; i < n_; ++i) f(std::array<int, 3>{{i, j, k}});
   }
 
-  void emit(CellId c, const std::array<int, 3>& L, int lf, int la, int lb) {
+  void emit(const Facet& facet) {
+    const CellId c = facet.c;
+    const auto& L = facet.L;
+    const int lf = facet.lf;
+    int la = facet.la, lb = facet.lb;
     std::array<index_t, 4> f{{-1, -1, -1, -1}};
     const int npf = rc_.nodes_per_face;
     for (int i = 0; i < npf; ++i) {
