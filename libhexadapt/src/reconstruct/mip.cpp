@@ -220,6 +220,10 @@ MipResult mip_assign(PixelMesh& pixels, const Fractions& fractions, const MipOpt
   glp_smcp lp;
   glp_init_smcp(&lp);
   lp.tm_lim = milliseconds(options.time_limit);
+  // The relaxation is highly degenerate: the presolver plus the dual simplex solve it in a
+  // fraction of the primal simplex's time.
+  lp.presolve = GLP_ON;
+  lp.meth = GLP_DUALP;
   const int lp_ret = glp_simplex(model.prob(), &lp);
   r.status = MipStatus::timed_out_no_solution;
   if (lp_ret == 0 && glp_get_status(model.prob()) == GLP_OPT) {

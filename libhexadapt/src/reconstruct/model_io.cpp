@@ -70,13 +70,15 @@ void write_model_vtk(const InterfaceModel& model, const std::vector<std::string>
   // Cell order in POLYDATA: vertices, lines, polygons.
   const std::size_t n_cells = nv + nc + nf;
   s << "CELL_DATA " << n_cells << '\n';
+  // A FIELD block: every reader (VTK's without ReadAllScalars too) loads all its arrays.
   auto write_array = [&](const char* name, int feature_value, int which) {
-    s << "SCALARS " << name << " int 1\nLOOKUP_TABLE default\n";
+    s << name << " 1 " << n_cells << " int\n";
     for (std::size_t i = 0; i < nv; ++i) s << (which == 2 ? 2 : feature_value) << '\n';
     for (std::size_t i = 0; i < nc; ++i) s << (which == 2 ? 1 : feature_value) << '\n';
     for (const auto& m : model.facet_materials) s << (which == 2 ? 0 : m[static_cast<std::size_t>(which)]) << '\n';
   };
   if (n_cells) {
+    s << "FIELD FieldData 3\n";
     write_array("material_lo", -1, 0);
     write_array("material_hi", -1, 1);
     write_array("kind", 0, 2);
