@@ -1,0 +1,64 @@
+// Interface reconstruction, the whole stage (paper sec. 4, DESIGN sec. 4.2): plan and build
+// the sub-pixel mesh, assign its free pixels with one of the four methods, measure edgecut
+// and discrepancy, and extract the geometric model. The tool hexadapt-reconstruct is a thin
+// layer over reconstruct().
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "hexadapt/core/log.h"
+#include "hexadapt/core/timer.h"
+#include "hexadapt/mesh/fractions.h"
+#include "hexadapt/reconstruct/annealing.h"
+#include "hexadapt/reconstruct/graph_cut.h"
+#include "hexadapt/reconstruct/greedy.h"
+#include "hexadapt/reconstruct/metrics.h"
+#include "hexadapt/reconstruct/mip.h"
+#include "hexadapt/reconstruct/model.h"
+#include "hexadapt/reconstruct/pixel_mesh.h"
+
+namespace hexadapt::reconstruct {
+
+enum class Method { greedy, annealing, graph_cut, mip };
+std::string to_string(Method m);
+/// "greedy", "annealing", "graphcut", "mip"; throws OptionError otherwise.
+Method parse_method(const std::string& name);
+
+struct ReconstructOptions {
+  Method method = Method::greedy;  ///< the assignment method (greedy is the paper's choice)
+  PixelOptions pixels;             ///< nsub and the memory limit
+  GreedyOptions greedy;
+  AnnealingOptions annealing;
+  GraphCutOptions graph_cut;
+  MipOptions mip;
+  bool extract_model = true;       ///< also build the geometric model
+  Progress progress;               ///< phase progress, nullptr for none
+};
+
+struct ReconstructResult {
+  PixelPlan plan;
+  std::string status = "done";   ///< the method's own status (MIP: optimal / feasible / ...)
+  std::int64_t edgecut = 0;
+  double discrepancy = 0;        ///< over the pixelated cells
+  double unpixelated_discrepancy = 0;  ///< cells without pixels whose assignment is not pure
+  double domain_volume = 0;
+  GreedyResult greedy;
+  AnnealingResult annealing;
+  GraphCutResult graph_cut;
+  MipResult mip;
+  PhaseTimes times;
+};
+
+struct Reconstruction {
+  PixelMesh pixels;
+  InterfaceModel model;
+  ReconstructResult result;
+};
+
+/// Runs the stage on a grid with fractions and a per-cell material assignment.
+template <class M>
+Reconstruction reconstruct(const M& mesh, const Fractions& fractions,
+                           const std::vector<int>& assignment, const ReconstructOptions& options);
+
+}  // namespace hexadapt::reconstruct

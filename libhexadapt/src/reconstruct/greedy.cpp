@@ -1,0 +1,241 @@
+#include "hexadapt/reconstruct/greedy.h"
+
+#include <algorithm>
+#include <numeric>
+
+#include "hexadapt/core/error.h"
+#include "hexadapt/core/parallel.h"
+
+namespace hexadapt::reconstruct {
+
+namespace {
+
+// Fraction vectors of the free pixels, block after block in pixel order.
+class Greedy {
+ public:
+  Greedy(PixelMesh& px, const Fractions& f) : px_(px), f_(f), nm_(f.n_materials()) {
+    for (index_t b = 0; b < px.n_blocks(); ++b)
+      if (px.block_free(b)) {
+        slot_of_block_.push_back(b);
+      }
+    free_index_.assign(static_cast<std::size_t>(px.n_blocks()), -1);
+    for (std::size_t i = 0; i < slot_of_block_.size(); ++i)
+      free_index_[static_cast<std::size_t>(slot_of_block_[i])] = static_cast<index_t>(i);
+    vf_.assign(slot_of_block_.size() * static_cast<std::size_t>(px.pixels_per_block() * nm_), 0.0);
+    next_ = vf_;
+    // Neighbours of the free pixels, looked up once for all the diffusion sweeps.
+    const int nf = px.faces_per_pixel();
+    const std::int64_t n_free = static_cast<std::int64_t>(slot_of_block_.size()) * px.pixels_per_block();
+    nbr_.resize(static_cast<std::size_t>(n_free * nf));
+    // Codes: >= 0 the free index of a free neighbour, -1 none, <= -2 a fixed pixel of
+    // material -code - 2.
+    slot_label_.assign(static_cast<std::size_t>(n_free), PixelMesh::unassigned);
+    parallel_for(n_free, [&](std::int64_t i) {
+      const std::int64_t p = pixel_of_slot(i);
+      for (int lf = 0; lf < nf; ++lf) {
+        const std::int64_t q = px.neighbour(p, lf);
+        std::int64_t code = -1;
+        if (q >= 0) {
+          const index_t qb = px.pixel_block(q);
+          code = px.block_free(qb)
+                     ? static_cast<std::int64_t>(free_index_[static_cast<std::size_t>(qb)]) *
+                               px.pixels_per_block() + (q - px.first_pixel(qb))
+                     : -2 - px.label(q);
+        }
+        nbr_[static_cast<std::size_t>(i * nf + lf)] = code;
+      }
+    });
+    owed_.assign(slot_of_block_.size() * static_cast<std::size_t>(nm_), 0.0);
+    for (std::size_t i = 0; i < slot_of_block_.size(); ++i) {
+      const index_t b = slot_of_block_[i];
+      double vol = 0;
+      for (std::int64_t p = px.first_pixel(b); p < px.first_pixel(b + 1); ++p) vol += px.volume(p);
+      for (int m = 0; m < nm_; ++m) {
+        const double share = f(px.block_cell(b), m);
+        owed_[i * static_cast<std::size_t>(nm_) + static_cast<std::size_t>(m)] = share * vol;
+        for (std::int64_t p = px.first_pixel(b); p < px.first_pixel(b + 1); ++p) vf(p)[m] = share;
+      }
+    }
+  }
+
+  index_t n_free_blocks() const { return static_cast<index_t>(slot_of_block_.size()); }
+
+  void diffuse(int sweeps) {
+    const std::int64_t n = static_cast<std::int64_t>(slot_of_block_.size()) * px_.pixels_per_block();
+    for (int s = 0; s < sweeps; ++s) {
+      parallel_for(n, [&](std::int64_t i) { smooth_one(i); });
+      std::swap(vf_, next_);
+    }
+  }
+
+  void rescale(index_t slot) {
+    const index_t b = slot_of_block_[static_cast<std::size_t>(slot)];
+    std::vector<double> carried(static_cast<std::size_t>(nm_), 0.0);
+    for (std::int64_t p = px_.first_pixel(b); p < px_.first_pixel(b + 1); ++p)
+      if (px_.label(p) < 0)
+        for (int m = 0; m < nm_; ++m) carried[static_cast<std::size_t>(m)] += px_.volume(p) * vf(p)[m];
+    for (std::int64_t p = px_.first_pixel(b); p < px_.first_pixel(b + 1); ++p) {
+      if (px_.label(p) >= 0) continue;
+      double* v = vf(p);
+      for (int m = 0; m < nm_; ++m) {
+        const double o = std::max(0.0, owed(slot, m));
+        const double c = carried[static_cast<std::size_t>(m)];
+        v[m] = c > 0 ? v[m] * o / c : 0.0;
+      }
+      normalise(v, slot);
+    }
+  }
+
+  /// Fixes the confident pixels of one free block; returns how many.
+  int fix(index_t slot, double threshold) {
+    const index_t b = slot_of_block_[static_cast<std::size_t>(slot)];
+    std::vector<std::pair<double, std::int64_t>> cand;
+    for (std::int64_t p = px_.first_pixel(b); p < px_.first_pixel(b + 1); ++p)
+      if (px_.label(p) < 0) {
+        const double* v = vf(p);
+        const double best = *std::max_element(v, v + nm_);
+        if (best >= threshold) cand.emplace_back(best, p);
+      }
+    std::sort(cand.begin(), cand.end(), [](const auto& a, const auto& c) {
+      return a.first != c.first ? a.first > c.first : a.second < c.second;
+    });
+    int fixed = 0;
+    for (const auto& [conf, p] : cand) {
+      const double* v = vf(p);
+      const int m = static_cast<int>(std::max_element(v, v + nm_) - v);
+      if (owed(slot, m) < 0.5 * px_.volume(p)) continue;
+      assign(slot, p, m);
+      ++fixed;
+    }
+    return fixed;
+  }
+
+  /// Gives every remaining free pixel of the block to the material owed most.
+  std::int64_t finish(index_t slot) {
+    const index_t b = slot_of_block_[static_cast<std::size_t>(slot)];
+    std::int64_t n = 0;
+    for (std::int64_t p = px_.first_pixel(b); p < px_.first_pixel(b + 1); ++p)
+      if (px_.label(p) < 0) {
+        int best = 0;
+        for (int m = 1; m < nm_; ++m)
+          if (owed(slot, m) > owed(slot, best)) best = m;
+        assign(slot, p, best);
+        ++n;
+      }
+    return n;
+  }
+
+ private:
+  double* vf(std::int64_t p) {
+    const index_t slot = free_index_[static_cast<std::size_t>(px_.pixel_block(p))];
+    const std::int64_t local = p - px_.first_pixel(px_.pixel_block(p));
+    return vf_.data() + (static_cast<std::int64_t>(slot) * px_.pixels_per_block() + local) * nm_;
+  }
+  std::int64_t pixel_of_slot(std::int64_t i) const {
+    const auto slot = static_cast<std::size_t>(i / px_.pixels_per_block());
+    return px_.first_pixel(slot_of_block_[slot]) + i % px_.pixels_per_block();
+  }
+  double& owed(index_t slot, int m) {
+    return owed_[static_cast<std::size_t>(slot) * static_cast<std::size_t>(nm_) + static_cast<std::size_t>(m)];
+  }
+  void assign(index_t slot, std::int64_t p, int m) {
+    px_.set_label(p, m);
+    slot_label_[static_cast<std::size_t>(static_cast<std::int64_t>(slot) * px_.pixels_per_block() +
+                                         (p - px_.first_pixel(px_.pixel_block(p))))] = m;
+    owed(slot, m) -= px_.volume(p);
+    double* v = vf(p);
+    for (int k = 0; k < nm_; ++k) v[k] = k == m ? 1.0 : 0.0;
+  }
+  // Materials absent from the cell stay at 0; an all-zero vector becomes uniform over the
+  // materials the cell still owes.
+  void normalise(double* v, index_t slot) {
+    double s = 0;
+    for (int m = 0; m < nm_; ++m) s += v[m];
+    if (s > 0) {
+      for (int m = 0; m < nm_; ++m) v[m] /= s;
+      return;
+    }
+    int owing = 0;
+    for (int m = 0; m < nm_; ++m) owing += owed(slot, m) > 0 ? 1 : 0;
+    for (int m = 0; m < nm_; ++m) v[m] = owing && owed(slot, m) > 0 ? 1.0 / owing : 0.0;
+  }
+  void smooth_one(std::int64_t i) {
+    double* out = next_.data() + i * nm_;
+    const double* self = vf_.data() + i * nm_;
+    std::copy(self, self + nm_, out);
+    if (slot_label_[static_cast<std::size_t>(i)] >= 0) return;
+    const index_t slot = static_cast<index_t>(i / px_.pixels_per_block());
+    const CellId c = px_.block_cell(slot_of_block_[static_cast<std::size_t>(slot)]);
+    int n = 1;
+    const int nf = px_.faces_per_pixel();
+    for (int lf = 0; lf < nf; ++lf) {
+      const std::int64_t code = nbr_[static_cast<std::size_t>(i * nf + lf)];
+      if (code == -1) continue;
+      ++n;
+      const int fixed = code <= -2 ? static_cast<int>(-2 - code) : slot_label_[static_cast<std::size_t>(code)];
+      if (fixed >= 0) {
+        out[fixed] += 1.0;
+      } else {
+        const double* w = vf_.data() + code * nm_;
+        for (int m = 0; m < nm_; ++m) out[m] += w[m];
+      }
+    }
+    // Only materials present in the cell may grow here.
+    double s = 0;
+    for (int m = 0; m < nm_; ++m) {
+      out[m] = f_(c, m) > 0 ? out[m] / n : 0.0;
+      s += out[m];
+    }
+    if (s > 0)
+      for (int m = 0; m < nm_; ++m) out[m] /= s;
+  }
+
+  PixelMesh& px_;
+  const Fractions& f_;
+  int nm_;
+  std::vector<index_t> slot_of_block_;
+  std::vector<index_t> free_index_;
+  std::vector<double> vf_, next_, owed_;
+  std::vector<std::int64_t> nbr_;
+  std::vector<int> slot_label_;
+};
+
+}  // namespace
+
+double greedy_bytes_per_free_pixel(int n_materials, int dim) {
+  return 16.0 * n_materials + 16.0 * dim;
+}
+
+GreedyResult greedy_assign(PixelMesh& pixels, const Fractions& fractions,
+                           const GreedyOptions& options) {
+  if (!(options.threshold_step > 0 && options.threshold_step <= 1))
+    throw OptionError("greedy threshold step must be in (0, 1]");
+  if (options.rounds_per_threshold < 1 || options.diffusion_sweeps < 0)
+    throw OptionError("greedy: rounds per threshold >= 1 and diffusion sweeps >= 0");
+  Greedy g(pixels, fractions);
+  GreedyResult result;
+  const index_t nb = g.n_free_blocks();
+  std::vector<std::int64_t> fixed(static_cast<std::size_t>(nb));
+  double threshold = 1.0;
+  int rounds_here = 0;
+  std::int64_t left = static_cast<std::int64_t>(nb) * pixels.pixels_per_block();
+  while (threshold > 0 && left > 0) {
+    ++result.rounds;
+    g.diffuse(options.diffusion_sweeps);
+    parallel_for(nb, [&](std::int64_t s) { g.rescale(static_cast<index_t>(s)); });
+    parallel_for(nb, [&](std::int64_t s) {
+      fixed[static_cast<std::size_t>(s)] = g.fix(static_cast<index_t>(s), threshold);
+    });
+    const std::int64_t n = std::accumulate(fixed.begin(), fixed.end(), std::int64_t{0});
+    left -= n;
+    if (n == 0 || ++rounds_here >= options.rounds_per_threshold) {
+      threshold -= options.threshold_step;
+      rounds_here = 0;
+    }
+  }
+  parallel_for(nb, [&](std::int64_t s) { fixed[static_cast<std::size_t>(s)] = g.finish(static_cast<index_t>(s)); });
+  result.fallback_pixels = std::accumulate(fixed.begin(), fixed.end(), std::int64_t{0});
+  return result;
+}
+
+}  // namespace hexadapt::reconstruct

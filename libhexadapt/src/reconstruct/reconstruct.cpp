@@ -1,0 +1,100 @@
+#include "hexadapt/reconstruct/reconstruct.h"
+
+#include "hexadapt/core/error.h"
+#include "hexadapt/mesh/cell_complex.h"
+
+namespace hexadapt::reconstruct {
+
+std::string to_string(Method m) {
+  switch (m) {
+    case Method::greedy: return "greedy";
+    case Method::annealing: return "annealing";
+    case Method::graph_cut: return "graphcut";
+    case Method::mip: return "mip";
+  }
+  return "?";
+}
+
+Method parse_method(const std::string& name) {
+  for (Method m : {Method::greedy, Method::annealing, Method::graph_cut, Method::mip})
+    if (to_string(m) == name) return m;
+  throw OptionError("unknown method '" + name + "': expected greedy, annealing, graphcut or mip");
+}
+
+namespace {
+
+double method_bytes(Method m, int n_materials, int dim) {
+  switch (m) {
+    case Method::greedy: return greedy_bytes_per_free_pixel(n_materials, dim);
+    case Method::annealing: return 0;
+    case Method::graph_cut: return graph_cut_bytes_per_free_pixel(n_materials, dim);
+    case Method::mip: return mip_bytes_per_free_pixel(n_materials, dim);
+  }
+  return 0;
+}
+
+template <class M>
+double unpixelated_discrepancy(const M& mesh, const PixelMesh& px, const Fractions& f,
+                               const std::vector<int>& assignment, double* domain_volume) {
+  double d = 0, total = 0;
+  for (CellId c : id_range<CellId>(mesh.n_cells())) {
+    const double v = mesh.cell_volume(c);
+    total += v;
+    if (px.cell_block(c) >= 0) continue;
+    d += 2 * (1 - f(c, assignment[c.idx()])) * v;  // pure cells: 0 or 2 V
+  }
+  *domain_volume = total;
+  return d;
+}
+
+}  // namespace
+
+template <class M>
+Reconstruction reconstruct(const M& mesh, const Fractions& fractions,
+                           const std::vector<int>& assignment, const ReconstructOptions& options) {
+  Reconstruction out;
+  ReconstructResult& r = out.result;
+  PixelOptions po = options.pixels;
+  po.method_bytes_per_free_pixel += method_bytes(options.method, fractions.n_materials(), M::dim);
+  Timer t;
+  if (options.progress) options.progress("pixels", 0);
+  out.pixels = build_pixel_mesh(mesh, fractions, assignment, po, &r.plan);
+  r.times.emplace_back("pixels", t.seconds());
+  t.restart();
+  if (options.progress) options.progress(to_string(options.method), 0);
+  switch (options.method) {
+    case Method::greedy: r.greedy = greedy_assign(out.pixels, fractions, options.greedy); break;
+    case Method::annealing:
+      r.annealing = annealing_assign(out.pixels, fractions, options.annealing);
+      break;
+    case Method::graph_cut:
+      r.graph_cut = graph_cut_assign(out.pixels, fractions, options.graph_cut);
+      break;
+    case Method::mip:
+      r.mip = mip_assign(out.pixels, fractions, options.mip);
+      r.status = to_string(r.mip.status);
+      break;
+  }
+  r.times.emplace_back(to_string(options.method), t.seconds());
+  t.restart();
+  r.edgecut = edgecut(out.pixels);
+  r.discrepancy = discrepancy(out.pixels, fractions);
+  r.unpixelated_discrepancy =
+      unpixelated_discrepancy(mesh, out.pixels, fractions, assignment, &r.domain_volume);
+  r.times.emplace_back("metrics", t.seconds());
+  if (options.extract_model) {
+    t.restart();
+    if (options.progress) options.progress("model", 0);
+    out.model = extract_model(mesh, out.pixels, assignment);
+    r.times.emplace_back("model", t.seconds());
+  }
+  if (options.progress) options.progress("done", 1);
+  return out;
+}
+
+template Reconstruction reconstruct(const QuadMesh&, const Fractions&, const std::vector<int>&,
+                                    const ReconstructOptions&);
+template Reconstruction reconstruct(const HexMesh&, const Fractions&, const std::vector<int>&,
+                                    const ReconstructOptions&);
+
+}  // namespace hexadapt::reconstruct

@@ -1,0 +1,240 @@
+// hexadapt-reconstruct: sub-pixel interface reconstruction of an assigned grid (paper
+// sec. 4). Reads the grid with its vf_ arrays and `material` array, writes the pixel mesh
+// (-o), the geometric model (--model) and a report (--json).
+#include <cmath>
+#include <iostream>
+#include <string>
+#include <variant>
+
+#include "cli.h"
+#include "hexadapt/core/error.h"
+#include "hexadapt/io/mesh_file.h"
+#include "hexadapt/reconstruct/model_io.h"
+#include "hexadapt/reconstruct/pixel_output.h"
+#include "hexadapt/reconstruct/reconstruct.h"
+
+namespace {
+
+using namespace hexadapt;
+using reconstruct::Method;
+
+struct Options {
+  std::string input, model, method = "greedy", max_memory = "8G", model_format = "om";
+  std::vector<std::string> fractions;
+  std::string void_material;
+  bool majority = false;
+  reconstruct::ReconstructOptions lib;
+};
+
+/// "123", "500M", "8G", "1.5T" (powers of 1000) -> bytes.
+double parse_bytes(const std::string& s) {
+  std::size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(s, &used);
+  } catch (const std::exception&) {
+    throw OptionError("--max-memory: '" + s + "' is not a size (e.g. 8G, 500M)");
+  }
+  const std::string unit = s.substr(used);
+  const double scale = unit.empty() || unit == "B" ? 1
+                       : unit == "K"              ? 1e3
+                       : unit == "M"              ? 1e6
+                       : unit == "G"              ? 1e9
+                       : unit == "T"              ? 1e12
+                                                  : -1;
+  if (scale < 0 || !(v > 0)) throw OptionError("--max-memory: '" + s + "' is not a size (e.g. 8G, 500M)");
+  return v * scale;
+}
+
+std::vector<int> read_assignment(const io::MeshData& data, const Fractions& f,
+                                 const Options& o) {
+  std::vector<int> a(static_cast<std::size_t>(data.n_cells()));
+  const io::DataArray* m = data.find_cell_array("material");
+  if (o.majority || !m) {
+    if (!o.majority)
+      throw InputError(o.input, "", "no `material` cell array: run hexadapt-assign first, or "
+                                    "pass --majority to use the majority material");
+    for (CellId c : id_range<CellId>(data.n_cells())) a[c.idx()] = f.majority(c);
+    return a;
+  }
+  if (m->n_components != 1 || m->n_tuples() != a.size())
+    throw InputError(o.input, "", "the `material` array must have one value per cell");
+  for (std::size_t c = 0; c < a.size(); ++c) {
+    const double v = m->values[c];
+    if (v != std::floor(v) || v < 0 || v >= f.n_materials())
+      throw InputError(o.input, "cell " + std::to_string(c),
+                       "material " + std::to_string(v) + " is not a material index in [0, " +
+                           std::to_string(f.n_materials()) + ")");
+    a[c] = static_cast<int>(v);
+  }
+  return a;
+}
+
+std::string model_stem(std::string path) {
+  const std::string ext = ".vtk";
+  if (path.size() > ext.size() && path.compare(path.size() - ext.size(), ext.size(), ext) == 0)
+    path.resize(path.size() - ext.size());
+  return path;
+}
+
+cli::Json method_json(const reconstruct::ReconstructResult& r, Method m) {
+  cli::Json j;
+  switch (m) {
+    case Method::greedy:
+      j["rounds"] = r.greedy.rounds;
+      j["fallback_pixels"] = r.greedy.fallback_pixels;
+      break;
+    case Method::annealing:
+      j["attempts"] = r.annealing.attempts;
+      j["accepted"] = r.annealing.accepted;
+      j["initial_edgecut"] = r.annealing.initial_edgecut;
+      j["initial_energy"] = r.annealing.initial_energy;
+      j["final_energy"] = r.annealing.final_energy;
+      j["time_limited"] = r.annealing.time_limited;
+      break;
+    case Method::graph_cut:
+      j["cycles"] = r.graph_cut.cycles;
+      j["initial_energy"] = r.graph_cut.initial_energy;
+      j["final_energy"] = r.graph_cut.final_energy;
+      break;
+    case Method::mip:
+      j["variables"] = r.mip.n_variables;
+      j["constraints"] = r.mip.n_constraints;
+      j["objective"] = r.mip.objective;
+      j["best_bound"] = r.mip.best_bound;
+      j["solver_seconds"] = r.mip.seconds;
+      break;
+  }
+  return j;
+}
+
+template <class M>
+int run(const M& mesh, const Fractions& f, const std::vector<int>& assignment,
+        Options& o, const cli::CommonOptions& common, const CLI::App& app) {
+  auto& lib = o.lib;
+  lib.method = reconstruct::parse_method(o.method);
+  lib.pixels.max_memory = parse_bytes(o.max_memory);
+  lib.pixels.output_bytes_per_pixel = reconstruct::pixel_output_bytes_per_pixel(M::dim);
+  lib.extract_model = !o.model.empty();
+  lib.progress = cli::terminal_progress(common);
+  if (!common.quiet) {
+    // The estimate is shown before anything big is allocated (the build refuses beyond
+    // --max-memory).
+    auto po = lib.pixels;
+    const auto plan = reconstruct::plan_pixels(mesh, f, assignment, po);
+    std::cerr << app.get_name() << ": " << plan.n_pixels << " pixels (" << plan.n_free_pixels
+              << " free) in " << plan.n_blocks << " cells, nsub " << plan.nsub
+              << "; pixel memory estimate " << plan.bytes / 1e6 << " MB plus the "
+              << o.method << " working arrays\n";
+  }
+  const auto rec = reconstruct::reconstruct(mesh, f, assignment, lib);
+  const auto& r = rec.result;
+  Timer t;
+  io::MeshData out = reconstruct::pixel_mesh_data(rec.pixels);
+  out.metadata = cli::provenance(app);
+  out.metadata.emplace_back("hexadapt_materials", [&] {
+    std::string s;
+    for (const auto& n : f.names()) s += (s.empty() ? "" : ",") + n;
+    return s;
+  }());
+  io::write_mesh(out, common.output);
+  std::vector<std::string> files{common.output};
+  if (!o.model.empty()) {
+    const std::string stem = model_stem(o.model);
+    reconstruct::write_model_vtk(rec.model, f.names(), stem + ".vtk");
+    files.push_back(stem + ".vtk");
+    if (M::dim == 3)
+      for (const auto& p : reconstruct::write_model_openmesh(rec.model, f.names(), stem, o.model_format))
+        files.push_back(p);
+  }
+  PhaseTimes times = r.times;
+  times.emplace_back("write", t.seconds());
+  const double total = r.discrepancy + r.unpixelated_discrepancy;
+  log_info("method " + o.method + " (" + r.status + "): edgecut " + std::to_string(r.edgecut) +
+           ", discrepancy " + std::to_string(total));
+  if (lib.method == Method::mip && r.mip.status == reconstruct::MipStatus::timed_out_no_solution)
+    log_warning("the MIP found no solution within the time limit: the pixels keep the "
+                "largest-remainder fill");
+  cli::Json j = cli::report_header(app);
+  j["input"] = o.input;
+  j["method"] = o.method;
+  j["status"] = r.status;
+  j["nsub"] = r.plan.nsub;
+  j["pixelated_cells"] = r.plan.n_blocks;
+  j["mixed_cells"] = r.plan.n_free_blocks;
+  j["pixels"] = r.plan.n_pixels;
+  j["free_pixels"] = r.plan.n_free_pixels;
+  j["memory_estimate_bytes"] = r.plan.bytes;
+  j["edgecut"] = r.edgecut;
+  j["discrepancy"] = total;
+  j["discrepancy_pixelated"] = r.discrepancy;
+  j["discrepancy_unpixelated"] = r.unpixelated_discrepancy;
+  j["relative_discrepancy"] = r.domain_volume > 0 ? total / r.domain_volume : 0.0;
+  j["method_stats"] = method_json(r, lib.method);
+  if (!o.model.empty()) {
+    j["model"] = {{"points", rec.model.points.size()},
+                  {"facets", rec.model.facets.size()},
+                  {"curves", rec.model.curves.size()},
+                  {"corners", rec.model.corners.size()}};
+  }
+  j["files"] = files;
+  j["times"] = cli::phase_times_json(times);
+  cli::write_report(common, j);
+  return cli::ok;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Sub-pixel interface reconstruction and geometric model (paper sec. 4)",
+               "hexadapt-reconstruct"};
+  Options o;
+  cli::CommonOptions common;
+  auto& lib = o.lib;
+  app.add_option("input", o.input, "Assigned grid (vf_ arrays and a `material` cell array)")
+      ->required();
+  cli::add_common_options(app, common);
+  app.add_option("--model", o.model, "Write the geometric model: OUT.vtk, and in 3D OUT.<a>-<b>.om");
+  app.add_option("--model-format", o.model_format, "OpenMesh format of the 3D surfaces")
+      ->check(CLI::IsMember({"om", "obj"}))
+      ->capture_default_str();
+  app.add_option("--method", o.method, "greedy, annealing, graphcut or mip")
+      ->check(CLI::IsMember({"greedy", "annealing", "graphcut", "mip"}))
+      ->capture_default_str();
+  app.add_option("--nsub", lib.pixels.nsub, "Pixels per axis and cell (0: 10 in 2D, 4 in 3D)")
+      ->capture_default_str();
+  app.add_option("--max-memory", o.max_memory, "Refuse to build pixels beyond this (e.g. 8G)")
+      ->capture_default_str();
+  app.add_option("--fractions", o.fractions, "Fraction arrays to read (default: every vf_*)")
+      ->delimiter(',');
+  app.add_option("--void", o.void_material, "Name a material that receives 1 - sum of the others");
+  app.add_flag("--majority", o.majority, "Use the majority material instead of a `material` array");
+  app.add_option("--iterations", lib.annealing.iterations,
+                 "Annealing: swap attempts (0: 200 per free pixel)")
+      ->capture_default_str();
+  app.add_option("--time-budget", lib.annealing.time_budget,
+                 "Annealing: run this many seconds instead (not reproducible)")
+      ->capture_default_str();
+  app.add_option("--seed", lib.annealing.seed, "Annealing / MIP fill: random seed")
+      ->capture_default_str();
+  app.add_option("--lambda", lib.graph_cut.lambda, "Graph cut: weight of the data term")
+      ->capture_default_str();
+  app.add_option("--beta", lib.graph_cut.beta, "Graph cut: weight of the smoothness term")
+      ->capture_default_str();
+  app.add_option("--time-limit", lib.mip.time_limit, "MIP: seconds given to GLPK")
+      ->capture_default_str();
+  return cli::run(app, argc, argv, common, [&] {
+    lib.mip.seed = lib.annealing.seed;
+    if (!o.model.empty()) cli::refuse_overwrite(model_stem(o.model) + ".vtk", {o.input});
+    cli::refuse_overwrite(common.output, {o.input});
+    io::MeshData data = io::read_mesh(o.input);
+    FractionOptions fo;
+    fo.arrays = o.fractions;
+    fo.void_material = o.void_material;
+    const Fractions f = extract_fractions(data, fo, nullptr, o.input);
+    const std::vector<int> assignment = read_assignment(data, f, o);
+    const AnyMesh mesh = io::to_mesh(data);
+    return std::visit([&](const auto& m) { return run(m, f, assignment, o, common, app); },
+                      mesh);
+  });
+}
