@@ -5,13 +5,17 @@
 // edges E and faces F of that boundary, U is a ball only if V - E + F = 2 (3D); in 2D the
 // boundary is a set of edges and U is a disk only if V - E = 0. A single cell always passes.
 //
-// The Euler count alone is not enough: it reads the union as a whole, and a union made of a
-// pinched piece (chi = 1) plus a piece touching it at n (chi + 1) sums to 2 again. Such
-// coincidences need many cells around n (they cannot occur in a 2x2x2 ball, see the tests),
-// but unstructured meshes have them, so the test also requires the cells of m to be
-// connected through shared faces. With both conditions the test agrees with the link
-// criterion (the cell corners around n assigned to m form one disk, or the whole sphere) on
-// every labelling of the structured balls, checked exhaustively in the tests.
+// The Euler count alone is not enough. It reads the boundary as a whole, and a pinch can be
+// offset elsewhere: six cells of a 2x2x2 block whose two missing cells share an edge through
+// the centre are face-connected with V - E + F = 2, yet two of them meet only along that
+// edge (36 of the 256 labellings of that block fool the count; see the tests). So a material
+// is manifold at n when, in addition to the Euler count,
+//   - its cells are connected through shared faces, and
+//   - (3D) around every edge through n its cells form a single run.
+// With these conditions the test agrees with the link criterion (the corners of m's cells
+// at n form one disk, or the whole sphere/circle) on every labelling of every structured
+// ball, interior or on the domain boundary; the tests check it exhaustively with an
+// independent implementation of that criterion.
 //
 // Nodes on the domain boundary (the cut ball): the test is the same. Faces on the domain
 // boundary are faces used once, so they are boundary faces of U like any interface face, and
@@ -35,7 +39,7 @@ namespace hexadapt::assign {
 template <class M>
 int euler_characteristic(const LocalBall<M>& ball, const std::vector<int>& labels, int m);
 
-/// Manifold test of material m over the ball (Euler count plus face connectivity).
+/// Manifold test of material m over the ball (Euler count, face connectivity, edge runs).
 template <class M>
 bool is_manifold(const LocalBall<M>& ball, const std::vector<int>& labels, int m);
 
