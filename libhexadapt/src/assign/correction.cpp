@@ -47,6 +47,50 @@ void sort_by_position(const M& mesh, std::vector<NodeId>& nodes) {
   });
 }
 
+/// The nodes of n's ball other than n that are manifold now, each with its own ball, to
+/// tell whether a configuration of n's ball keeps them manifold ("spares" them).
+template <class M>
+class Neighbourhood {
+ public:
+  Neighbourhood(const M& mesh, const Labels& labels, const LocalBall<M>& ball) {
+    std::vector<NodeId> nodes;
+    for (CellId c : ball.cells())
+      for (NodeId v : mesh.cell_nodes(c))
+        if (v != ball.node()) nodes.push_back(v);
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    for (NodeId v : nodes) {
+      Neighbour nb{LocalBall<M>(mesh, v), {}, {}};
+      for (CellId c : nb.ball.cells()) {
+        const auto& bc = ball.cells();
+        const auto at = std::find(bc.begin(), bc.end(), c);
+        nb.in_centre.push_back(at == bc.end() ? -1 : static_cast<int>(at - bc.begin()));
+        nb.labels.push_back(labels[c]);
+      }
+      if (is_manifold(nb.ball, nb.labels)) neighbours_.push_back(std::move(nb));
+    }
+  }
+
+  bool spared_by(const std::vector<int>& config) const {
+    std::vector<int> local;
+    for (const Neighbour& nb : neighbours_) {
+      local = nb.labels;
+      for (std::size_t i = 0; i < local.size(); ++i)
+        if (nb.in_centre[i] >= 0) local[i] = config[static_cast<std::size_t>(nb.in_centre[i])];
+      if (!is_manifold(nb.ball, local)) return false;
+    }
+    return true;
+  }
+
+ private:
+  struct Neighbour {
+    LocalBall<M> ball;
+    std::vector<int> in_centre;  ///< per cell of ball: its index in the centre's ball, or -1
+    std::vector<int> labels;     ///< current labels of ball's cells
+  };
+  std::vector<Neighbour> neighbours_;
+};
+
 /// What a node keeps between its visits.
 struct NodeState {
   ConfigurationStore store;
@@ -108,13 +152,13 @@ class Corrector {
     parallel_for(static_cast<std::int64_t>(nodes.size()), [&](std::int64_t k) {
       const auto i = static_cast<std::size_t>(k);
       NodeState& s = state(nodes[i]);
+      const LocalBall<M> ball(mesh_, nodes[i]);
       if (fresh[i]) {
-        const LocalBall<M> ball(mesh_, nodes[i]);
         const LocalProblem p = local_problem(ball, fractions_, volumes_, options_.max_materials);
         s.materials = p.materials;
         stats[i] = enumerate_configurations(ball, p, options_.max_leaves, s.store);
       }
-      chosen[i] = s.store.take_next();
+      chosen[i] = options_.spare_neighbours ? take_sparing(ball, s.store) : s.store.take_next();
     });
     for (std::size_t i = 0; i < nodes.size(); ++i) {
       result_.leaves += stats[i].leaves;
@@ -122,6 +166,13 @@ class Corrector {
       result_.nodes_treated += fresh[i];
     }
     return chosen;
+  }
+
+  /// Labels are only read during the parallel phase, so this is thread-count independent.
+  const Configuration* take_sparing(const LocalBall<M>& ball, ConfigurationStore& store) const {
+    const Neighbourhood<M> around(mesh_, result_.labels, ball);
+    return store.take_preferring(
+        [&](const Configuration& config) { return around.spared_by(config.labels); });
   }
 
   void apply(NodeId n, const Configuration& config, std::vector<NodeId>& touched) {

@@ -157,9 +157,15 @@ std::vector<NodeId> non_manifold_among(const M& mesh, const Labels& labels,
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   std::vector<char> bad(nodes.size(), 0);
-  parallel_for(static_cast<std::int64_t>(nodes.size()), [&](std::int64_t i) {
+  auto test = [&](std::int64_t i) {
     bad[static_cast<std::size_t>(i)] = !manifold_node(mesh, labels, nodes[static_cast<std::size_t>(i)]);
-  });
+  };
+  const auto n = static_cast<std::int64_t>(nodes.size());
+  if (n < 512) {  // a few microseconds of work: not worth waking the threads
+    for (std::int64_t i = 0; i < n; ++i) test(i);
+  } else {
+    parallel_for(n, test);
+  }
   std::vector<NodeId> out;
   for (std::size_t i = 0; i < nodes.size(); ++i)
     if (bad[i]) out.push_back(nodes[i]);

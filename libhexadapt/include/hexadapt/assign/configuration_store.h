@@ -5,6 +5,8 @@
 // is the enumeration's deterministic order. A node treated again takes the next unused
 // configuration: every visit consumes one, so the correction cannot cycle forever (the
 // paper's livelock avoidance), and running out is the failure the user fixes with a larger K.
+// A visit may skip ahead to a dearer unused configuration (take_preferring); skipped ones
+// stay available to later visits.
 #pragma once
 
 #include <vector>
@@ -31,12 +33,24 @@ class ConfigurationStore {
 
   /// The best configuration not used yet, nullptr when all were used.
   const Configuration* take_next();
-  int used() const { return next_; }
+  /// The best unused configuration satisfying `good`, else the best unused one; nullptr
+  /// when all were used. Either way it is marked used.
+  template <class Good>
+  const Configuration* take_preferring(Good good) {
+    for (int i = 0; i < size(); ++i)
+      if (!used_[static_cast<std::size_t>(i)] && good(configs_[static_cast<std::size_t>(i)]))
+        return take(i);
+    return take_next();
+  }
+  int used() const { return n_used_; }
 
  private:
+  const Configuration* take(int i);
+
   int keep_;
-  int next_ = 0;
+  int n_used_ = 0;
   std::vector<Configuration> configs_;
+  std::vector<char> used_;
 };
 
 }  // namespace hexadapt::assign

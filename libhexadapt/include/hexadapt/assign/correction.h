@@ -7,6 +7,12 @@
 // configuration (configuration_store.h), so the process cannot cycle; when a node has used
 // all of them the correction stops and reports that node.
 //
+// One refinement of the paper: by default a visit takes the cheapest unused configuration
+// that leaves every currently manifold neighbour of the node (the other nodes of its cells)
+// manifold, and only when none does, the cheapest unused one. Choosing blindly by cost makes
+// neighbouring nodes undo each other: on noisy 3D fractions the paper's order used up 20
+// configurations per node and failed where this one converges (see the tests).
+//
 // Parallel and deterministic: the non-manifold nodes are treated in rounds. Each round
 // takes them in order of position (x, then y, then z; node id only for coincident points)
 // and selects greedily those whose balls share no cell with a ball already selected; the
@@ -32,6 +38,9 @@ struct CorrectionOptions {
   int keep = 20;          ///< manifold configurations stored per node (K); >= 1
   int max_materials = 5;  ///< candidate materials per node: the most present in its ball; >= 1
   std::int64_t max_leaves = 20'000'000;  ///< per node: complete configurations examined at most
+  /// Take the cheapest unused configuration that keeps the node's manifold neighbours
+  /// manifold, when one exists; false: strictly the next cheapest (the paper's order).
+  bool spare_neighbours = true;
   Progress progress;      ///< called between rounds; nullptr: silent
 };
 
