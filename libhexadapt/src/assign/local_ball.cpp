@@ -45,8 +45,12 @@ LocalBall<M>::LocalBall(const M& mesh, NodeId n) : node_(n) {
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   n_nodes_ = static_cast<int>(nodes.size());
 
+  if (n_nodes_ > max_local) throw InternalError("local ball ids exceed their bound");
   faces_.resize(cells_.size());
-  std::vector<std::pair<int, int>> edge_keys;
+  // Edge ids in order of first sight, through a small node x node table.
+  std::vector<std::int16_t> edge_id;
+  if constexpr (M::dim == 3)
+    edge_id.assign(static_cast<std::size_t>(n_nodes_) * static_cast<std::size_t>(n_nodes_), -1);
   for (std::size_t i = 0; i < cells_.size(); ++i)
     for (int lf = 0; lf < M::faces_per_cell; ++lf) {
       Face& f = faces_[i][static_cast<std::size_t>(lf)];
@@ -61,27 +65,12 @@ LocalBall<M>::LocalBall(const M& mesh, NodeId n) : node_(n) {
         for (int k = 0; k < M::nodes_per_face; ++k) {
           const int a = f.nodes[static_cast<std::size_t>(k)];
           const int b = f.nodes[static_cast<std::size_t>((k + 1) % M::nodes_per_face)];
-          edge_keys.emplace_back(std::min(a, b), std::max(a, b));
+          auto& id = edge_id[static_cast<std::size_t>(std::min(a, b) * n_nodes_ + std::max(a, b))];
+          if (id < 0) id = static_cast<std::int16_t>(n_edges_++);
+          f.edges[static_cast<std::size_t>(k)] = static_cast<std::uint16_t>(id);
         }
     }
-  if constexpr (M::dim == 3) {
-    std::vector<std::pair<int, int>> unique_edges = edge_keys;
-    std::sort(unique_edges.begin(), unique_edges.end());
-    unique_edges.erase(std::unique(unique_edges.begin(), unique_edges.end()),
-                       unique_edges.end());
-    n_edges_ = static_cast<int>(unique_edges.size());
-    std::size_t next = 0;
-    for (auto& cell_faces : faces_)
-      for (Face& f : cell_faces)
-        for (auto& e : f.edges) {
-          const auto key = edge_keys[next++];
-          e = static_cast<std::uint16_t>(
-              std::lower_bound(unique_edges.begin(), unique_edges.end(), key) -
-              unique_edges.begin());
-        }
-  }
-  if (n_nodes_ > max_local || n_edges_ > max_local)
-    throw InternalError("local ball ids exceed their bound");
+  if (n_edges_ > max_local) throw InternalError("local ball ids exceed their bound");
   if constexpr (M::dim == 3) build_fans(local_of(nodes, n));
 }
 
