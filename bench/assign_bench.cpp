@@ -78,12 +78,13 @@ Fractions triple_fractions(const HexMesh& mesh) {
 void report(const char* name, const HexMesh& mesh, double mesh_s, double fractions_s,
             const assign::AssignResult& r) {
   const auto& c = r.correction;
-  std::printf("%s: %d cells, %d nodes, %d threads; input: grid %.2f s, fractions %.2f s\n",
-              name, mesh.n_cells(), mesh.n_nodes(), n_threads(), mesh_s, fractions_s);
-  std::printf("  non-manifold nodes at first %d, solved %s, rounds %d, node solves %d, "
-              "cells changed %d, cost added %.4g, configurations examined %lld\n",
-              c.non_manifold_initial, c.solved ? "yes" : "NO", c.rounds, c.node_solves,
-              c.cells_changed, c.cost_final - c.cost_initial, static_cast<long long>(c.leaves));
+  std::printf("%s: %d cells, %d nodes, %d threads; input: grid %.2f s, fractions %.2f s\n", name,
+              mesh.n_cells(), mesh.n_nodes(), n_threads(), mesh_s, fractions_s);
+  std::printf(
+      "  non-manifold nodes at first %d, solved %s, rounds %d, node solves %d, "
+      "cells changed %d, cost added %.4g, configurations examined %lld\n",
+      c.non_manifold_initial, c.solved ? "yes" : "NO", c.rounds, c.node_solves, c.cells_changed,
+      c.cost_final - c.cost_initial, static_cast<long long>(c.leaves));
   std::printf("  times:");
   for (const auto& [phase, seconds] : r.times) std::printf(" %s %.3f s", phase.c_str(), seconds);
   std::printf("\n");

@@ -37,8 +37,8 @@ class AssignTool : public ::testing::Test {
 
   ToolRun run(const std::string& args) const {
     const std::string err = path("stderr.txt");
-    const std::string cmd = std::string(HEXADAPT_TOOLS_DIR) + "/hexadapt-assign " + args +
-                            " 2> " + err;
+    const std::string cmd =
+        std::string(HEXADAPT_TOOLS_DIR) + "/hexadapt-assign " + args + " 2> " + err;
     const int status = std::system(cmd.c_str());
     ToolRun r;
     r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -51,8 +51,8 @@ class AssignTool : public ::testing::Test {
 
   /// The 4x4 case of the correction tests where node (2,1) is treated twice.
   static void write_livelock_case(const std::string& file) {
-    const double w[16][3] = {{7, 3, 0}, {2, 1, 0}, {2, 5, 8}, {1, 9, 6}, {5, 2, 2}, {1, 4, 0},
-                             {9, 5, 0}, {9, 9, 2}, {7, 5, 4}, {9, 4, 0}, {1, 0, 0}, {1, 1, 1},
+    const double w[16][3] = {{7, 3, 0}, {2, 1, 0},  {2, 5, 8}, {1, 9, 6}, {5, 2, 2}, {1, 4, 0},
+                             {9, 5, 0}, {9, 9, 2},  {7, 5, 4}, {9, 4, 0}, {1, 0, 0}, {1, 1, 1},
                              {8, 5, 4}, {5, 7, 10}, {0, 1, 0}, {8, 9, 4}};
     io::MeshData data = io::from_mesh(make_quad_grid(4, 4));
     const char* names[3] = {"vf_a", "vf_b", "vf_c"};
@@ -69,8 +69,8 @@ class AssignTool : public ::testing::Test {
 };
 
 TEST_F(AssignTool, WritesBothAssignmentsAndAReport) {
-  const ToolRun r = run(path("case.vtu") + " -o " + path("out.vtu") + " --json " +
-                        path("report.json"));
+  const ToolRun r =
+      run(path("case.vtu") + " -o " + path("out.vtu") + " --json " + path("report.json"));
   ASSERT_EQ(r.code, 0) << r.err;
   const io::MeshData out = io::read_mesh(path("out.vtu"));
   const io::DataArray* material = out.find_cell_array("material");

@@ -23,7 +23,8 @@ struct UnionFind {
   }
   int find(int a) {
     while (parent[static_cast<std::size_t>(a)] != a)
-      a = parent[static_cast<std::size_t>(a)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(a)])];
+      a = parent[static_cast<std::size_t>(a)] =
+          parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(a)])];
     return a;
   }
   void join(int a, int b) { parent[static_cast<std::size_t>(find(a))] = find(b); }

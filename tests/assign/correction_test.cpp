@@ -23,7 +23,8 @@ AssignResult assign_and_check(const M& mesh, const Fractions& f, CorrectionOptio
   EXPECT_EQ(test::count_non_manifold(mesh, r.correction.labels, f.n_materials()), 0);
   EXPECT_GE(r.correction.cost_final, r.correction.cost_initial - 1e-12);  // majority is cheapest
   index_t changed = 0;
-  for (CellId c : id_range<CellId>(mesh.n_cells())) changed += r.majority[c] != r.correction.labels[c];
+  for (CellId c : id_range<CellId>(mesh.n_cells()))
+    changed += r.majority[c] != r.correction.labels[c];
   EXPECT_EQ(changed, r.correction.cells_changed);
   return r;
 }
@@ -84,8 +85,8 @@ TEST(Correction, Figure4Configurations) {
 // Figure 5: treating node A (2,1) creates a non-manifold node nearby whose best fix breaks
 // A again; A is treated a second time and must take its second stored configuration.
 Fractions livelock_case() {
-  const double w[16][3] = {{7, 3, 0}, {2, 1, 0}, {2, 5, 8}, {1, 9, 6}, {5, 2, 2}, {1, 4, 0},
-                           {9, 5, 0}, {9, 9, 2}, {7, 5, 4}, {9, 4, 0}, {1, 0, 0}, {1, 1, 1},
+  const double w[16][3] = {{7, 3, 0}, {2, 1, 0},  {2, 5, 8}, {1, 9, 6}, {5, 2, 2}, {1, 4, 0},
+                           {9, 5, 0}, {9, 9, 2},  {7, 5, 4}, {9, 4, 0}, {1, 0, 0}, {1, 1, 1},
                            {8, 5, 4}, {5, 7, 10}, {0, 1, 0}, {8, 9, 4}};
   Fractions f(16, {"a", "b", "c"});
   for (int c = 0; c < 16; ++c) {
@@ -155,17 +156,17 @@ TEST(Correction, JitteredGrids) {
 TEST(Correction, ExtrudedDisksAndSpheres) {
   // three overlapping disks extruded over 3 layers, and three spheres
   const HexMesh slab = make_hex_grid(16, 12, 3);
-  const auto disks = test::ball_fractions(make_quad_grid(16, 12),
-                                          {{Vec3(5, 5, 0), 3.3}, {Vec3(9.5, 6, 0), 3.1},
-                                           {Vec3(7, 8.2, 0), 2.7}});
+  const auto disks =
+      test::ball_fractions(make_quad_grid(16, 12),
+                           {{Vec3(5, 5, 0), 3.3}, {Vec3(9.5, 6, 0), 3.1}, {Vec3(7, 8.2, 0), 2.7}});
   Fractions f(slab.n_cells(), disks.names());
   for (CellId c : id_range<CellId>(slab.n_cells()))
     for (int m = 0; m < f.n_materials(); ++m) f(c, m) = disks(CellId(c.value() % (16 * 12)), m);
   const AssignResult r = assign_and_check(slab, f);
   const HexMesh block = make_hex_grid(10, 10, 10);
-  assign_and_check(block, test::ball_fractions(block, {{Vec3(4, 4, 5), 2.6},
-                                                       {Vec3(6.2, 5, 5), 2.4},
-                                                       {Vec3(5, 6.5, 4.5), 2.2}}));
+  assign_and_check(
+      block, test::ball_fractions(
+                 block, {{Vec3(4, 4, 5), 2.6}, {Vec3(6.2, 5, 5), 2.4}, {Vec3(5, 6.5, 4.5), 2.2}}));
   (void)r;
 }
 
@@ -209,12 +210,15 @@ TEST(Correction, SameResultWhateverTheStorageOrder) {
   std::shuffle(node_perm.begin(), node_perm.end(), rng);  // new id of old node i
   std::shuffle(cell_perm.begin(), cell_perm.end(), rng);  // new id of old cell c
   std::vector<Vec3> p2(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) p2[static_cast<std::size_t>(node_perm[i])] = points[i];
+  for (std::size_t i = 0; i < points.size(); ++i)
+    p2[static_cast<std::size_t>(node_perm[i])] = points[i];
   std::vector<HexMesh::CellNodes> c2(cells.size());
   Fractions f2(mesh.n_cells(), f.names());
   for (std::size_t c = 0; c < cells.size(); ++c) {
     auto& nc = c2[static_cast<std::size_t>(cell_perm[c])];
-    for (int k = 0; k < 8; ++k) nc[static_cast<std::size_t>(k)] = NodeId(node_perm[cells[c][static_cast<std::size_t>(k)].idx()]);
+    for (int k = 0; k < 8; ++k)
+      nc[static_cast<std::size_t>(k)] =
+          NodeId(node_perm[cells[c][static_cast<std::size_t>(k)].idx()]);
     for (int m = 0; m < f.n_materials(); ++m) f2(CellId(cell_perm[c]), m) = f(CellId(c), m);
   }
   const HexMesh renumbered(p2, c2);

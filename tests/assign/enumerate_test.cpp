@@ -81,7 +81,8 @@ void check_single_node(const M& mesh, NodeId n, const Fractions& f, int keep, in
   for (int i = 0; i < store.size(); ++i) {
     EXPECT_NEAR(store[i].cost, costs[static_cast<std::size_t>(i)], 1e-12) << "rank " << i;
     Labels labels(static_cast<std::size_t>(mesh.n_cells()), -1);
-    for (int c = 0; c < ball.n_cells(); ++c) labels[ball.cell(c)] = store[i].labels[static_cast<std::size_t>(c)];
+    for (int c = 0; c < ball.n_cells(); ++c)
+      labels[ball.cell(c)] = store[i].labels[static_cast<std::size_t>(c)];
     for (int m : problem.materials) EXPECT_TRUE(test::link_manifold(mesh, n, labels, m));
   }
   // branch and bound examined fewer complete configurations than there are
@@ -119,7 +120,8 @@ TEST(Enumerate, JitteredHexBallUsesEachCellsOwnVolume) {
   std::uniform_real_distribution<double> jitter(-0.2, 0.2);
   for (int k = 0; k < 3; ++k)
     for (int j = 0; j < 3; ++j)
-      for (int i = 0; i < 3; ++i) pts.emplace_back(i + jitter(rng), j + jitter(rng), k + jitter(rng));
+      for (int i = 0; i < 3; ++i)
+        pts.emplace_back(i + jitter(rng), j + jitter(rng), k + jitter(rng));
   const HexMesh mesh = make_hex_grid(2, 2, 2, pts);
   check_single_node(mesh, NodeId(13), random_fractions(8, 3, 3, 21), 20, 5);
 }

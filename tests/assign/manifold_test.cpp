@@ -57,7 +57,7 @@ TEST(Manifold, DiagonalHexesInABlock) {
 TEST(Manifold, TwoHexesSharingAnEdgeAreNot) {
   const HexMesh mesh = make_hex_grid(2, 2, 1);
   Labels labels(4, 0);
-  labels[CellId(0)] = labels[CellId(3)] = 1;  // (0,0) and (1,1): the vertical centre edge
+  labels[CellId(0)] = labels[CellId(3)] = 1;       // (0,0) and (1,1): the vertical centre edge
   const LocalBall<HexMesh> ball(mesh, NodeId(4));  // node (1,1,0), on the bottom face
   const auto l = ball_labels(ball, labels);
   EXPECT_EQ(euler_characteristic(ball, l, 1), 14 - 23 + 12);
@@ -140,7 +140,7 @@ QuadMesh boundary_fan() {
   //  5---6     .   |
   //  | c0 \    .   |
   //  0 ---- 7 ---- 1   (c2 spans 0-7-1-2-3 via node 8; see the cells below)
-  std::vector<Vec3> p = {{0, 0, 0}, {4, 0, 0}, {4, 3, 0}, {1.5, 3, 0}, {-2, 3, 0},
+  std::vector<Vec3> p = {{0, 0, 0},  {4, 0, 0},     {4, 3, 0}, {1.5, 3, 0}, {-2, 3, 0},
                          {-2, 1, 0}, {0.5, 1.5, 0}, {2, 0, 0}, {3, 2, 0}};
   return QuadMesh(p, {{NodeId(0), NodeId(6), NodeId(4), NodeId(5)},
                       {NodeId(0), NodeId(8), NodeId(3), NodeId(6)},

@@ -169,7 +169,8 @@ int run_assign(const CLI::App& app, Options& o) {
   cli::Json report = cli::report_header(app);
   report["input"] = o.input;
   report["output"] = out;
-  report["dimension"] = std::visit([](const auto& m) { return std::decay_t<decltype(m)>::dim; }, mesh);
+  report["dimension"] =
+      std::visit([](const auto& m) { return std::decay_t<decltype(m)>::dim; }, mesh);
   report["cells"] = fractions.n_cells();
   report["materials"] = fractions.names();
   report["options"] = {{"keep", o.correction.keep},

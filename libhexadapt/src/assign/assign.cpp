@@ -16,9 +16,7 @@ AssignResult assign_materials(const M& mesh, const Fractions& fractions,
   return r;
 }
 
-template AssignResult assign_materials(const QuadMesh&, const Fractions&,
-                                       const CorrectionOptions&);
-template AssignResult assign_materials(const HexMesh&, const Fractions&,
-                                       const CorrectionOptions&);
+template AssignResult assign_materials(const QuadMesh&, const Fractions&, const CorrectionOptions&);
+template AssignResult assign_materials(const HexMesh&, const Fractions&, const CorrectionOptions&);
 
 }  // namespace hexadapt::assign

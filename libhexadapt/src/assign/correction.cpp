@@ -24,11 +24,11 @@ void validate(const M& mesh, const Fractions& fractions, const Labels& labels,
   if (options.max_materials < 1) throw OptionError("max-materials must be at least 1");
   if (options.max_leaves < 1) throw OptionError("max-leaves must be at least 1");
   if (fractions.n_cells() != mesh.n_cells())
-    throw Error("fractions hold " + std::to_string(fractions.n_cells()) +
-                " cells, the mesh has " + std::to_string(mesh.n_cells()));
+    throw Error("fractions hold " + std::to_string(fractions.n_cells()) + " cells, the mesh has " +
+                std::to_string(mesh.n_cells()));
   if (labels.size() != static_cast<std::size_t>(mesh.n_cells()))
-    throw Error("the assignment holds " + std::to_string(labels.size()) +
-                " cells, the mesh has " + std::to_string(mesh.n_cells()));
+    throw Error("the assignment holds " + std::to_string(labels.size()) + " cells, the mesh has " +
+                std::to_string(mesh.n_cells()));
   for (CellId c : id_range<CellId>(mesh.n_cells()))
     if (labels[c] < 0 || labels[c] >= fractions.n_materials())
       throw Error("cell " + std::to_string(c.value()) + " is assigned material " +

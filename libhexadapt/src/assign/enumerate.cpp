@@ -54,9 +54,8 @@ class Search {
       auto& o = order_[i];
       o.resize(p);
       std::iota(o.begin(), o.end(), 0);
-      std::stable_sort(o.begin(), o.end(), [&](std::size_t a, std::size_t b) {
-        return cost(i, a) < cost(i, b);
-      });
+      std::stable_sort(o.begin(), o.end(),
+                       [&](std::size_t a, std::size_t b) { return cost(i, a) < cost(i, b); });
       lower_[i] = lower_[i + 1] + cost(i, o[0]);
     }
     labels_.assign(k, -1);
@@ -116,9 +115,9 @@ EnumerationStats enumerate_configurations(const LocalBall<M>& ball, const LocalP
   return Search<M>(ball, problem, max_leaves, store).run();
 }
 
-#define HEXADAPT_INSTANTIATE(M)                                                              \
-  template LocalProblem local_problem(const LocalBall<M>&, const Fractions&,                 \
-                                      const IdVector<CellId, double>&, int);                 \
+#define HEXADAPT_INSTANTIATE(M)                                                                \
+  template LocalProblem local_problem(const LocalBall<M>&, const Fractions&,                   \
+                                      const IdVector<CellId, double>&, int);                   \
   template EnumerationStats enumerate_configurations(const LocalBall<M>&, const LocalProblem&, \
                                                      std::int64_t, ConfigurationStore&);
 HEXADAPT_INSTANTIATE(QuadMesh)

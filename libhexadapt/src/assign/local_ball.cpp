@@ -35,9 +35,8 @@ template <class M>
 LocalBall<M>::LocalBall(const M& mesh, NodeId n) : node_(n) {
   cells_ = cells_in_geometric_order(mesh, n);
   if (n_cells() > max_cells)
-    throw MeshError("node " + std::to_string(n.value()) + " has " +
-                    std::to_string(n_cells()) + " cells; the assignment supports at most " +
-                    std::to_string(max_cells));
+    throw MeshError("node " + std::to_string(n.value()) + " has " + std::to_string(n_cells()) +
+                    " cells; the assignment supports at most " + std::to_string(max_cells));
   std::vector<NodeId> nodes;
   for (CellId c : cells_)
     for (NodeId v : mesh.cell_nodes(c)) nodes.push_back(v);

@@ -158,7 +158,8 @@ std::vector<NodeId> non_manifold_among(const M& mesh, const Labels& labels,
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   std::vector<char> bad(nodes.size(), 0);
   auto test = [&](std::int64_t i) {
-    bad[static_cast<std::size_t>(i)] = !manifold_node(mesh, labels, nodes[static_cast<std::size_t>(i)]);
+    bad[static_cast<std::size_t>(i)] =
+        !manifold_node(mesh, labels, nodes[static_cast<std::size_t>(i)]);
   };
   const auto n = static_cast<std::int64_t>(nodes.size());
   if (n < 512) {  // a few microseconds of work: not worth waking the threads
@@ -184,12 +185,12 @@ std::vector<NodeId> non_manifold_nodes(const M& mesh, const Labels& labels) {
   return out;
 }
 
-#define HEXADAPT_INSTANTIATE(M)                                                             \
-  template int euler_characteristic(const LocalBall<M>&, const std::vector<int>&, int);     \
-  template bool is_manifold(const LocalBall<M>&, const std::vector<int>&, int);             \
-  template bool is_manifold(const LocalBall<M>&, const std::vector<int>&);                  \
-  template std::vector<int> non_manifold_materials(const M&, const Labels&, NodeId);        \
-  template std::vector<NodeId> non_manifold_nodes(const M&, const Labels&);                 \
+#define HEXADAPT_INSTANTIATE(M)                                                         \
+  template int euler_characteristic(const LocalBall<M>&, const std::vector<int>&, int); \
+  template bool is_manifold(const LocalBall<M>&, const std::vector<int>&, int);         \
+  template bool is_manifold(const LocalBall<M>&, const std::vector<int>&);              \
+  template std::vector<int> non_manifold_materials(const M&, const Labels&, NodeId);    \
+  template std::vector<NodeId> non_manifold_nodes(const M&, const Labels&);             \
   template std::vector<NodeId> non_manifold_among(const M&, const Labels&, std::vector<NodeId>);
 HEXADAPT_INSTANTIATE(QuadMesh)
 HEXADAPT_INSTANTIATE(HexMesh)

@@ -41,7 +41,7 @@ struct CorrectionOptions {
   /// Take the cheapest unused configuration that keeps the node's manifold neighbours
   /// manifold, when one exists; false: strictly the next cheapest (the paper's order).
   bool spare_neighbours = true;
-  Progress progress;      ///< called between rounds; nullptr: silent
+  Progress progress;  ///< called between rounds; nullptr: silent
 };
 
 /// The node whose stored configurations ran out.
@@ -53,20 +53,20 @@ struct CorrectionFailure {
 };
 
 struct CorrectionResult {
-  Labels labels;                        ///< the assignment reached (final when solved)
-  bool solved = false;                  ///< no non-manifold node remains
+  Labels labels;        ///< the assignment reached (final when solved)
+  bool solved = false;  ///< no non-manifold node remains
   std::optional<CorrectionFailure> failure;
-  index_t non_manifold_initial = 0;     ///< nodes non-manifold in the initial assignment
-  int rounds = 0;                       ///< rounds of independent nodes
-  index_t node_solves = 0;              ///< configurations applied (a node may count twice)
-  index_t nodes_treated = 0;            ///< distinct nodes treated
-  int max_visits = 0;                   ///< most configurations used by one node
-  index_t cells_changed = 0;            ///< cells whose material differs from the initial one
-  double cost_initial = 0;              ///< eq. (4) over the mesh, initial assignment
-  double cost_final = 0;                ///< eq. (4) over the mesh, reached assignment
-  std::int64_t leaves = 0;              ///< configurations examined by all enumerations
-  index_t truncated_enumerations = 0;   ///< nodes whose enumeration hit max_leaves
-  PhaseTimes times;                     ///< scan, solve, rescan, totals
+  index_t non_manifold_initial = 0;    ///< nodes non-manifold in the initial assignment
+  int rounds = 0;                      ///< rounds of independent nodes
+  index_t node_solves = 0;             ///< configurations applied (a node may count twice)
+  index_t nodes_treated = 0;           ///< distinct nodes treated
+  int max_visits = 0;                  ///< most configurations used by one node
+  index_t cells_changed = 0;           ///< cells whose material differs from the initial one
+  double cost_initial = 0;             ///< eq. (4) over the mesh, initial assignment
+  double cost_final = 0;               ///< eq. (4) over the mesh, reached assignment
+  std::int64_t leaves = 0;             ///< configurations examined by all enumerations
+  index_t truncated_enumerations = 0;  ///< nodes whose enumeration hit max_leaves
+  PhaseTimes times;                    ///< scan, solve, rescan, totals
 };
 
 /// Corrects `initial` on `mesh`. Throws OptionError for keep or max_materials < 1, and

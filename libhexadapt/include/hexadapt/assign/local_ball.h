@@ -26,7 +26,7 @@ class LocalBall {
   static constexpr int max_local = 1024;  ///< bound on local node and edge ids
 
   struct Face {
-    int neighbour = -1;                                ///< local cell across, -1 if none
+    int neighbour = -1;                                    ///< local cell across, -1 if none
     std::array<std::uint16_t, M::nodes_per_face> nodes{};  ///< local node ids
     std::array<std::uint16_t, M::nodes_per_face> edges{};  ///< local edge ids (3D only)
   };
@@ -47,8 +47,8 @@ class LocalBall {
   /// 3D: the cells around one edge through the node, and who is next to whom around it
   /// (through the faces holding the edge). Empty in 2D.
   struct Fan {
-    std::uint64_t cells = 0;                  ///< bit i: ball cell i holds the edge
-    std::vector<std::uint64_t> next_to;       ///< per ball cell: its neighbours in the fan
+    std::uint64_t cells = 0;             ///< bit i: ball cell i holds the edge
+    std::vector<std::uint64_t> next_to;  ///< per ball cell: its neighbours in the fan
   };
   const std::vector<Fan>& fans() const { return fans_; }
 
