@@ -76,7 +76,7 @@ std::vector<std::array<NodeId, 4>> structured_quads(int nx, int ny) {
 }
 
 std::vector<std::array<NodeId, 8>> structured_hexes(int nx, int ny, int nz) {
-  check_counts({nx, ny, nz});
+  check_counts({nx, ny, nz});  // nz == 0 would ask append_structured_cells for quads
   std::vector<NodeId> flat;
   append_structured_cells(nx, ny, nz, flat);
   return grouped<8>(flat);
