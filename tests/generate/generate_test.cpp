@@ -72,8 +72,8 @@ TEST(Generate, ExtrusionRepeatsTheFractionsInEveryLayer) {
 }
 
 TEST(Generate, ExtrudedHexesAreWellFormed) {
-  const QuadMesh q = make_quad_grid(3, 2);
-  const HexMesh h = extrude(q, 2, 0.5);
+  const io::MeshData q = io::from_mesh(make_quad_grid(3, 2));
+  const HexMesh h = std::get<HexMesh>(io::to_mesh(extrude(q, 2, 0.5)));
   EXPECT_EQ(h.n_cells(), 12);
   EXPECT_EQ(h.n_nodes(), 12 * 3);
   for (CellId c : id_range<CellId>(h.n_cells())) {
@@ -83,6 +83,7 @@ TEST(Generate, ExtrudedHexesAreWellFormed) {
   EXPECT_FALSE(h.neighbour(CellId(0), 4).valid());
   EXPECT_EQ(h.neighbour(CellId(0), 5), CellId(6));
   EXPECT_THROW(extrude(q, 0, 1), OptionError);
+  EXPECT_THROW(extrude(io::from_mesh(h), 1, 1), OptionError);
 }
 
 TEST(Generate, BoundsAndDimsAreChecked) {

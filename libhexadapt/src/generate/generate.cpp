@@ -5,8 +5,9 @@
 #include <string>
 
 #include "hexadapt/core/error.h"
+#include "hexadapt/core/parallel.h"
+#include "cells.h"
 #include "hexadapt/generate/extrusion.h"
-#include "hexadapt/mesh/cell_complex.h"
 #include "hexadapt/mesh/structured.h"
 
 namespace hexadapt::generate {
@@ -39,41 +40,47 @@ Bounds pick_bounds(const CaseDefaults& d, const GenerateOptions& o, int dim) {
   return b;
 }
 
-/// Sample, then package: the part that is the same for 2D and 3D.
-template <class M>
-void sample_into(const M& mesh, const Case& c, const Scene& scene, const GenerateOptions& o,
-                 GenerateResult& r, Fractions& fractions) {
-  SamplingOptions so;
-  so.samples = o.samples;
-  so.time = r.time;
-  so.steps = o.steps;
-  so.progress = o.progress;
-  SamplingResult s = sample_fractions(mesh, scene, c.materials, so);
-  r.steps = s.steps;
-  r.shortcut_cells = s.shortcut_cells;
-  r.sampled_cells = s.sampled_cells;
-  r.mixed_cells = s.mixed_cells;
-  r.volumes = s.volumes;
-  r.times.emplace_back("sample", s.seconds);
-  fractions = std::move(s.fractions);
+/// A Cartesian grid as mesh data (structured ids, see structured.h), without a kernel.
+io::MeshData grid_data(int dim, const std::array<int, 3>& n, const Vec3& lo, const Vec3& step) {
+  io::MeshData d;
+  d.dim = dim;
+  const int nz = dim == 3 ? n[2] : 0;
+  for (int k = 0; k <= nz; ++k)
+    for (int j = 0; j <= n[1]; ++j)
+      for (int i = 0; i <= n[0]; ++i)
+        d.points.push_back(lo + Vec3(i * step.x(), j * step.y(), dim == 3 ? k * step.z() : 0.0));
+  if (dim == 2) {
+    for (const auto& c : structured_quads(n[0], n[1])) d.cells.insert(d.cells.end(), c.begin(), c.end());
+  } else {
+    for (const auto& c : structured_hexes(n[0], n[1], n[2]))
+      d.cells.insert(d.cells.end(), c.begin(), c.end());
+  }
+  d.structured_cells = {n[0], n[1], nz};
+  return d;
 }
 
-template <class M>
-void add_arrays(const M& mesh, const Fractions& f, GenerateResult& r) {
-  const index_t nf = f.n_cells();
+/// Cell arrays, per-material volumes and the minimum quality of the output mesh. Per-cell
+/// values in parallel, sums in cell order (deterministic). Extruded layers repeat the
+/// sampled cells.
+void add_arrays(const Fractions& f, GenerateResult& r) {
+  io::MeshData& d = r.data;
+  const auto nf = static_cast<std::size_t>(f.n_cells());
+  std::vector<double> volume(static_cast<std::size_t>(d.n_cells()));
+  parallel_for(d.n_cells(), [&](std::int64_t i) {
+    volume[static_cast<std::size_t>(i)] = detail::cell_volume(d, static_cast<std::size_t>(i));
+  });
   r.volumes.assign(r.materials.size(), 0.0);
   for (int m = 0; m < f.n_materials(); ++m) {
     io::DataArray a;
     a.name = "vf_" + r.materials[static_cast<std::size_t>(m)];
-    a.values.resize(static_cast<std::size_t>(mesh.n_cells()));
-    for (CellId c : id_range<CellId>(mesh.n_cells())) {
-      const double v = f(CellId(c.value() % nf), m);  // extruded layers repeat the 2D cells
-      a.values[c.idx()] = v;
-      r.volumes[static_cast<std::size_t>(m)] += v * mesh.cell_volume(c);
+    a.values.resize(volume.size());
+    for (std::size_t c = 0; c < volume.size(); ++c) {
+      a.values[c] = f(CellId(c % nf), m);
+      r.volumes[static_cast<std::size_t>(m)] += a.values[c] * volume[c];
     }
-    r.data.set_cell_array(std::move(a));
+    d.set_cell_array(std::move(a));
   }
-  r.min_quality = min_quality(mesh);
+  r.min_quality = min_scaled_jacobian(d);
 }
 
 void add_metadata(const Case& c, const GenerateOptions& o, const Bounds& b, GenerateResult& r) {
@@ -116,37 +123,31 @@ GenerateResult generate(const GenerateOptions& o) {
   jo.amplitude = o.jitter;
   jo.min_quality = o.jitter_floor;
   jo.seed = o.seed;
-  Fractions f;
-  const Vec3 spacing = (b.hi - b.lo).cwiseQuotient(
-      Vec3(n[0], n[1], dim == 3 ? n[2] : 1));
-  if (dim == 2) {
-    QuadMesh mesh = make_quad_grid(n[0], n[1], b.lo, spacing);
-    Timer t;
-    if (o.jitter > 0) r.jitter = jitter_nodes(mesh, jo);
-    r.times.emplace_back("jitter", t.seconds());
-    sample_into(mesh, c, scene, o, r, f);
-    if (o.extrude > 0) {
-      t.restart();
-      const HexMesh hex = extrude(mesh, o.extrude, std::min(spacing.x(), spacing.y()));
-      r.data = io::from_mesh(hex);
-      r.data.structured_cells = {n[0], n[1], o.extrude};
-      add_arrays(hex, f, r);
-      r.times.emplace_back("extrude", t.seconds());
-    } else {
-      r.data = io::from_mesh(mesh);
-      r.data.structured_cells = {n[0], n[1], 0};
-      add_arrays(mesh, f, r);
-    }
-  } else {
-    HexMesh mesh = make_hex_grid(n[0], n[1], n[2], b.lo, spacing);
-    Timer t;
-    if (o.jitter > 0) r.jitter = jitter_nodes(mesh, jo);
-    r.times.emplace_back("jitter", t.seconds());
-    sample_into(mesh, c, scene, o, r, f);
-    r.data = io::from_mesh(mesh);
-    r.data.structured_cells = n;
-    add_arrays(mesh, f, r);
+  const Vec3 spacing =
+      (b.hi - b.lo).cwiseQuotient(Vec3(n[0], n[1], dim == 3 ? n[2] : 1));
+  r.data = grid_data(dim, n, b.lo, spacing);
+  Timer t;
+  if (o.jitter > 0) r.jitter = jitter_nodes(r.data, jo);
+  r.times.emplace_back("jitter", t.seconds());
+  SamplingOptions so;
+  so.samples = o.samples;
+  so.time = r.time;
+  so.steps = o.steps;
+  so.progress = o.progress;
+  SamplingResult s = sample_fractions(r.data, scene, c.materials, so);
+  r.steps = s.steps;
+  r.shortcut_cells = s.shortcut_cells;
+  r.sampled_cells = s.sampled_cells;
+  r.mixed_cells = s.mixed_cells;
+  r.times.emplace_back("sample", s.seconds);
+  t.restart();
+  if (o.extrude > 0) {
+    io::MeshData thick = extrude(r.data, o.extrude, std::min(spacing.x(), spacing.y()));
+    thick.structured_cells = {n[0], n[1], o.extrude};
+    r.data = std::move(thick);
   }
+  add_arrays(s.fractions, r);
+  r.times.emplace_back("package", t.seconds());
   add_metadata(c, o, b, r);
   return r;
 }

@@ -7,7 +7,7 @@
 #include "hexadapt/core/error.h"
 #include "hexadapt/core/parallel.h"
 #include "hexadapt/core/timer.h"
-#include "hexadapt/mesh/cell_complex.h"
+#include "cells.h"
 
 namespace hexadapt::generate {
 
@@ -18,13 +18,11 @@ constexpr double quantum = 0x1.0p-40;  // fractions are multiples of this: exact
 
 using Weights = std::array<double, max_materials>;
 
-/// The cell's corners in binary lattice order (v = i + 2j + 4k) whatever the kernel.
-template <class M>
-std::array<Vec3, M::nodes_per_cell> binary_corners(const M& mesh, CellId c) {
-  const auto nodes = mesh.cell_nodes(c);
-  std::array<Vec3, M::nodes_per_cell> p;
-  for (std::size_t v = 0; v < p.size(); ++v) p[v] = mesh.point(nodes[v]);
-  if constexpr (M::dim == 2) std::swap(p[2], p[3]);  // ccw 0 1 2 3 -> binary 0 1 3 2
+/// The cell's corners in binary lattice order (v = i + 2j + 4k) in 2D and 3D.
+template <int D>
+std::array<Vec3, (1 << D)> binary_corners(const io::MeshData& mesh, CellId c) {
+  auto p = detail::cell_corners<D>(mesh, c.idx());
+  if constexpr (D == 2) std::swap(p[2], p[3]);  // ccw 0 1 2 3 -> binary 0 1 3 2
   return p;
 }
 
@@ -73,15 +71,22 @@ struct CellCounts {
   bool mixed = false;
 };
 
+/// The sampler of D-dimensional cells; M::dim and M::nodes_per_cell as in the kernels.
+template <int D>
+struct Dim {
+  static constexpr int dim = D;
+  static constexpr int nodes_per_cell = 1 << D;
+};
+
 template <class M>
 class Sampler {
  public:
-  Sampler(const M& mesh, const Scene& scene, int n_materials, const SamplingOptions& o, int steps)
+  Sampler(const io::MeshData& mesh, const Scene& scene, int n_materials, const SamplingOptions& o, int steps)
       : mesh_(mesh), scene_(scene), n_(n_materials), s_(o.samples), time_(o.time),
         steps_(steps), shortcut_(o.shortcut) {}
 
   CellCounts run(CellId c, Fractions& out) const {
-    const auto p = binary_corners(mesh_, c);
+    const auto p = binary_corners<M::dim>(mesh_, c);
     Vec3 centre = Vec3::Zero();
     for (const auto& q : p) centre += q;
     centre /= static_cast<double>(p.size());
@@ -95,6 +100,44 @@ class Sampler {
     }
     Weights w{};
     const int n_samples = ipow(s_, M::dim);
+    if (is_affine(p)) {
+      sample_affine(p, moves, w);
+    } else {
+      sample_general(p, moves, w, n_samples);
+    }
+    set_row(out, c, w, n_);
+    return {false, !out.is_pure(c)};
+  }
+
+ private:
+  /// Parallelograms (parallelepipeds): x = p0 + sum xi_a e_a, constant Jacobian, so equal
+  /// weights (the common Cartesian case, without the multilinear map per sample).
+  static bool is_affine(const std::array<Vec3, M::nodes_per_cell>& p) {
+    const double tol = 1e-12 * ((p.back() - p.front()).norm() + 1e-300);
+    if ((p[3] - p[2] - p[1] + p[0]).norm() > tol) return false;
+    if constexpr (M::dim == 3)
+      for (int v = 4; v < 8; ++v)
+        if ((p[static_cast<std::size_t>(v)] - p[static_cast<std::size_t>(v - 4)] - p[4] + p[0]).norm() > tol)
+          return false;
+    return true;
+  }
+  void sample_affine(const std::array<Vec3, M::nodes_per_cell>& p, bool moves, Weights& w) const {
+    std::array<Vec3, 3> e;
+    for (int a = 0; a < M::dim; ++a) e[static_cast<std::size_t>(a)] = (p[static_cast<std::size_t>(1 << a)] - p[0]) / s_;
+    std::array<int, max_materials> count{};
+    const Vec3 base = p[0] + 0.5 * (e[0] + e[1] + (M::dim == 3 ? e[2] : Vec3::Zero()));
+    for (int k = 0; k < (M::dim == 3 ? s_ : 1); ++k)
+      for (int j = 0; j < s_; ++j)
+        for (int i = 0; i < s_; ++i) {
+          Vec3 x = base + i * e[0] + j * e[1];
+          if constexpr (M::dim == 3) x += k * e[2];
+          if (moves) x = trace_back(*scene_.flow, x, time_, steps_);
+          ++count[static_cast<std::size_t>(scene_.layout.material_at(x))];
+        }
+    for (int m = 0; m < n_; ++m) w[static_cast<std::size_t>(m)] = count[static_cast<std::size_t>(m)];
+  }
+  void sample_general(const std::array<Vec3, M::nodes_per_cell>& p, bool moves, Weights& w,
+                      int n_samples) const {
     for (int i = 0; i < n_samples; ++i) {
       double xi[3] = {0, 0, 0};
       for (int a = 0, r = i; a < M::dim; ++a, r /= s_) xi[a] = (r % s_ + 0.5) / s_;
@@ -104,11 +147,7 @@ class Sampler {
       if (moves) x = trace_back(*scene_.flow, x, time_, steps_);
       w[static_cast<std::size_t>(scene_.layout.material_at(x))] += det;
     }
-    set_row(out, c, w, n_);
-    return {false, !out.is_pure(c)};
   }
-
- private:
   static int ipow(int b, int e) {
     int r = 1;
     for (int i = 0; i < e; ++i) r *= b;
@@ -118,7 +157,7 @@ class Sampler {
     return scene_.flow && time_ != 0 && !scene_.flow->still_in(centre, radius);
   }
 
-  const M& mesh_;
+  const io::MeshData& mesh_;
   const Scene& scene_;
   int n_, s_;
   double time_;
@@ -128,8 +167,27 @@ class Sampler {
 
 }  // namespace
 
+namespace {
+
 template <class M>
-SamplingResult sample_fractions(const M& mesh, const Scene& scene,
+void sample_cells(const io::MeshData& mesh, const Sampler<M>& sampler, const Progress& progress,
+                  Fractions& fractions, std::vector<CellCounts>& counts) {
+  const std::int64_t n_cells = mesh.n_cells();
+  const std::int64_t block = std::max<std::int64_t>(4096, n_cells / 64);
+  for (std::int64_t begin = 0; begin < n_cells; begin += block) {
+    const std::int64_t count = std::min(block, n_cells - begin);
+    parallel_for(count, [&](std::int64_t i) {
+      const CellId c(begin + i);
+      counts[c.idx()] = sampler.run(c, fractions);
+    });
+    if (progress)
+      progress("sampling", static_cast<double>(begin + count) / static_cast<double>(n_cells));
+  }
+}
+
+}  // namespace
+
+SamplingResult sample_fractions(const io::MeshData& mesh, const Scene& scene,
                                 const std::vector<std::string>& materials,
                                 const SamplingOptions& options) {
   if (options.samples < 1 || options.samples > 64)
@@ -145,38 +203,21 @@ SamplingResult sample_fractions(const M& mesh, const Scene& scene,
   res.fractions = Fractions(mesh.n_cells(), materials);
   if (scene.flow && options.time != 0)
     res.steps = options.steps > 0 ? options.steps : automatic_steps(*scene.flow, options.time);
-  const Sampler<M> sampler(mesh, scene, n, options, res.steps);
-
+  if (mesh.dim != 2 && mesh.dim != 3) throw OptionError("sampling needs quads or hexes");
   std::vector<CellCounts> counts(static_cast<std::size_t>(mesh.n_cells()));
-  const std::int64_t n_cells = mesh.n_cells();
-  const std::int64_t block = std::max<std::int64_t>(4096, n_cells / 64);
-  for (std::int64_t begin = 0; begin < n_cells; begin += block) {
-    const std::int64_t count = std::min(block, n_cells - begin);
-    parallel_for(count, [&](std::int64_t i) {
-      const CellId c(begin + i);
-      counts[c.idx()] = sampler.run(c, res.fractions);
-    });
-    if (options.progress)
-      options.progress("sampling", static_cast<double>(begin + count) / static_cast<double>(n_cells));
-  }
+  if (mesh.dim == 2)
+    sample_cells(mesh, Sampler<Dim<2>>(mesh, scene, n, options, res.steps), options.progress,
+                 res.fractions, counts);
+  else
+    sample_cells(mesh, Sampler<Dim<3>>(mesh, scene, n, options, res.steps), options.progress,
+                 res.fractions, counts);
 
-  res.volumes.assign(materials.size(), 0.0);
-  for (CellId c : id_range<CellId>(mesh.n_cells())) {
-    const auto& k = counts[c.idx()];
+  for (const auto& k : counts) {
     (k.shortcut ? res.shortcut_cells : res.sampled_cells)++;
     if (k.mixed) ++res.mixed_cells;
-    const double vol = mesh.cell_volume(c);
-    for (int m = 0; m < n; ++m) res.volumes[static_cast<std::size_t>(m)] += res.fractions(c, m) * vol;
   }
   res.seconds = timer.seconds();
   return res;
 }
-
-template SamplingResult sample_fractions<QuadMesh>(const QuadMesh&, const Scene&,
-                                                   const std::vector<std::string>&,
-                                                   const SamplingOptions&);
-template SamplingResult sample_fractions<HexMesh>(const HexMesh&, const Scene&,
-                                                  const std::vector<std::string>&,
-                                                  const SamplingOptions&);
 
 }  // namespace hexadapt::generate

@@ -5,13 +5,13 @@
 // l * n_nodes + n, so per-cell data of the quad mesh repeats layer after layer.
 #pragma once
 
-#include "hexadapt/mesh/hex_mesh.h"
-#include "hexadapt/mesh/quad_mesh.h"
+#include "hexadapt/io/mesh_data.h"
 
 namespace hexadapt::generate {
 
-/// `layers` layers of thickness `thickness` from z = z0. Throws OptionError when layers < 1
-/// or thickness <= 0.
-HexMesh extrude(const QuadMesh& mesh, int layers, double thickness, double z0 = 0);
+/// The points and hexes of `quads` (dim 2) swept into `layers` layers of thickness
+/// `thickness` from z = z0 (no arrays). Throws OptionError when layers < 1, thickness <= 0
+/// or the data is not 2D.
+io::MeshData extrude(const io::MeshData& quads, int layers, double thickness, double z0 = 0);
 
 }  // namespace hexadapt::generate

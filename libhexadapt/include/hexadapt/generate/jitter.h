@@ -15,6 +15,7 @@
 #include <cstdint>
 
 #include "hexadapt/core/ids.h"
+#include "hexadapt/io/mesh_data.h"
 
 namespace hexadapt::generate {
 
@@ -31,9 +32,11 @@ struct JitterResult {
   double min_quality = 1;     ///< smallest cell scaled Jacobian after jitter
 };
 
-/// Moves the nodes of `mesh` in place (M = QuadMesh or HexMesh). Throws OptionError when the
+/// Moves the points of `mesh` (quads or hexes) in place. Throws OptionError when the
 /// amplitude or floor is out of range or the mesh is already below the floor.
-template <class M>
-JitterResult jitter_nodes(M& mesh, const JitterOptions& options);
+JitterResult jitter_nodes(io::MeshData& mesh, const JitterOptions& options);
+
+/// The smallest scaled Jacobian over the cells of `mesh` (1 when it has none).
+double min_scaled_jacobian(const io::MeshData& mesh);
 
 }  // namespace hexadapt::generate

@@ -19,6 +19,7 @@
 #include "hexadapt/core/log.h"
 #include "hexadapt/generate/flows.h"
 #include "hexadapt/generate/shapes.h"
+#include "hexadapt/io/mesh_data.h"
 #include "hexadapt/mesh/fractions.h"
 
 namespace hexadapt::generate {
@@ -43,14 +44,13 @@ struct SamplingResult {
   index_t sampled_cells = 0;   ///< cells whose samples were traced and classified
   index_t mixed_cells = 0;     ///< cells with more than one material
   int steps = 0;               ///< RK4 steps used per sample (0 for a static scene)
-  std::vector<double> volumes; ///< per material: sum over cells of fraction * cell volume
   double seconds = 0;
 };
 
-/// Throws OptionError for a bad sample count or more than 16 materials. M is QuadMesh or
-/// HexMesh; `materials` names the layout's material indices in order.
-template <class M>
-SamplingResult sample_fractions(const M& mesh, const Scene& scene,
+/// Fractions on the cells of `mesh` (quads or hexes in kernel order; io::from_mesh makes one
+/// from a QuadMesh or HexMesh). `materials` names the layout's material indices in order.
+/// Throws OptionError for a bad sample count or more than 16 materials.
+SamplingResult sample_fractions(const io::MeshData& mesh, const Scene& scene,
                                 const std::vector<std::string>& materials,
                                 const SamplingOptions& options);
 
