@@ -21,13 +21,13 @@ TEST(Generate, EveryCaseRunsInEachOfItsDimensions) {
   for (const auto& c : cases()) {
     for (int dim : {2, 3}) {
       if (!c.defaults(dim).available) {
-        EXPECT_THROW(generate(options(c.name, dim == 2 ? std::vector<int>{4, 4}
-                                                       : std::vector<int>{4, 4, 4})),
+        EXPECT_THROW(generate(options(
+                         c.name, dim == 2 ? std::vector<int>{4, 4} : std::vector<int>{4, 4, 4})),
                      OptionError);
         continue;
       }
-      const auto r = generate(options(c.name, dim == 2 ? std::vector<int>{16, 12}
-                                                       : std::vector<int>{8, 7, 6}));
+      const auto r = generate(
+          options(c.name, dim == 2 ? std::vector<int>{16, 12} : std::vector<int>{8, 7, 6}));
       EXPECT_EQ(r.data.dim, dim);
       EXPECT_EQ(r.data.n_cells(), dim == 2 ? 16 * 12 : 8 * 7 * 6);
       ASSERT_EQ(r.data.cell_data.size(), c.materials.size());

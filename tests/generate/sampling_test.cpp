@@ -87,12 +87,12 @@ TEST(Sampling, FlowsPreserveVolumes) {
   };
   const double disk = pi * 0.15 * 0.15, drop = pi * 0.13 * 0.13;
   const double ball = 4.0 / 3 * pi * std::pow(0.15, 3), drop3 = 4.0 / 3 * pi * std::pow(0.13, 3);
-  for (const C& c : {C{"vortex", {32, 32}, 4, {1 - disk, disk}, 2 * pi * 0.15},
-                     C{"stir", {64, 32}, 4, {2.0 / 3, 2.0 / 3, 2.0 / 3}, 4.0},
-                     C{"balldrop", {32, 32}, 4, {0.65 - drop, 0.35, drop}, 1 + 2 * pi * 0.13},
-                     C{"vortex", {10, 10, 10}, 3, {1 - ball, ball}, 4 * pi * 0.15 * 0.15},
-                     C{"balldrop", {10, 10, 10}, 3, {0.65 - drop3, 0.35, drop3},
-                       1 + 4 * pi * 0.13 * 0.13}}) {
+  for (const C& c :
+       {C{"vortex", {32, 32}, 4, {1 - disk, disk}, 2 * pi * 0.15},
+        C{"stir", {64, 32}, 4, {2.0 / 3, 2.0 / 3, 2.0 / 3}, 4.0},
+        C{"balldrop", {32, 32}, 4, {0.65 - drop, 0.35, drop}, 1 + 2 * pi * 0.13},
+        C{"vortex", {10, 10, 10}, 3, {1 - ball, ball}, 4 * pi * 0.15 * 0.15},
+        C{"balldrop", {10, 10, 10}, 3, {0.65 - drop3, 0.35, drop3}, 1 + 4 * pi * 0.13 * 0.13}}) {
     const double h = 1.0 / c.dims[1], delta = h / c.s;
     const double tube = 1.01 * delta * std::sqrt(static_cast<double>(c.dims.size())) * c.interface;
     for (double t : {0.0, 0.7}) {
@@ -150,7 +150,8 @@ TEST(Sampling, ShortcutGivesTheSameFractionsAsFullSampling) {
   for (const char* name : {"disk", "triple-point", "balldrop"}) {
     const Case& c = find_case(name);
     const Scene scene = c.build(2, 1);
-    const io::MeshData mesh = io::from_mesh(make_quad_grid(24, 20, Vec3::Zero(), Vec3(0.3, 0.15, 1)));
+    const io::MeshData mesh =
+        io::from_mesh(make_quad_grid(24, 20, Vec3::Zero(), Vec3(0.3, 0.15, 1)));
     SamplingOptions o;
     o.samples = 3;
     o.time = 0.7;

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 #include <memory>
-
 #include <random>
 
 namespace hexadapt::generate {

@@ -13,7 +13,9 @@ constexpr double inf = std::numeric_limits<double>::infinity();
 constexpr double pi = 3.141592653589793;
 
 /// A point of the case's plane (2D: z = 0) or space.
-Vec3 at(int dim, double x, double y, double z) { return {x, y, dim == 3 ? z : 0.0}; }
+Vec3 at(int dim, double x, double y, double z) {
+  return {x, y, dim == 3 ? z : 0.0};
+}
 
 template <class P, class... A>
 std::shared_ptr<const Primitive> make(A&&... a) {
@@ -40,14 +42,18 @@ Scene venn_of(int dim, int count) {
   for (int i = 0; i < count; ++i) {
     const double angle = pi / 2 + 2 * pi * i / count + (count == 4 ? 0.2 : 0.0);
     const double z = 0.5 + (count == 4 && dim == 3 ? 0.06 * (i % 2 ? 1 : -1) : 0.0);
-    s.layout.paint(i + 1, make<Ball>(at(dim, 0.5 + dist * std::cos(angle),
-                                         0.5 + dist * std::sin(angle), z),
-                                      radius));
+    s.layout.paint(
+        i + 1,
+        make<Ball>(at(dim, 0.5 + dist * std::cos(angle), 0.5 + dist * std::sin(angle), z), radius));
   }
   return s;
 }
-Scene venn3(int dim, std::uint64_t) { return venn_of(dim, 3); }
-Scene venn4(int dim, std::uint64_t) { return venn_of(dim, 4); }
+Scene venn3(int dim, std::uint64_t) {
+  return venn_of(dim, 3);
+}
+Scene venn4(int dim, std::uint64_t) {
+  return venn_of(dim, 4);
+}
 
 // Zalesak's disk: radius 0.15 at (0.5, 0.75), a slot 0.05 wide cut up to y = 0.85.
 Scene slotted_disk(int dim, std::uint64_t) {
@@ -124,26 +130,76 @@ std::vector<Case> make_cases() {
   const CaseDefaults st{true, {128, 64, 0}, {Vec3(0, 0, 0), Vec3(2, 1, 0)}, 0.75};
   return {
       {"disk", "a disk of radius 0.31 (2D)", {"outside", "disk"}, square(64), none, false, disk},
-      {"sphere", "a sphere of radius 0.31 (3D)", {"outside", "sphere"}, none, cube(32), false,
+      {"sphere",
+       "a sphere of radius 0.31 (3D)",
+       {"outside", "sphere"},
+       none,
+       cube(32),
+       false,
        disk},
-      {"venn", "three overlapping disks or spheres, later ones on top",
-       {"outside", "a", "b", "c"}, square(64), cube(32), false, venn3},
-      {"venn4", "four overlapping disks or spheres: five materials",
-       {"outside", "a", "b", "c", "d"}, square(64), cube(32), false, venn4},
-      {"slotted-disk", "Zalesak's slotted disk (a slotted sphere in 3D)", {"outside", "disk"},
-       square(100), cube(48), false, slotted_disk},
-      {"asteroid", "a sphere with seeded low-frequency surface noise and a core (3D)",
-       {"space", "rock", "core"}, none, cube(48), false, asteroid},
-      {"layers", "three layers with wavy interfaces", {"bottom", "middle", "top"}, square(64),
-       cube(32), false, layers},
-      {"triple-point", "the triple-point problem's three regions rolled up by a vortex",
-       {"left", "bottom", "top"}, tp, none, true, triple_point},
-      {"stir", "three layers stirred by two counter-rotating vortices",
-       {"bottom", "middle", "top"}, st, none, true, stir},
-      {"vortex", "a disk in the single-vortex flow (2D), a sphere in LeVeque's flow (3D)",
-       {"outside", "fluid"}, square(128, 3.0), cube(48, 1.5), true, vortex},
-      {"balldrop", "a drop above a pool, pulled down by a circulation",
-       {"air", "pool", "drop"}, square(128, 0.5), cube(48, 0.5), true, balldrop},
+      {"venn",
+       "three overlapping disks or spheres, later ones on top",
+       {"outside", "a", "b", "c"},
+       square(64),
+       cube(32),
+       false,
+       venn3},
+      {"venn4",
+       "four overlapping disks or spheres: five materials",
+       {"outside", "a", "b", "c", "d"},
+       square(64),
+       cube(32),
+       false,
+       venn4},
+      {"slotted-disk",
+       "Zalesak's slotted disk (a slotted sphere in 3D)",
+       {"outside", "disk"},
+       square(100),
+       cube(48),
+       false,
+       slotted_disk},
+      {"asteroid",
+       "a sphere with seeded low-frequency surface noise and a core (3D)",
+       {"space", "rock", "core"},
+       none,
+       cube(48),
+       false,
+       asteroid},
+      {"layers",
+       "three layers with wavy interfaces",
+       {"bottom", "middle", "top"},
+       square(64),
+       cube(32),
+       false,
+       layers},
+      {"triple-point",
+       "the triple-point problem's three regions rolled up by a vortex",
+       {"left", "bottom", "top"},
+       tp,
+       none,
+       true,
+       triple_point},
+      {"stir",
+       "three layers stirred by two counter-rotating vortices",
+       {"bottom", "middle", "top"},
+       st,
+       none,
+       true,
+       stir},
+      {"vortex",
+       "a disk in the single-vortex flow (2D), a sphere in LeVeque's flow (3D)",
+       {"outside", "fluid"},
+       square(128, 3.0),
+       cube(48, 1.5),
+       true,
+       vortex},
+      {"balldrop",
+       "a drop above a pool, pulled down by a circulation",
+       {"air", "pool", "drop"},
+       square(128, 0.5),
+       cube(48, 0.5),
+       true,
+       balldrop},
   };
 }
 

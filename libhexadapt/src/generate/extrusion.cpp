@@ -8,7 +8,8 @@ namespace hexadapt::generate {
 
 io::MeshData extrude(const io::MeshData& quads, int layers, double thickness, double z0) {
   if (quads.dim != 2) throw OptionError("extrusion sweeps quads: the mesh is not 2D");
-  if (layers < 1) throw OptionError("extrusion needs at least one layer, got " + std::to_string(layers));
+  if (layers < 1)
+    throw OptionError("extrusion needs at least one layer, got " + std::to_string(layers));
   if (!(thickness > 0)) throw OptionError("extrusion layer thickness must be positive");
   const std::size_t nn = quads.points.size(), nq = static_cast<std::size_t>(quads.n_cells());
   const auto n_layers = static_cast<std::size_t>(layers);
@@ -25,8 +26,8 @@ io::MeshData extrude(const io::MeshData& quads, int layers, double thickness, do
     for (std::size_t c = 0; c < nq; ++c)
       for (std::size_t layer : {l, l + 1})
         for (std::size_t k : binary)
-          out.cells.push_back(NodeId(static_cast<std::int64_t>(layer * nn) +
-                                     quads.cells[4 * c + k].value()));
+          out.cells.push_back(
+              NodeId(static_cast<std::int64_t>(layer * nn) + quads.cells[4 * c + k].value()));
   return out;
 }
 

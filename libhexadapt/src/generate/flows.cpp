@@ -10,7 +10,9 @@ namespace hexadapt::generate {
 namespace {
 constexpr double pi = 3.141592653589793;
 
-double square(double x) { return x * x; }
+double square(double x) {
+  return x * x;
+}
 
 double horizontal_distance(const Vec3& a, const Vec3& b) {
   return std::hypot(a.x() - b.x(), a.y() - b.y());
@@ -23,7 +25,9 @@ Vec3 SingleVortex::velocity(const Vec3& p, double t) const {
   return {-sx * sx * std::sin(2 * pi * p.y()) * g, std::sin(2 * pi * p.x()) * sy * sy * g, 0.0};
 }
 
-double SingleVortex::rate() const { return 2 * pi; }
+double SingleVortex::rate() const {
+  return 2 * pi;
+}
 
 Vec3 Deformation3D::velocity(const Vec3& p, double t) const {
   const double g = std::cos(pi * t / period_);
@@ -34,7 +38,9 @@ Vec3 Deformation3D::velocity(const Vec3& p, double t) const {
           -s2x * s2y * square(std::sin(pi * p.z())) * g};
 }
 
-double Deformation3D::rate() const { return 4 * pi; }
+double Deformation3D::rate() const {
+  return 4 * pi;
+}
 
 Vec3 CompactVortex::velocity(const Vec3& p, double) const {
   const double dx = p.x() - centre_.x(), dy = p.y() - centre_.y();
@@ -45,7 +51,9 @@ Vec3 CompactVortex::velocity(const Vec3& p, double) const {
 }
 
 // |grad u| <= |omega| + max r |omega'(r)| = |omega| (1 + 6 max s (1 - s)^2) < 2 |omega|.
-double CompactVortex::rate() const { return 2 * std::abs(omega_); }
+double CompactVortex::rate() const {
+  return 2 * std::abs(omega_);
+}
 
 bool CompactVortex::still_in(const Vec3& c, double r) const {
   return horizontal_distance(c, centre_) >= radius_ + r;
@@ -74,7 +82,9 @@ Vec3 DropFlow::velocity(const Vec3& p, double) const {
 }
 
 // The velocity gradient scales as speed / R; the factor covers the profile's derivatives.
-double DropFlow::rate() const { return 12 * std::abs(a_) * (dim_ - 1) / radius_; }
+double DropFlow::rate() const {
+  return 12 * std::abs(a_) * (dim_ - 1) / radius_;
+}
 
 bool DropFlow::still_in(const Vec3& c, double r) const {
   Vec3 d = c - centre_;

@@ -4,9 +4,9 @@
 #include <cstdio>
 #include <string>
 
+#include "cells.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/core/parallel.h"
-#include "cells.h"
 #include "hexadapt/generate/extrusion.h"
 #include "hexadapt/mesh/structured.h"
 
@@ -52,7 +52,8 @@ io::MeshData grid_data(int dim, const std::array<int, 3>& n, const Vec3& lo, con
       for (int i = 0; i <= n[0]; ++i)
         d.points.push_back(lo + Vec3(i * step.x(), j * step.y(), dim == 3 ? k * step.z() : 0.0));
   if (dim == 2) {
-    for (const auto& c : structured_quads(n[0], n[1])) d.cells.insert(d.cells.end(), c.begin(), c.end());
+    for (const auto& c : structured_quads(n[0], n[1]))
+      d.cells.insert(d.cells.end(), c.begin(), c.end());
   } else {
     for (const auto& c : structured_hexes(n[0], n[1], n[2]))
       d.cells.insert(d.cells.end(), c.begin(), c.end());
@@ -127,8 +128,7 @@ GenerateResult generate(const GenerateOptions& o) {
   jo.amplitude = o.jitter;
   jo.min_quality = o.jitter_floor;
   jo.seed = o.seed;
-  const Vec3 spacing =
-      (b.hi - b.lo).cwiseQuotient(Vec3(n[0], n[1], dim == 3 ? n[2] : 1));
+  const Vec3 spacing = (b.hi - b.lo).cwiseQuotient(Vec3(n[0], n[1], dim == 3 ? n[2] : 1));
   Timer t;
   r.data = grid_data(dim, n, b.lo, spacing);
   r.times.emplace_back("grid", t.seconds());

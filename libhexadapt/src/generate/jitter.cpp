@@ -50,8 +50,9 @@ std::vector<Vec3> displacements(const io::MeshData& mesh, const JitterOptions& o
     if (!std::isfinite(h[k])) return;  // a node no cell uses
     for (int a = 0; a < mesh.dim; ++a) {
       if (p[a] == lo[a] || p[a] == hi[a]) continue;  // stays on the boundary
-      d[k][a] = o.amplitude * h[k] *
-                detail::symmetric(o.seed, static_cast<std::uint64_t>(a), static_cast<std::uint64_t>(i));
+      d[k][a] =
+          o.amplitude * h[k] *
+          detail::symmetric(o.seed, static_cast<std::uint64_t>(a), static_cast<std::uint64_t>(i));
     }
   });
   return d;

@@ -4,10 +4,10 @@
 #include <array>
 #include <cmath>
 
+#include "cells.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/core/parallel.h"
 #include "hexadapt/core/timer.h"
-#include "cells.h"
 
 namespace hexadapt::generate {
 
@@ -42,7 +42,8 @@ void cell_map(const std::array<Vec3, (1 << D)>& p, const double* xi, Vec3& x, do
       w *= f;
     }
     x += w * p[static_cast<std::size_t>(v)];
-    for (int b = 0; b < D; ++b) jac.col(b) += dw[static_cast<std::size_t>(b)] * p[static_cast<std::size_t>(v)];
+    for (int b = 0; b < D; ++b)
+      jac.col(b) += dw[static_cast<std::size_t>(b)] * p[static_cast<std::size_t>(v)];
   }
   det = D == 2 ? jac(0, 0) * jac(1, 1) - jac(0, 1) * jac(1, 0) : jac.determinant();
 }
@@ -66,24 +67,32 @@ void set_row(Fractions& f, CellId c, const Weights& w, int n) {
   f(c, largest) = rest;
 }
 
+/// How one cell was classified.
 struct CellCounts {
   bool shortcut = false;
   bool mixed = false;
 };
 
-/// The sampler of D-dimensional cells; M::dim and M::nodes_per_cell as in the kernels.
+/// The dimension traits the sampler needs (as QuadMesh / HexMesh name them).
 template <int D>
 struct Dim {
   static constexpr int dim = D;
   static constexpr int nodes_per_cell = 1 << D;
 };
 
+/// Classifies the cells of one dimension M::dim; run() only writes its own cell's row.
 template <class M>
 class Sampler {
  public:
-  Sampler(const io::MeshData& mesh, const Scene& scene, int n_materials, const SamplingOptions& o, int steps)
-      : mesh_(mesh), scene_(scene), n_(n_materials), s_(o.samples), time_(o.time),
-        steps_(steps), shortcut_(o.shortcut) {}
+  Sampler(const io::MeshData& mesh, const Scene& scene, int n_materials, const SamplingOptions& o,
+          int steps)
+      : mesh_(mesh),
+        scene_(scene),
+        n_(n_materials),
+        s_(o.samples),
+        time_(o.time),
+        steps_(steps),
+        shortcut_(o.shortcut) {}
 
   CellCounts run(CellId c, Fractions& out) const {
     const auto p = binary_corners<M::dim>(mesh_, c);
@@ -117,13 +126,15 @@ class Sampler {
     if ((p[3] - p[2] - p[1] + p[0]).norm() > tol) return false;
     if constexpr (M::dim == 3)
       for (int v = 4; v < 8; ++v)
-        if ((p[static_cast<std::size_t>(v)] - p[static_cast<std::size_t>(v - 4)] - p[4] + p[0]).norm() > tol)
+        if ((p[static_cast<std::size_t>(v)] - p[static_cast<std::size_t>(v - 4)] - p[4] + p[0])
+                .norm() > tol)
           return false;
     return true;
   }
   void sample_affine(const std::array<Vec3, M::nodes_per_cell>& p, bool moves, Weights& w) const {
     std::array<Vec3, 3> e;
-    for (int a = 0; a < M::dim; ++a) e[static_cast<std::size_t>(a)] = (p[static_cast<std::size_t>(1 << a)] - p[0]) / s_;
+    for (int a = 0; a < M::dim; ++a)
+      e[static_cast<std::size_t>(a)] = (p[static_cast<std::size_t>(1 << a)] - p[0]) / s_;
     std::array<int, max_materials> count{};
     const Vec3 base = p[0] + 0.5 * (e[0] + e[1] + (M::dim == 3 ? e[2] : Vec3::Zero()));
     for (int k = 0; k < (M::dim == 3 ? s_ : 1); ++k)
@@ -134,7 +145,8 @@ class Sampler {
           if (moves) x = trace_back(*scene_.flow, x, time_, steps_);
           ++count[static_cast<std::size_t>(scene_.layout.material_at(x))];
         }
-    for (int m = 0; m < n_; ++m) w[static_cast<std::size_t>(m)] = count[static_cast<std::size_t>(m)];
+    for (int m = 0; m < n_; ++m)
+      w[static_cast<std::size_t>(m)] = count[static_cast<std::size_t>(m)];
   }
   void sample_general(const std::array<Vec3, M::nodes_per_cell>& p, bool moves, Weights& w,
                       int n_samples) const {
@@ -164,10 +176,6 @@ class Sampler {
   int steps_;
   bool shortcut_;
 };
-
-}  // namespace
-
-namespace {
 
 template <class M>
 void sample_cells(const io::MeshData& mesh, const Sampler<M>& sampler, const Progress& progress,

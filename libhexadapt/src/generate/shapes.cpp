@@ -13,7 +13,9 @@ namespace {
 constexpr double two_pi = 6.283185307179586;
 }
 
-bool Ball::contains(const Vec3& p) const { return (p - centre_).squaredNorm() < radius_ * radius_; }
+bool Ball::contains(const Vec3& p) const {
+  return (p - centre_).squaredNorm() < radius_ * radius_;
+}
 
 double Ball::boundary_distance(const Vec3& p) const {
   return std::abs((p - centre_).norm() - radius_);
@@ -49,7 +51,9 @@ double BelowGraph::height(const Vec3& p) const {
   return level_ + h;
 }
 
-bool BelowGraph::contains(const Vec3& p) const { return p[dim_ - 1] < height(p); }
+bool BelowGraph::contains(const Vec3& p) const {
+  return p[dim_ - 1] < height(p);
+}
 
 double BelowGraph::boundary_distance(const Vec3& p) const {
   // The graph is Lipschitz with constant L: distance >= vertical gap / sqrt(1 + L^2).
@@ -79,7 +83,8 @@ double NoisyBall::surface_radius(const Vec3& p) const {
   const double r = d.norm();
   if (r == 0) return radius_;
   double n = 0;
-  for (const auto& w : waves_) n += w.weight * std::sin(w.frequency * w.direction.dot(d / r) + w.phase);
+  for (const auto& w : waves_)
+    n += w.weight * std::sin(w.frequency * w.direction.dot(d / r) + w.phase);
   return radius_ * (1.0 + amplitude_ * n);
 }
 

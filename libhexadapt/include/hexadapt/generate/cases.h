@@ -26,7 +26,7 @@ struct CaseDefaults {
   bool available = false;
   std::array<int, 3> dims{0, 0, 0};  ///< cells per axis (dims[2] == 0 in 2D)
   Bounds bounds;
-  double time = 0;                   ///< default flow time (0: static case)
+  double time = 0;  ///< default flow time (0: static case)
 };
 
 struct Case {

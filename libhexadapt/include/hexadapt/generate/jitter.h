@@ -20,16 +20,16 @@
 namespace hexadapt::generate {
 
 struct JitterOptions {
-  double amplitude = 0.2;   ///< displacement per axis, times the node's shortest edge, in [0, 0.5)
-  double min_quality = 0.5; ///< every cell keeps scaled Jacobian >= this, in (0, 1]
-  std::uint64_t seed = 1;   ///< random stream
-  int max_halvings = 6;     ///< rounds of halving before a bad cell's nodes are reset
+  double amplitude = 0.2;    ///< displacement per axis, times the node's shortest edge, in [0, 0.5)
+  double min_quality = 0.5;  ///< every cell keeps scaled Jacobian >= this, in (0, 1]
+  std::uint64_t seed = 1;    ///< random stream
+  int max_halvings = 6;      ///< rounds of halving before a bad cell's nodes are reset
 };
 
 struct JitterResult {
-  index_t moved_nodes = 0;    ///< nodes that end away from their start
-  index_t damped_nodes = 0;   ///< nodes whose displacement was reduced for quality
-  double min_quality = 1;     ///< smallest cell scaled Jacobian after jitter
+  index_t moved_nodes = 0;   ///< nodes that end away from their start
+  index_t damped_nodes = 0;  ///< nodes whose displacement was reduced for quality
+  double min_quality = 1;    ///< smallest cell scaled Jacobian after jitter
 };
 
 /// Moves the points of `mesh` (quads or hexes) in place. Throws OptionError when the

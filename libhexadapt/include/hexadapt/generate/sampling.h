@@ -31,11 +31,11 @@ struct Scene {
 };
 
 struct SamplingOptions {
-  int samples = 4;      ///< samples per axis in each cell (s^d per cell), 1..64
-  double time = 0;      ///< flow time: samples are traced back from `time` to 0
-  int steps = 0;        ///< RK4 steps over [0, time]; 0: automatic_steps(flow, time)
-  bool shortcut = true; ///< classify cells far from every interface by their centre
-  Progress progress;    ///< called between blocks of cells, from the calling thread
+  int samples = 4;       ///< samples per axis in each cell (s^d per cell), 1..64
+  double time = 0;       ///< flow time: samples are traced back from `time` to 0
+  int steps = 0;         ///< RK4 steps over [0, time]; 0: automatic_steps(flow, time)
+  bool shortcut = true;  ///< classify cells far from every interface by their centre
+  Progress progress;     ///< called between blocks of cells, from the calling thread
 };
 
 struct SamplingResult {
