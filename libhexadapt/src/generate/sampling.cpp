@@ -142,7 +142,7 @@ class Sampler {
         for (int i = 0; i < s_; ++i) {
           Vec3 x = base + i * e[0] + j * e[1];
           if constexpr (M::dim == 3) x += k * e[2];
-          if (moves) x = trace_back(*scene_.flow, x, time_, steps_);
+          if (moves && !scene_.flow->still_in(x, 0)) x = trace_back(*scene_.flow, x, time_, steps_);
           ++count[static_cast<std::size_t>(scene_.layout.material_at(x))];
         }
     for (int m = 0; m < n_; ++m)
@@ -156,7 +156,7 @@ class Sampler {
       Vec3 x;
       double det;
       cell_map<M::dim>(p, xi, x, det);
-      if (moves) x = trace_back(*scene_.flow, x, time_, steps_);
+      if (moves && !scene_.flow->still_in(x, 0)) x = trace_back(*scene_.flow, x, time_, steps_);
       w[static_cast<std::size_t>(scene_.layout.material_at(x))] += det;
     }
   }
