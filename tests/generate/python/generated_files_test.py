@@ -34,8 +34,10 @@ def check(tool, tmp, name, args, n_cells, cell_type, materials):
     assert len(mesh.cells[0].data) == n_cells, len(mesh.cells[0].data)
     check_arrays(paths[".vtk"],
                  {k: v[0] for k, v in mesh.cell_data.items() if k.startswith("vf_")}, materials)
+    legacy = vtk.vtkUnstructuredGridReader()
+    legacy.ReadAllScalarsOn()  # every SCALARS block, not only the first
     for path, reader in ((paths[".vtu"], vtk.vtkXMLUnstructuredGridReader()),
-                         (paths[".vtk"], vtk.vtkUnstructuredGridReader())):
+                         (paths[".vtk"], legacy)):
         reader.SetFileName(path)
         reader.Update()
         grid = reader.GetOutput()
