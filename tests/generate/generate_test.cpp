@@ -93,6 +93,8 @@ TEST(Generate, BoundsAndDimsAreChecked) {
   auto o = options("disk", {8, 8});
   o.bounds = Bounds{Vec3(1, 0, 0), Vec3(0, 1, 0)};
   EXPECT_THROW(generate(o), OptionError);
+  o.bounds = Bounds{Vec3(0, 0, 0), Vec3(1, 1, 1)};  // 3D bounds for a 2D case
+  EXPECT_THROW(generate(o), OptionError);
   o = options("sphere", {4, 4});
   EXPECT_THROW(generate(o), OptionError);
   o = options("sphere", {});

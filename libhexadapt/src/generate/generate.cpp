@@ -34,6 +34,8 @@ int pick_dim(const Case& c, const GenerateOptions& o) {
 
 Bounds pick_bounds(const CaseDefaults& d, const GenerateOptions& o, int dim) {
   const Bounds b = o.bounds ? *o.bounds : d.bounds;
+  if (dim == 2 && (b.lo.z() != 0 || b.hi.z() != 0))
+    throw OptionError("a 2D case lives in z = 0: give its bounds as xmin,ymin,xmax,ymax");
   for (int a = 0; a < dim; ++a)
     if (!(b.lo[a] < b.hi[a]))
       throw OptionError("bounds: the minimum must be below the maximum on every axis");
