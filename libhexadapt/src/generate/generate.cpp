@@ -109,33 +109,30 @@ void add_metadata(const Case& c, const GenerateOptions& o, const Bounds& b, Gene
 
 }  // namespace
 
-GenerateResult generate(const GenerateOptions& o) {
-  const Case& c = find_case(o.case_name);
-  const int dim = pick_dim(c, o);
-  const CaseDefaults& d = c.defaults(dim);
+namespace {
+
+/// Cells per axis: the case's default overridden by --dims; checked.
+std::array<int, 3> pick_dims(const CaseDefaults& d, const GenerateOptions& o, int dim) {
   std::array<int, 3> n = d.dims;
   if (!o.dims.empty()) std::copy(o.dims.begin(), o.dims.end(), n.begin());
   for (int a = 0; a < dim; ++a)
     if (n[static_cast<std::size_t>(a)] < 1) throw OptionError("--dims: every axis needs >= 1 cell");
   if (o.extrude < 0) throw OptionError("--extrude must be >= 0");
-  const Bounds b = pick_bounds(d, o, dim);
-  GenerateResult r;
-  r.dim = dim;
-  r.materials = c.materials;
-  r.time = c.has_flow ? o.time.value_or(d.time) : 0.0;
-  if (!c.has_flow && o.time && *o.time != 0)
-    log_warning("case " + c.name + " has no flow: --time is ignored");
-  const Scene scene = c.build(dim, o.seed);
-  JitterOptions jo;
-  jo.amplitude = o.jitter;
-  jo.min_quality = o.jitter_floor;
-  jo.seed = o.seed;
-  const Vec3 spacing = (b.hi - b.lo).cwiseQuotient(Vec3(n[0], n[1], dim == 3 ? n[2] : 1));
-  Timer t;
-  r.data = grid_data(dim, n, b.lo, spacing);
-  r.times.emplace_back("grid", t.seconds());
-  t.restart();
-  if (o.jitter > 0) r.jitter = jitter_nodes(r.data, jo);
+  if (o.jitter < 0) throw OptionError("--jitter must be >= 0");
+  return n;
+}
+
+/// Jitters r.data when asked, then samples the scene on it.
+Fractions jitter_and_sample(const Case& c, const Scene& scene, const GenerateOptions& o,
+                            GenerateResult& r) {
+  const Timer t;
+  if (o.jitter > 0) {
+    JitterOptions jo;
+    jo.amplitude = o.jitter;
+    jo.min_quality = o.jitter_floor;
+    jo.seed = o.seed;
+    r.jitter = jitter_nodes(r.data, jo);
+  }
   r.times.emplace_back("jitter", t.seconds());
   SamplingOptions so;
   so.samples = o.samples;
@@ -148,6 +145,28 @@ GenerateResult generate(const GenerateOptions& o) {
   r.sampled_cells = s.sampled_cells;
   r.mixed_cells = s.mixed_cells;
   r.times.emplace_back("sample", s.seconds);
+  return std::move(s.fractions);
+}
+
+}  // namespace
+
+GenerateResult generate(const GenerateOptions& o) {
+  const Case& c = find_case(o.case_name);
+  const int dim = pick_dim(c, o);
+  const CaseDefaults& d = c.defaults(dim);
+  const std::array<int, 3> n = pick_dims(d, o, dim);
+  const Bounds b = pick_bounds(d, o, dim);
+  GenerateResult r;
+  r.dim = dim;
+  r.materials = c.materials;
+  r.time = c.has_flow ? o.time.value_or(d.time) : 0.0;
+  if (!c.has_flow && o.time && *o.time != 0)
+    log_warning("case " + c.name + " has no flow: --time is ignored");
+  const Vec3 spacing = (b.hi - b.lo).cwiseQuotient(Vec3(n[0], n[1], dim == 3 ? n[2] : 1));
+  Timer t;
+  r.data = grid_data(dim, n, b.lo, spacing);
+  r.times.emplace_back("grid", t.seconds());
+  const Fractions f = jitter_and_sample(c, c.build(dim, o.seed), o, r);
   t.restart();
   double box_volume = spacing.x() * spacing.y() * (dim == 3 ? spacing.z() : 1.0);
   if (o.extrude > 0) {
@@ -157,7 +176,7 @@ GenerateResult generate(const GenerateOptions& o) {
     r.data = std::move(thick);
     box_volume *= thickness;
   }
-  add_arrays(s.fractions, o.jitter > 0, box_volume, r);
+  add_arrays(f, o.jitter > 0, box_volume, r);
   r.times.emplace_back("package", t.seconds());
   add_metadata(c, o, b, r);
   return r;
