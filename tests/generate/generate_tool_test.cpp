@@ -9,6 +9,8 @@
 #include <sstream>
 #include <string>
 
+#include <sys/wait.h>
+
 #include "hexadapt/generate/cases.h"
 #include "hexadapt/io/mesh_file.h"
 
