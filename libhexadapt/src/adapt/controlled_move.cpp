@@ -44,22 +44,32 @@ MoveResult controlled_move(M& mesh, const Targets& targets, const MoveOptions& o
   const auto sets = independent_node_sets(mesh, moving);
   const int max_rounds = options.max_rounds > 0 ? options.max_rounds : 4 * options.steps;
   const double inv_steps = 1.0 / options.steps;
+  // A refused node waits until something around it moves before trying again.
+  IdVector<NodeId, char> waiting(nn, 0);
   for (bool advanced = true; advanced && out.rounds < max_rounds; ++out.rounds) {
     advanced = false;
     for (const auto& set : sets) {
       std::vector<char> moved(set.size(), 0);
-      parallel_for(static_cast<std::int64_t>(set.size()), [&](std::int64_t i) {
+      for_each_item(set.size(), [&](std::int64_t i) {
         const NodeId n = set[static_cast<std::size_t>(i)];
-        if (done[n] >= options.steps) return;
+        if (done[n] >= options.steps || waiting[n]) return;
         const int k = done[n] + 1;
         const Vec3 p = k == options.steps
                            ? targets.position[n]
                            : Vec3(start[n] + (k * inv_steps) * (targets.position[n] - start[n]));
-        if (!try_position(mesh, n, p, options.threshold)) return;
+        if (!try_position(mesh, n, p, options.threshold)) {
+          waiting[n] = 1;
+          return;
+        }
         done[n] = k;
         moved[static_cast<std::size_t>(i)] = 1;
       });
-      for (char m : moved) advanced = advanced || m;
+      for (std::size_t i = 0; i < set.size(); ++i) {
+        if (!moved[i]) continue;
+        advanced = true;
+        for (CellId c : mesh.node_cells(set[i]))
+          for (NodeId o : mesh.cell_nodes(c)) waiting[o] = 0;
+      }
     }
   }
   for (NodeId n : moving)

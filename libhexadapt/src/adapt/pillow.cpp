@@ -61,6 +61,20 @@ std::vector<int> fans_around(const M& mesh, NodeId n, const std::vector<CellId>&
   return label;
 }
 
+// Where a copy goes, before scaling by the offset option: along the fan's inward normal (kept
+// on the boundary), as deep as the fan's cell centre lies in that direction; toward the
+// centre when the normals cancel out.
+Vec3 copy_offset(const NodeConstraint& boundary, const Vec3& inward, const Vec3& to_centre) {
+  const Vec3 d = boundary.project(inward);
+  const double len = d.norm();
+  if (len > 1e-9) {
+    const Vec3 u = d / len;
+    const double depth = u.dot(to_centre);
+    if (depth > 0) return depth * u;
+  }
+  return boundary.project(to_centre);
+}
+
 }  // namespace
 
 template <class M>
@@ -92,27 +106,45 @@ PillowResult<M> pillow_cells(const M& mesh, const IdVector<CellId, char>& in_set
   out.node_origin = IdVector<NodeId, NodeId>(std::vector<NodeId>());
   for (NodeId v : id_range<NodeId>(mesh.n_nodes())) out.node_origin.push_back(v);
 
+  // Fans of the set's cells around every split node, and the inward normal of each fan's
+  // pillowed faces: the copy leaves its original across the interface, never along it.
+  const auto nn = static_cast<std::size_t>(mesh.n_nodes());
+  IdVector<NodeId, std::vector<CellId>> around(nn);
+  IdVector<NodeId, std::vector<int>> fan(nn);
+  IdVector<NodeId, std::vector<Vec3>> inward(nn);
   for (NodeId n : id_range<NodeId>(mesh.n_nodes())) {
     if (!split[n]) continue;
-    std::vector<CellId> around;
     for (CellId c : mesh.node_cells(n))
-      if (in_set[c]) around.push_back(c);
-    const std::vector<int> fan = fans_around(mesh, n, around);
+      if (in_set[c]) around[n].push_back(c);
+    fan[n] = fans_around(mesh, n, around[n]);
     int n_fans = 0;
-    for (int f : fan) n_fans = std::max(n_fans, f + 1);
+    for (int f : fan[n]) n_fans = std::max(n_fans, f + 1);
+    inward[n].assign(static_cast<std::size_t>(n_fans), Vec3::Zero());
+  }
+  for (const auto& [c, lf] : faces) {
+    const Vec3 normal = face_normal(mesh, c, lf);
+    for (NodeId v : mesh.face_nodes(c, lf)) {
+      const auto k = static_cast<std::size_t>(
+          std::find(around[v].begin(), around[v].end(), c) - around[v].begin());
+      inward[v][static_cast<std::size_t>(fan[v][k])] -= normal;
+    }
+  }
+  for (NodeId n : id_range<NodeId>(mesh.n_nodes())) {
+    if (!split[n]) continue;
     const Vec3 p = mesh.point(n);
-    for (int f = 0; f < n_fans; ++f) {
+    for (std::size_t f = 0; f < inward[n].size(); ++f) {
+      const NodeId copy(static_cast<index_t>(points.size()));
       Vec3 centre = Vec3::Zero();
       int count = 0;
-      const NodeId copy(static_cast<index_t>(points.size()));
-      for (std::size_t k = 0; k < around.size(); ++k) {
-        if (fan[k] != f) continue;
-        centre += cell_centroid(mesh, around[k]);
+      for (std::size_t k = 0; k < around[n].size(); ++k) {
+        if (static_cast<std::size_t>(fan[n][k]) != f) continue;
+        const CellId c = around[n][k];
+        centre += cell_centroid(mesh, c);
         ++count;
-        cells[around[k].idx()][static_cast<std::size_t>(corner_of(mesh, around[k], n))] = copy;
+        cells[c.idx()][static_cast<std::size_t>(corner_of(mesh, c, n))] = copy;
       }
       centre /= count;
-      points.push_back(p + options.offset * boundary[n].project(centre - p));
+      points.push_back(p + options.offset * copy_offset(boundary[n], inward[n][f], centre - p));
       out.node_origin.push_back(n);
     }
   }

@@ -53,7 +53,7 @@ SmoothResult smooth(M& mesh, const IdVector<NodeId, char>& movable,
     double best_gain = 0;
     for (const auto& set : sets) {
       std::vector<double> gain(set.size(), -1);
-      parallel_for(static_cast<std::int64_t>(set.size()), [&](std::int64_t i) {
+      for_each_item(set.size(), [&](std::int64_t i) {
         const NodeId n = set[static_cast<std::size_t>(i)];
         gain[static_cast<std::size_t>(i)] = smooth_node(mesh, n, constraint[n], options.halvings);
       });

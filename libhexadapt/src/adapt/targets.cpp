@@ -6,7 +6,7 @@
 #include <Eigen/Dense>
 
 #include "hexadapt/core/error.h"
-#include "hexadapt/core/parallel.h"
+#include "hexadapt/adapt/local_topology.h"
 
 namespace hexadapt {
 
@@ -115,12 +115,12 @@ Targets compute_targets(const M& mesh, const Fractions& fractions,
   for (std::size_t i = 0; i < cells.size(); ++i) slot[cells[i]] = static_cast<index_t>(i);
   std::vector<std::vector<Vec3>> grad(cells.size());
   (void)mesh.node_cells(NodeId(0));  // build the adjacency before the threads share it
-  parallel_for(static_cast<std::int64_t>(cells.size()), [&](std::int64_t i) {
+  for_each_item(cells.size(), [&](std::int64_t i) {
     const auto k = static_cast<std::size_t>(i);
     grad[k] = fraction_gradients(mesh, fractions, cells[k], options.eps_factor);
   });
 
-  parallel_for(static_cast<std::int64_t>(out.faces.size()), [&](std::int64_t i) {
+  for_each_item(out.faces.size(), [&](std::int64_t i) {
     InterfaceFace& f = out.faces[static_cast<std::size_t>(i)];
     const int m0 = material[f.c0], m1 = material[f.c1];
     const double d = fractions(f.c1, m0) - fractions(f.c0, m0) - fractions(f.c1, m1) +

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "hexadapt/core/ids.h"
+#include "hexadapt/core/parallel.h"
 #include "hexadapt/mesh/cell_complex.h"
 
 namespace hexadapt {
@@ -55,5 +56,18 @@ double min_quality_around(const M& mesh, NodeId n) {
 template <class M>
 std::vector<std::vector<NodeId>> independent_node_sets(const M& mesh,
                                                         const std::vector<NodeId>& nodes);
+
+/// f(i) for i in [0, n): on the library's threads when n is large enough to pay for waking
+/// them (a small colour class costs more to share than to run), in order otherwise. f must
+/// only write state owned by item i, so the result is the same either way.
+template <class F>
+void for_each_item(std::size_t n, F&& f) {
+  constexpr std::size_t min_parallel = 256;
+  if (n < min_parallel) {
+    for (std::size_t i = 0; i < n; ++i) f(static_cast<std::int64_t>(i));
+  } else {
+    parallel_for(static_cast<std::int64_t>(n), f);
+  }
+}
 
 }  // namespace hexadapt
