@@ -46,8 +46,11 @@ void finish(AdaptResult<M>& r, const IdVector<NodeId, Vec3>& target,
   r.dist_final = 0;
   r.n_reached = 0;
   for (NodeId v : id_range<NodeId>(mesh.n_nodes())) {
+    if (!has[v]) {
+      r.target[v] = mesh.point(v);
+      continue;
+    }
     r.distance[v] = (mesh.point(v) - target[v]).norm();
-    if (!has[v]) continue;
     r.dist_final += r.distance[v];
     r.n_reached += r.distance[v] == 0;
   }
@@ -80,10 +83,9 @@ AdaptResult<M> run_base(const M& grid, const Fractions& fractions,
   // Interface nodes sit on their targets: only the nodes the pillowing made, and the nodes
   // away from the interfaces, may move.
   const auto nn = static_cast<std::size_t>(p.mesh.n_nodes());
-  IdVector<NodeId, Vec3> target(nn);
+  IdVector<NodeId, Vec3> target(nn, Vec3::Zero());
   IdVector<NodeId, char> has(nn, 0), movable(nn, 1);
   for (NodeId v : id_range<NodeId>(p.mesh.n_nodes())) {
-    target[v] = p.mesh.point(v);
     if (v.value() < grid.n_nodes() && targets.has[v]) {
       target[v] = targets.position[v];
       has[v] = 1;
