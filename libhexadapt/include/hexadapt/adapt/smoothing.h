@@ -4,7 +4,9 @@
 // Each movable node is pulled toward the mean of its edge neighbours, the displacement
 // restricted by its constraint (boundary plane or edge, interface plane or curve: the node
 // slides along them), and shortened by halves until the smallest scaled Jacobian of the cells
-// around the node does not go down; a move that cannot keep it is not made. Nodes sharing no
+// around the node does not go down; a move that cannot keep it is not made. A node whose
+// cells stay poor then tries a pattern search along the axes (within its constraint) that
+// only accepts a higher local minimum: it untangles what the Laplacian pull cannot. Nodes sharing no
 // cell are moved in parallel in a fixed order, so the result does not depend on the thread
 // count.
 #pragma once
@@ -19,6 +21,9 @@ struct SmoothOptions {
   int halvings = 4;       ///< how many times a refused displacement is halved and retried
   /// A sweep that improves no node's local minimum by more than this stops the smoothing.
   double min_gain = 1e-6;
+  /// Nodes whose local minimum stays below this also try the pattern search.
+  double optimise_below = 0.5;
+  int search_levels = 4;  ///< pattern-search step halvings (first step: 1/4 edge length)
 };
 
 struct SmoothResult {
