@@ -23,8 +23,8 @@ template <class M>
 Vec3 cell_map(const M& mesh, CellId c, const Vec3& u) {
   const auto p = mesh.cell_points(c);
   if constexpr (M::dim == 2) {
-    return (1 - u.x()) * (1 - u.y()) * p[0] + u.x() * (1 - u.y()) * p[1] +
-           u.x() * u.y() * p[2] + (1 - u.x()) * u.y() * p[3];
+    return (1 - u.x()) * (1 - u.y()) * p[0] + u.x() * (1 - u.y()) * p[1] + u.x() * u.y() * p[2] +
+           (1 - u.x()) * u.y() * p[3];
   } else {
     Vec3 s = Vec3::Zero();
     for (int b = 0; b < 8; ++b)

@@ -28,8 +28,8 @@ TEST(AdaptIo, MaterialArrayIsCheckedCellByCell) {
 
 TEST(AdaptIo, OutputCarriesMaterialTargetAndDistance) {
   const QuadMesh grid = make_quad_grid(8, 8);
-  const Fractions f =
-      test::sample_fractions(grid, [](const Vec3& p) { return (p - Vec3(4.2, 3.9, 0)).norm() < 2.6; }, 2, 8);
+  const Fractions f = test::sample_fractions(
+      grid, [](const Vec3& p) { return (p - Vec3(4.2, 3.9, 0)).norm() < 2.6; }, 2, 8);
   const auto r = adapt(grid, f, test::majority(f));
   const io::MeshData d = adapt_mesh_data(r, {"outside", "disk"});
   EXPECT_EQ(d.dim, 2);
@@ -40,8 +40,7 @@ TEST(AdaptIo, OutputCarriesMaterialTargetAndDistance) {
   ASSERT_TRUE(m && t && dist);
   EXPECT_EQ(t->n_components, 3);
   EXPECT_EQ(t->n_tuples(), static_cast<std::size_t>(r.mesh.n_nodes()));
-  for (CellId c : id_range<CellId>(r.mesh.n_cells()))
-    EXPECT_EQ(m->values[c.idx()], r.material[c]);
+  for (CellId c : id_range<CellId>(r.mesh.n_cells())) EXPECT_EQ(m->values[c.idx()], r.material[c]);
   for (NodeId v : id_range<NodeId>(r.mesh.n_nodes())) {
     const Vec3 tv(t->values[3 * v.idx()], t->values[3 * v.idx() + 1], t->values[3 * v.idx() + 2]);
     EXPECT_NEAR(dist->values[v.idx()], (tv - r.mesh.point(v)).norm(), 1e-12);

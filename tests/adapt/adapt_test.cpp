@@ -100,7 +100,8 @@ TEST(BaseMethod, SmoothsASimpleDiskToGoodQuality) {
 
 TEST(Adapt, RejectsTheGuaranteedMethodForNowAndBadOptions) {
   const QuadMesh grid = make_quad_grid(4, 4);
-  const Fractions f = test::sample_fractions(grid, [](const Vec3& p) { return p.x() < 1.5; }, 2, 4);
+  const Fractions f = test::sample_fractions(
+      grid, [](const Vec3& p) { return p.x() < 1.5; }, 2, 4);
   AdaptOptions o;
   o.method = AdaptMethod::guaranteed;
   EXPECT_THROW(adapt(grid, f, test::majority(f), o), OptionError);

@@ -50,7 +50,8 @@ void expect_move_keeps_threshold(M mesh, const Targets& t, double threshold) {
 
 TEST(ControlledMove, MovesEveryNodeAllTheWayWhenNothingBlocks) {
   QuadMesh mesh = make_quad_grid(10, 6);
-  const Targets t = targets_of(mesh, [](const Vec3& p) { return p.x() < 4.3; }, 2);
+  const Targets t = targets_of(
+      mesh, [](const Vec3& p) { return p.x() < 4.3; }, 2);
   const MoveResult r = controlled_move(mesh, t);
   EXPECT_EQ(r.n_moving, 7);
   EXPECT_EQ(r.n_reached, r.n_moving);
@@ -63,7 +64,8 @@ TEST(ControlledMove, MovesEveryNodeAllTheWayWhenNothingBlocks) {
 
 TEST(ControlledMove, MovesEveryNodeAllTheWayWhenNothingBlocks3D) {
   HexMesh mesh = make_hex_grid(6, 4, 3);
-  const Targets t = targets_of(mesh, [](const Vec3& p) { return p.z() < 1.6; }, 2, 6);
+  const Targets t = targets_of(
+      mesh, [](const Vec3& p) { return p.z() < 1.6; }, 2, 6);
   const MoveResult r = controlled_move(mesh, t);
   EXPECT_EQ(r.n_moving, 7 * 5);
   EXPECT_EQ(r.n_reached, r.n_moving);

@@ -1,8 +1,7 @@
-#include "hexadapt/adapt/global_pillow.h"
-
 #include <gtest/gtest.h>
 
 #include "adapt/adapt_cases.h"
+#include "hexadapt/adapt/global_pillow.h"
 
 namespace hexadapt {
 namespace {
@@ -67,9 +66,8 @@ void check_global_pillow(const M& mesh, const IdVector<CellId, int>& m, int n_ma
 
 TEST(GlobalPillow, InnerBlock2D) {
   const QuadMesh mesh = make_quad_grid(6, 6);
-  const auto m = materials_of(mesh, [](const Vec3& p) {
-    return p.x() > 2 && p.x() < 4 && p.y() > 2 && p.y() < 4;
-  });
+  const auto m = materials_of(
+      mesh, [](const Vec3& p) { return p.x() > 2 && p.x() < 4 && p.y() > 2 && p.y() < 4; });
   check_global_pillow(mesh, m, 2);
   const auto r = global_pillow(mesh, m, 2);
   EXPECT_EQ(r.mesh.n_cells(), 36 + 16);
@@ -99,7 +97,8 @@ TEST(GlobalPillow, RegionTouchingItselfAtANodeGetsTwoCopies2D) {
   check_global_pillow(mesh, m, 2);
   const auto r = global_pillow(mesh, m, 2);
   index_t copies_of_centre = 0;
-  for (NodeId v : id_range<NodeId>(r.mesh.n_nodes())) copies_of_centre += r.node_origin[v] == NodeId(12);
+  for (NodeId v : id_range<NodeId>(r.mesh.n_nodes()))
+    copies_of_centre += r.node_origin[v] == NodeId(12);
   EXPECT_EQ(copies_of_centre, 1 + 2 + 2);  // two fans on each side
 }
 

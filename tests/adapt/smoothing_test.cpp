@@ -7,7 +7,9 @@
 namespace hexadapt {
 namespace {
 
-IdVector<NodeId, char> all_movable(index_t n) { return IdVector<NodeId, char>(static_cast<std::size_t>(n), 1); }
+IdVector<NodeId, char> all_movable(index_t n) {
+  return IdVector<NodeId, char>(static_cast<std::size_t>(n), 1);
+}
 
 TEST(Smoothing, RepairsAPulledNodeAndNeverLowersTheMinimum) {
   QuadMesh mesh = make_quad_grid(4, 4);

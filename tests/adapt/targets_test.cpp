@@ -82,7 +82,8 @@ TEST(Targets, DiskTargetsLieCloseToTheCircle) {
   const Vec3 centre(6.1, 5.9, 0);
   const double r = 3.7;
   const QuadMesh mesh = make_quad_grid(12, 12);
-  const auto f = sample_fractions(mesh, [&](const Vec3& p) { return (p - centre).norm() < r; }, 2);
+  const auto f = sample_fractions(
+      mesh, [&](const Vec3& p) { return (p - centre).norm() < r; }, 2);
   const Targets t = targets_of(mesh, f);
   ASSERT_GT(t.n_interface_nodes, 20);
   double worst = 0;
@@ -95,8 +96,8 @@ TEST(Targets, SphereTargetsLieCloseToTheSphere) {
   const Vec3 centre(4.1, 3.9, 4.05);
   const double r = 2.6;
   const HexMesh mesh = make_hex_grid(8, 8, 8);
-  const auto f =
-      sample_fractions(mesh, [&](const Vec3& p) { return (p - centre).norm() < r; }, 2, 8);
+  const auto f = sample_fractions(
+      mesh, [&](const Vec3& p) { return (p - centre).norm() < r; }, 2, 8);
   const Targets t = targets_of(mesh, f);
   double worst = 0;
   for (NodeId n : id_range<NodeId>(mesh.n_nodes()))
@@ -108,8 +109,8 @@ TEST(Targets, NodesOnABoxEdgeSlideAlongIt) {
   // A plane x + y = const crossing the z-edges of the box: targets of the nodes on the
   // edge x = 0 or y = 0 keep both coordinates that pin them there.
   const HexMesh mesh = make_hex_grid(6, 6, 2);
-  const auto f =
-      sample_fractions(mesh, [](const Vec3& p) { return p.x() + 0.8 * p.y() < 4.3; }, 2, 8);
+  const auto f = sample_fractions(
+      mesh, [](const Vec3& p) { return p.x() + 0.8 * p.y() < 4.3; }, 2, 8);
   const Targets t = targets_of(mesh, f);
   for (NodeId n : id_range<NodeId>(mesh.n_nodes())) {
     if (!t.has[n]) continue;
@@ -127,6 +128,32 @@ TEST(Targets, RejectsMaterialsOutOfRange) {
   IdVector<CellId, int> bad(4, 0);
   bad[CellId(3)] = 2;
   EXPECT_THROW(compute_targets(mesh, f, bad, boundary_constraints(mesh)), InputError);
+}
+
+}  // namespace
+}  // namespace hexadapt
+
+namespace hexadapt {
+namespace {
+
+TEST(Targets, SlidingConstraintsFollowTheInterfaceAndTheBoundary) {
+  const QuadMesh mesh = make_quad_grid(8, 5);
+  Fractions f(mesh.n_cells(), {"left", "right"});
+  for (CellId c : id_range<CellId>(mesh.n_cells())) {
+    const double left = std::clamp(3.5 - mesh.point(mesh.cell_nodes(c)[0]).x(), 0.0, 1.0);
+    f(c, 0) = left;
+    f(c, 1) = 1 - left;
+  }
+  const auto boundary = boundary_constraints(mesh);
+  const Targets t = compute_targets(mesh, f, test::majority(f), boundary);
+  const auto slide = sliding_constraints(boundary, t);
+  const NodeId inner(4 + 9 * 2), on_boundary(4), corner(0), plain(1 + 9 * 2);
+  EXPECT_EQ(slide[inner].n_normals(), 1);
+  EXPECT_NEAR(std::abs(slide[inner].normal(0).x()), 1.0, 1e-9);
+  EXPECT_EQ(slide[inner].project(Vec3(1, 1, 0)), Vec3(0, 1, 0));
+  EXPECT_TRUE(slide[on_boundary].fixed(2));  // on the interface and on the boundary line
+  EXPECT_TRUE(slide[corner].fixed(2));
+  EXPECT_EQ(slide[plain].n_normals(), 0);
 }
 
 }  // namespace

@@ -39,7 +39,9 @@ Json result_json(const AdaptResult<M>& r, index_t input_cells) {
   j["cells_inverted"] = r.n_inverted;
   Json steps = Json::array();
   for (const auto& s : r.steps)
-    steps.push_back({{"name", s.name}, {"min_quality", s.min_quality}, {"cells", s.cells},
+    steps.push_back({{"name", s.name},
+                     {"min_quality", s.min_quality},
+                     {"cells", s.cells},
                      {"seconds", s.seconds}});
   j["steps"] = steps;
   return j;
@@ -126,8 +128,7 @@ int main(int argc, char** argv) {
   app.add_option("--smooth-iterations", args.smooth_iterations, "Smoothing sweeps")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  app.add_option("--fractions", args.fractions, "Fraction arrays to use, in order")
-      ->delimiter(',');
+  app.add_option("--fractions", args.fractions, "Fraction arrays to use, in order")->delimiter(',');
   app.add_option("--void", args.void_material,
                  "Name a material that receives 1 - sum of the given fractions");
   cli::add_common_options(app, common);

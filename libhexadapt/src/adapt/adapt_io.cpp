@@ -21,8 +21,9 @@ IdVector<CellId, int> read_material_array(const io::MeshData& data, int n_materi
     const double v = a->values[c.idx()];
     if (!(v >= 0 && v < n_materials && v == std::floor(v)))
       throw InputError(file, "cell " + std::to_string(c.value()),
-                       "'" + array + "' is " + std::to_string(v) + ", expected a material index in [0, " +
-                           std::to_string(n_materials) + ")");
+                       "'" + array + "' is " + std::to_string(v) +
+                           ", expected a material index in [0, " + std::to_string(n_materials) +
+                           ")");
     out[c] = static_cast<int>(v);
   }
   return out;

@@ -96,8 +96,8 @@ MoveResult direct_move(M& mesh, const Targets& targets) {
   return out;
 }
 
-#define HEXADAPT_INSTANTIATE(M)                                                          \
-  template MoveResult controlled_move<M>(M&, const Targets&, const MoveOptions&);        \
+#define HEXADAPT_INSTANTIATE(M)                                                   \
+  template MoveResult controlled_move<M>(M&, const Targets&, const MoveOptions&); \
   template MoveResult direct_move<M>(M&, const Targets&);
 HEXADAPT_INSTANTIATE(QuadMesh)
 HEXADAPT_INSTANTIATE(HexMesh)

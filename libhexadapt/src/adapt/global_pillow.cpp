@@ -30,7 +30,8 @@ GlobalPillowResult<M> global_pillow(const M& mesh, const IdVector<CellId, int>& 
     if (p.n_new_cells == 0) continue;
     // Compose the maps: new items point through the step's origin to the input.
     for (NodeId v : id_range<NodeId>(p.mesh.n_nodes()))
-      if (v.value() >= out.mesh.n_nodes()) out.node_origin.push_back(out.node_origin[p.node_origin[v]]);
+      if (v.value() >= out.mesh.n_nodes())
+        out.node_origin.push_back(out.node_origin[p.node_origin[v]]);
     for (CellId c : id_range<CellId>(p.mesh.n_cells()))
       if (c.value() >= out.mesh.n_cells()) {
         out.cell_origin.push_back(out.cell_origin[p.cell_origin[c]]);

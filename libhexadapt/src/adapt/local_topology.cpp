@@ -34,7 +34,7 @@ Vec3 face_normal(const M& mesh, CellId c, int lf) {
 
 template <class M>
 std::vector<std::vector<NodeId>> independent_node_sets(const M& mesh,
-                                                        const std::vector<NodeId>& nodes) {
+                                                       const std::vector<NodeId>& nodes) {
   IdVector<NodeId, int> colour(static_cast<std::size_t>(mesh.n_nodes()), -1);
   std::vector<std::vector<NodeId>> sets;
   std::vector<char> used;
@@ -51,10 +51,10 @@ std::vector<std::vector<NodeId>> independent_node_sets(const M& mesh,
   return sets;
 }
 
-#define HEXADAPT_INSTANTIATE(M)                                                          \
-  template std::vector<NodeId> edge_neighbours<M>(const M&, NodeId);                     \
-  template Vec3 face_normal<M>(const M&, CellId, int);                                   \
-  template std::vector<std::vector<NodeId>> independent_node_sets<M>(const M&,           \
+#define HEXADAPT_INSTANTIATE(M)                                                \
+  template std::vector<NodeId> edge_neighbours<M>(const M&, NodeId);           \
+  template Vec3 face_normal<M>(const M&, CellId, int);                         \
+  template std::vector<std::vector<NodeId>> independent_node_sets<M>(const M&, \
                                                                      const std::vector<NodeId>&);
 HEXADAPT_INSTANTIATE(QuadMesh)
 HEXADAPT_INSTANTIATE(HexMesh)

@@ -16,8 +16,7 @@ QuadMesh::CellNodes layer_cell<QuadMesh>(const QuadMesh::FaceNodes& f,
 }
 
 template <>
-HexMesh::CellNodes layer_cell<HexMesh>(const HexMesh::FaceNodes& f,
-                                       const HexMesh::FaceNodes& g) {
+HexMesh::CellNodes layer_cell<HexMesh>(const HexMesh::FaceNodes& f, const HexMesh::FaceNodes& g) {
   // f's normal points away from the set cell: copies at the bottom (z-), originals on top,
   // in binary order (0, 1, 3, 2 counter-clockwise seen from above).
   return {g[0], g[1], g[3], g[2], f[0], f[1], f[3], f[2]};
@@ -124,8 +123,8 @@ PillowResult<M> pillow_cells(const M& mesh, const IdVector<CellId, char>& in_set
   for (const auto& [c, lf] : faces) {
     const Vec3 normal = face_normal(mesh, c, lf);
     for (NodeId v : mesh.face_nodes(c, lf)) {
-      const auto k = static_cast<std::size_t>(
-          std::find(around[v].begin(), around[v].end(), c) - around[v].begin());
+      const auto k = static_cast<std::size_t>(std::find(around[v].begin(), around[v].end(), c) -
+                                              around[v].begin());
       inward[v][static_cast<std::size_t>(fan[v][k])] -= normal;
     }
   }

@@ -1,12 +1,11 @@
 #include "hexadapt/adapt/targets.h"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <string>
 
-#include <Eigen/Dense>
-
-#include "hexadapt/core/error.h"
 #include "hexadapt/adapt/local_topology.h"
+#include "hexadapt/core/error.h"
 
 namespace hexadapt {
 
@@ -17,9 +16,10 @@ void check_inputs(const M& mesh, const Fractions& fractions, const IdVector<Cell
                   const IdVector<NodeId, NodeConstraint>& boundary) {
   const auto n = static_cast<std::size_t>(mesh.n_cells());
   if (static_cast<std::size_t>(fractions.n_cells()) != n || material.size() != n)
-    throw InputError("", "", "the mesh has " + std::to_string(n) + " cells but " +
-                                 std::to_string(fractions.n_cells()) + " fraction rows and " +
-                                 std::to_string(material.size()) + " material values");
+    throw InputError("", "",
+                     "the mesh has " + std::to_string(n) + " cells but " +
+                         std::to_string(fractions.n_cells()) + " fraction rows and " +
+                         std::to_string(material.size()) + " material values");
   if (boundary.size() != static_cast<std::size_t>(mesh.n_nodes()))
     throw InternalError("boundary constraints do not match the mesh's nodes");
   for (CellId c : id_range<CellId>(mesh.n_cells()))
@@ -41,7 +41,9 @@ std::vector<CellId> node_neighbour_cells(const M& mesh, CellId c) {
   return out;
 }
 
-Vec3 project_on_plane(const Vec3& p, const Vec3& x, const Vec3& n) { return p - (p - x).dot(n) * n; }
+Vec3 project_on_plane(const Vec3& p, const Vec3& x, const Vec3& n) {
+  return p - (p - x).dot(n) * n;
+}
 
 // The node's interface directions: the principal directions of the sum of n n^T over its
 // faces whose weight is a fair share of the strongest (one for a plain interface, two at a
@@ -79,8 +81,7 @@ std::vector<Vec3> fraction_gradients(const M& mesh, const Fractions& fractions, 
   for (std::size_t i = 0; i < around.size(); ++i) {
     const double w = 1.0 / (d[i].squaredNorm() + eps);
     a += w * d[i] * d[i].transpose();
-    for (int m = 0; m < nm; ++m)
-      b.col(m) += w * (fractions(around[i], m) - fractions(c, m)) * d[i];
+    for (int m = 0; m < nm; ++m) b.col(m) += w * (fractions(around[i], m) - fractions(c, m)) * d[i];
   }
   // A direction with no spread (2D: z; a single layer of hexes) gets a zero component.
   const double reg = 1e-12 * std::max(a.trace(), 1e-300);
@@ -123,8 +124,8 @@ Targets compute_targets(const M& mesh, const Fractions& fractions,
   for_each_item(out.faces.size(), [&](std::int64_t i) {
     InterfaceFace& f = out.faces[static_cast<std::size_t>(i)];
     const int m0 = material[f.c0], m1 = material[f.c1];
-    const double d = fractions(f.c1, m0) - fractions(f.c0, m0) - fractions(f.c1, m1) +
-                     fractions(f.c0, m1);
+    const double d =
+        fractions(f.c1, m0) - fractions(f.c0, m0) - fractions(f.c1, m1) + fractions(f.c0, m1);
     double t = std::abs(d) < options.tiny_denominator
                    ? 0.5
                    : (fractions(f.c0, m1) - fractions(f.c0, m0)) / d;
@@ -164,6 +165,16 @@ Targets compute_targets(const M& mesh, const Fractions& fractions,
   return out;
 }
 
+IdVector<NodeId, NodeConstraint> sliding_constraints(
+    const IdVector<NodeId, NodeConstraint>& boundary, const Targets& targets) {
+  if (boundary.size() != targets.interface.size())
+    throw InternalError("sliding constraints: boundary and targets differ in size");
+  IdVector<NodeId, NodeConstraint> out = boundary;
+  for (NodeId v : id_range<NodeId>(static_cast<index_t>(out.size())))
+    out[v].add(targets.interface[v]);
+  return out;
+}
+
 template <class M>
 double target_distance(const M& mesh, const Targets& targets) {
   double s = 0;
@@ -172,7 +183,7 @@ double target_distance(const M& mesh, const Targets& targets) {
   return s;
 }
 
-#define HEXADAPT_INSTANTIATE(M)                                                              \
+#define HEXADAPT_INSTANTIATE(M)                                                                 \
   template std::vector<Vec3> fraction_gradients<M>(const M&, const Fractions&, CellId, double); \
   template Targets compute_targets<M>(const M&, const Fractions&, const IdVector<CellId, int>&, \
                                       const IdVector<NodeId, NodeConstraint>&,                  \

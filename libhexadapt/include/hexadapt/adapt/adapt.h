@@ -49,17 +49,17 @@ struct AdaptStep {
 
 template <class M>
 struct AdaptResult {
-  M mesh;                          ///< the output: one material per cell
+  M mesh;  ///< the output: one material per cell
   IdVector<CellId, int> material;
-  IdVector<NodeId, Vec3> target;   ///< each node's target (its own position when it has none)
+  IdVector<NodeId, Vec3> target;  ///< each node's target (its own position when it has none)
   IdVector<NodeId, char> has_target;
   IdVector<NodeId, double> distance;  ///< |position - target|
   std::vector<AdaptStep> steps;
   index_t n_interface_nodes = 0;
-  index_t n_reached = 0;       ///< interface nodes on their target at the end
-  double dist_init = 0;        ///< sum of distances after the first (controlled or direct) move
-  double dist_final = 0;       ///< sum of distances at the end
-  double min_quality = 1;      ///< of the output
+  index_t n_reached = 0;          ///< interface nodes on their target at the end
+  double dist_init = 0;           ///< sum of distances after the first (controlled or direct) move
+  double dist_final = 0;          ///< sum of distances at the end
+  double min_quality = 1;         ///< of the output
   index_t n_below_threshold = 0;  ///< output cells with scaled Jacobian < threshold
   index_t n_inverted = 0;         ///< output cells with scaled Jacobian <= 0
 };

@@ -26,7 +26,7 @@ struct MoveResult {
   index_t n_moving = 0;            ///< nodes that had somewhere to go
   index_t n_reached = 0;           ///< of those, how many got all the way
   int rounds = 0;
-  double dist = 0;                 ///< sum over target nodes of |position - target| after
+  double dist = 0;  ///< sum over target nodes of |position - target| after
 };
 
 /// Moves the nodes with targets.has set. Throws OptionError for steps < 1.

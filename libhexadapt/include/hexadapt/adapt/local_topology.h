@@ -55,7 +55,7 @@ double min_quality_around(const M& mesh, NodeId n) {
 /// the order given: the classes depend on the input only, never on the thread count.
 template <class M>
 std::vector<std::vector<NodeId>> independent_node_sets(const M& mesh,
-                                                        const std::vector<NodeId>& nodes);
+                                                       const std::vector<NodeId>& nodes);
 
 /// f(i) for i in [0, n): on the library's threads when n is large enough to pay for waking
 /// them (a small colour class costs more to share than to run), in order otherwise. f must

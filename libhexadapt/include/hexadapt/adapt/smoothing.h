@@ -6,8 +6,8 @@
 // slides along them), and shortened by halves until the smallest scaled Jacobian of the cells
 // around the node does not go down; a move that cannot keep it is not made. A node whose
 // cells stay poor then tries a pattern search along the axes (within its constraint) that
-// only accepts a higher local minimum: it untangles what the Laplacian pull cannot. Nodes sharing no
-// cell are moved in parallel in a fixed order, so the result does not depend on the thread
+// only accepts a higher local minimum: it untangles what the Laplacian pull cannot. Nodes sharing
+// no cell are moved in parallel in a fixed order, so the result does not depend on the thread
 // count.
 #pragma once
 
@@ -17,8 +17,8 @@
 namespace hexadapt {
 
 struct SmoothOptions {
-  int iterations = 20;    ///< sweeps over all movable nodes
-  int halvings = 4;       ///< how many times a refused displacement is halved and retried
+  int iterations = 20;  ///< sweeps over all movable nodes
+  int halvings = 4;     ///< how many times a refused displacement is halved and retried
   /// A sweep that improves no node's local minimum by more than this stops the smoothing.
   double min_gain = 1e-6;
   /// Nodes whose local minimum stays below this also try the pattern search.
@@ -27,8 +27,8 @@ struct SmoothOptions {
 };
 
 struct SmoothResult {
-  int iterations = 0;   ///< sweeps done
-  index_t moves = 0;    ///< node moves made over all sweeps
+  int iterations = 0;  ///< sweeps done
+  index_t moves = 0;   ///< node moves made over all sweeps
 };
 
 /// Smooths the nodes with movable[n] != 0, keeping each within constraint[n].

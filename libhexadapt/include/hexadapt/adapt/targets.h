@@ -22,7 +22,7 @@
 namespace hexadapt {
 
 struct TargetOptions {
-  double eps_factor = 0.01;     ///< eps = eps_factor * mean(d^2) in the gradient weights
+  double eps_factor = 0.01;        ///< eps = eps_factor * mean(d^2) in the gradient weights
   double tiny_denominator = 1e-5;  ///< |d| below this: the crossing is the face's middle, t = 1/2
   /// An interface normal direction counts for the node's sliding constraint when its weight
   /// is above this share of the strongest one (2D triple points and 3D triple curves).
@@ -38,8 +38,8 @@ struct InterfaceFace {
 };
 
 struct Targets {
-  IdVector<NodeId, char> has;        ///< 1 for the interface nodes
-  IdVector<NodeId, Vec3> position;   ///< the target (a node's own position when has == 0)
+  IdVector<NodeId, char> has;       ///< 1 for the interface nodes
+  IdVector<NodeId, Vec3> position;  ///< the target (a node's own position when has == 0)
   /// The interface directions a node must keep to when smoothing slides it along the
   /// interface (empty for non-interface nodes).
   IdVector<NodeId, NodeConstraint> interface;
@@ -60,6 +60,11 @@ Targets compute_targets(const M& mesh, const Fractions& fractions,
 template <class M>
 std::vector<Vec3> fraction_gradients(const M& mesh, const Fractions& fractions, CellId c,
                                      double eps_factor);
+
+/// Each node's boundary constraint plus its interface directions: what smoothing keeps an
+/// interface node to, so that it slides along its interface (and the boundary).
+IdVector<NodeId, NodeConstraint> sliding_constraints(
+    const IdVector<NodeId, NodeConstraint>& boundary, const Targets& targets);
 
 /// Sum over the nodes with a target of |position - target|.
 template <class M>
