@@ -57,10 +57,10 @@ void check_result(const M& grid, const AdaptResult<M>& r) {
 
 // The paper's Table 1 "base algo" column: the base method is unreliable, below the 0.3
 // threshold at some resolutions and fine at others. Measured (min scaled Jacobian after the
-// direct move / after pillowing / at the end): triple point 42x18 -0.116 / -0.191 / 0.034
-// (14 cells below 0.3; 0.673 at 70x30); stirred disk 20x20 -0.175 / 0.055 / 0.251 (8 cells
-// below; 0.382 at 28x28); triple point extruded 56x24x3 -0.422 / 0.015 / 0.264 (9 below;
-// 0.369 at 42x18x3).
+// direct move / after pillowing / at the end): triple point 42x18 -0.116 / -0.165 / 0.127
+// (10 cells below 0.3; 0.696 at 70x30); stirred disk 20x20 -0.175 / 0.225 / 0.251 (8 cells
+// below; 0.371 at 28x28); triple point extruded 56x24x3 -0.422 / -0.029 / 0.271 (14 below;
+// 0.352 at 42x18x3).
 TEST(BaseMethod, TriplePointFallsBelowTheThresholdAtSomeResolution) {
   const double h = 1.0 / 6;
   const QuadMesh grid = make_quad_grid(42, 18, Vec3::Zero(), Vec3(h, h, 1));

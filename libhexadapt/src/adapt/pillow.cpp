@@ -60,17 +60,15 @@ std::vector<int> fans_around(const M& mesh, NodeId n, const std::vector<CellId>&
   return label;
 }
 
-// Where a copy goes, before scaling by the offset option: along the fan's inward normal (kept
-// on the boundary), as deep as the fan's cell centre lies in that direction; toward the
-// centre when the normals cancel out.
-Vec3 copy_offset(const NodeConstraint& boundary, const Vec3& inward, const Vec3& to_centre) {
+// Where a copy goes, before scaling by the offset option: along the fan's inward normal
+// (kept on the boundary), as far as the fan's cells' centres are from the node on average
+// (not as deep as their mean centre: around a concave corner that lies at the node itself).
+// Toward the mean centre when the normals cancel out.
+Vec3 copy_offset(const NodeConstraint& boundary, const Vec3& inward, const Vec3& to_centre,
+                 double reach) {
   const Vec3 d = boundary.project(inward);
   const double len = d.norm();
-  if (len > 1e-9) {
-    const Vec3 u = d / len;
-    const double depth = u.dot(to_centre);
-    if (depth > 0) return depth * u;
-  }
+  if (len > 1e-9) return reach * d / len;
   return boundary.project(to_centre);
 }
 
@@ -134,16 +132,21 @@ PillowResult<M> pillow_cells(const M& mesh, const IdVector<CellId, char>& in_set
     for (std::size_t f = 0; f < inward[n].size(); ++f) {
       const NodeId copy(static_cast<index_t>(points.size()));
       Vec3 centre = Vec3::Zero();
+      double reach = 0;
       int count = 0;
       for (std::size_t k = 0; k < around[n].size(); ++k) {
         if (static_cast<std::size_t>(fan[n][k]) != f) continue;
         const CellId c = around[n][k];
-        centre += cell_centroid(mesh, c);
+        const Vec3 x = cell_centroid(mesh, c);
+        centre += x;
+        reach += (x - p).norm();
         ++count;
         cells[c.idx()][static_cast<std::size_t>(corner_of(mesh, c, n))] = copy;
       }
       centre /= count;
-      points.push_back(p + options.offset * copy_offset(boundary[n], inward[n][f], centre - p));
+      reach /= count;
+      points.push_back(p + options.offset *
+                               copy_offset(boundary[n], inward[n][f], centre - p, reach));
       out.node_origin.push_back(n);
     }
   }
