@@ -1,7 +1,10 @@
 // Legacy VTK files (.vtk): read ASCII and BINARY STRUCTURED_POINTS, RECTILINEAR_GRID,
 // STRUCTURED_GRID and UNSTRUCTURED_GRID (classic CELLS/CELL_TYPES and the 5.1
-// OFFSETS/CONNECTIVITY layout), with CELL_DATA / POINT_DATA as SCALARS, VECTORS or FIELD
-// arrays; write binary UNSTRUCTURED_GRID.
+// OFFSETS/CONNECTIVITY layout), with CELL_DATA / POINT_DATA as SCALARS, VECTORS, NORMALS,
+// TENSORS or FIELD arrays (names and element types kept; METADATA blocks and lookup tables
+// skipped; bit arrays refused); write binary UNSTRUCTURED_GRID.
+// Data-set level string field data becomes MeshData::metadata, as does the title line
+// ("title"). Every count is checked against the bytes left before anything is allocated.
 #pragma once
 
 #include <string>

@@ -16,16 +16,27 @@
 namespace hexadapt::io {
 
 /// Parses a whole XML VTK file held in memory; `file` names it in error messages. The data
-/// set type is taken from the VTKFile element. Throws InputError.
+/// set type is taken from the VTKFile element; a file must hold one Piece. Cells: quads,
+/// pixels, hexahedra, voxels (see mesh_data.h for the order). Arrays keep their name, type
+/// and component count; String arrays of FieldData become metadata (several strings of one
+/// array joined by newlines). Throws InputError naming the file, the place (element, byte
+/// offset, cell) and what was expected.
 MeshData read_vtk_xml(std::string_view content, const std::string& file,
                       const ReadOptions& options = {});
 
-/// Writes an UnstructuredGrid (.vtu): appended binary data, zlib-compressed per options,
-/// metadata as string field data. Atomic. Throws IoError.
+/// Writes an UnstructuredGrid (.vtu): raw appended data with UInt64 headers; points as
+/// Float64, connectivity and offsets as Int64 in VTK's node order (VTK_HEXAHEDRON or
+/// VTK_QUAD), arrays with their own type, metadata as String field data. Compression: the
+/// file is zlib-compressed when options.compress is set and some array is larger than
+/// options.compress_above bytes; VTK's format compresses all arrays of a file or none, so
+/// the smaller arrays of such a file are stored in zlib blocks at level 0 (not compressed).
+/// The bytes do not depend on the thread count. Atomic. Throws OptionError (no cells, an
+/// array of the wrong size), IoError.
 void write_vtu(const MeshData& data, const std::string& path, const WriteOptions& options = {});
 
-/// Writes a StructuredGrid (.vts); needs data.structured_cells (a structured source).
-/// Throws OptionError when the data is not structured, IoError on write failure.
+/// Writes a StructuredGrid (.vts) like write_vtu; needs data.structured_cells with cells
+/// exactly those of that block (a structured source). Throws OptionError when the data is
+/// not structured, IoError on write failure.
 void write_vts(const MeshData& data, const std::string& path, const WriteOptions& options = {});
 
 }  // namespace hexadapt::io

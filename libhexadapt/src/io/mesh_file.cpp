@@ -1,0 +1,67 @@
+// Reading and writing by extension: the whole file is read into memory once, then parsed by
+// the reader of its format (the readers work on in-memory text, which keeps them fast and
+// lets the fuzz targets call them directly).
+#include "hexadapt/io/mesh_file.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <string>
+
+#include "hexadapt/core/error.h"
+#include "hexadapt/io/text_case.h"
+#include "hexadapt/io/vtk_legacy.h"
+#include "hexadapt/io/vtk_xml.h"
+
+namespace hexadapt::io {
+
+namespace {
+
+std::string extension_of(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/');
+  const std::size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string ext = path.substr(dot);
+  for (char& c : ext) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+  return ext;
+}
+
+std::string read_whole_file(const std::string& path) {
+  struct Closer {
+    void operator()(std::FILE* f) const { std::fclose(f); }
+  };
+  const std::unique_ptr<std::FILE, Closer> f(std::fopen(path.c_str(), "rb"));
+  if (!f) throw IoError(path + ": cannot open: " + std::strerror(errno));
+  std::string content;
+  char buffer[1 << 16];
+  std::size_t n;
+  while ((n = std::fread(buffer, 1, sizeof buffer, f.get())) > 0) content.append(buffer, n);
+  if (std::ferror(f.get())) throw IoError(path + ": cannot read: " + std::strerror(errno));
+  return content;
+}
+
+}  // namespace
+
+MeshData read_mesh(const std::string& path, const ReadOptions& options) {
+  const std::string ext = extension_of(path);
+  const bool xml = ext == ".vtu" || ext == ".vti" || ext == ".vtr" || ext == ".vts";
+  if (ext != ".vtk" && ext != ".txt" && !xml)
+    throw OptionError(path + ": unknown mesh file extension '" + ext +
+                      "' (supported for reading: .vtk .vtu .vti .vtr .vts .txt)");
+  const std::string content = read_whole_file(path);
+  if (ext == ".vtk") return read_vtk_legacy(content, path, options);
+  if (ext == ".txt") return read_text_case(content, path);
+  return read_vtk_xml(content, path, options);
+}
+
+void write_mesh(const MeshData& data, const std::string& path, const WriteOptions& options) {
+  const std::string ext = extension_of(path);
+  if (ext == ".vtu") return write_vtu(data, path, options);
+  if (ext == ".vts") return write_vts(data, path, options);
+  if (ext == ".vtk") return write_vtk_legacy(data, path);
+  throw OptionError(path + ": unknown mesh file extension '" + ext +
+                    "' (supported for writing: .vtu .vts .vtk)");
+}
+
+}  // namespace hexadapt::io

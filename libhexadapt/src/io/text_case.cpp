@@ -1,0 +1,144 @@
+// The plain text formats of hand-made cases (DESIGN sec. 7.1). The structured format is told
+// from the unstructured one by its second line: "ni nj [nk]" against a single node count.
+#include "hexadapt/io/text_case.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "hexadapt/core/error.h"
+#include "legacy_scanner.h"
+#include "vtk_cells.h"
+
+namespace hexadapt::io {
+
+namespace {
+
+using detail::LegacyScanner;
+
+constexpr std::int64_t kMaxIds = std::numeric_limits<index_t>::max();
+
+// Number of tokens on the first non-blank line after the current position (not consumed).
+std::size_t tokens_on_next_line(LegacyScanner& s) {
+  LegacyScanner look = s;
+  look.at_end();  // skips the newline and any blank lines
+  const std::string_view l = look.line();
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < l.size();) {
+    while (k < l.size() && (l[k] == ' ' || l[k] == '\t' || l[k] == '\r')) ++k;
+    if (k < l.size()) ++n;
+    while (k < l.size() && l[k] != ' ' && l[k] != '\t' && l[k] != '\r') ++k;
+  }
+  return n;
+}
+
+// Maps a file's cell number to MeshData's: the 2D format numbers cells j fastest.
+struct CellNumbering {
+  std::int64_t n_cells = 0;
+  std::int64_t ni = 0, nj = 0;  ///< > 0 for the 2D structured format only
+  std::int64_t operator()(std::int64_t c) const { return nj > 0 ? (c / nj) + ni * (c % nj) : c; }
+};
+
+void read_structured_mesh(LegacyScanner& s, int dim, MeshData& data, CellNumbering& numbering) {
+  std::array<std::int64_t, 3> dims{2, 2, 1};
+  std::int64_t n_points = 1;
+  for (int a = 0; a < dim; ++a) {
+    const auto n = s.integer("a number of cells per axis", 1, kMaxIds - 1);
+    dims[static_cast<std::size_t>(a)] = n + 1;
+    n_points *= n + 1;
+    if (n_points > kMaxIds) s.fail("too many cells for 32-bit ids");
+  }
+  // Refuse millions of cells announced in a file too small to list fractions for them,
+  // before allocating the lattice.
+  if (n_points > (1 << 20) && static_cast<std::size_t>(n_points / 8) > s.remaining())
+    s.fail("the grid has " + std::to_string(n_points) + " nodes but only " +
+           std::to_string(s.remaining()) + " bytes follow");
+  const auto blocks = s.integer("the number of blocks", 0, kMaxIds);
+  if (blocks != 1) s.fail("only one block is supported, found " + std::to_string(blocks));
+  std::vector<Vec3> pts;
+  pts.reserve(static_cast<std::size_t>(n_points));
+  for (std::int64_t k = 0; k < dims[2]; ++k)
+    for (std::int64_t j = 0; j < dims[1]; ++j)
+      for (std::int64_t i = 0; i < dims[0]; ++i)
+        pts.emplace_back(static_cast<double>(i), static_cast<double>(j), static_cast<double>(k));
+  detail::fill_structured(data, dims, std::move(pts), ReadOptions{}, s.file());
+  numbering.n_cells = data.n_cells();
+  if (dim == 2) numbering.ni = dims[0] - 1, numbering.nj = dims[1] - 1;
+}
+
+void read_unstructured_mesh(LegacyScanner& s, MeshData& data, CellNumbering& numbering) {
+  const auto n_nodes = s.integer("a number of nodes", 0, kMaxIds);
+  static constexpr detail::LegacyType kDouble{"double", ScalarType::float64, 8, true};
+  const auto xyz = s.reals(kDouble, 3 * static_cast<std::size_t>(n_nodes), "node coordinates");
+  for (std::size_t p = 0; p < static_cast<std::size_t>(n_nodes); ++p)
+    data.points.emplace_back(xyz[3 * p], xyz[3 * p + 1], xyz[3 * p + 2]);
+  const auto n_cells = s.integer("a number of cells", 0, kMaxIds);
+  for (std::int64_t c = 0; c < n_cells; ++c) {
+    const std::size_t at = s.mark();
+    const auto n = s.integer("a number of cell nodes", 0, kMaxIds);
+    if (n != 4)
+      s.fail_at(at, "cell " + std::to_string(c) + " has " + std::to_string(n) +
+                        " nodes, expected 4 (quads)");
+    std::array<std::int64_t, 4> ids{};
+    for (auto& id : ids) id = s.integer("a node index", 0, n_nodes - 1);
+    detail::append_vtk_cell(data, detail::vtk_quad, ids.data(), 4, c, s.file());
+  }
+  detail::finish_unstructured(data, ReadOptions{}, s.file());
+  numbering.n_cells = data.n_cells();
+}
+
+void read_material(LegacyScanner& s, const CellNumbering& numbering, std::vector<double>& sums,
+                   MeshData& data, std::vector<std::int64_t>& indices) {
+  const std::size_t at = s.mark();
+  const auto index = s.integer("a material index", 0, kMaxIds);
+  if (std::find(indices.begin(), indices.end(), index) != indices.end())
+    s.fail_at(at, "material index " + std::to_string(index) + " listed twice");
+  indices.push_back(index);
+  DataArray a;
+  a.name = "vf_" + std::string(s.expect_token("a material name"));
+  if (data.find_cell_array(a.name))
+    s.fail_at(at, "material '" + a.name.substr(3) + "' listed twice");
+  a.values.assign(static_cast<std::size_t>(numbering.n_cells), 0.0);
+  std::vector<bool> seen(a.values.size(), false);
+  const auto n = s.integer("a number of listed cells", 0, numbering.n_cells);
+  for (std::int64_t e = 0; e < n; ++e) {
+    const auto c =
+        static_cast<std::size_t>(numbering(s.integer("a cell index", 0, numbering.n_cells - 1)));
+    const double f = s.real("a volume fraction");
+    if (!(f >= 0.0 && f <= 1.0)) s.fail("volume fraction " + std::to_string(f) + " outside [0, 1]");
+    if (seen[c]) s.fail("cell listed twice for material '" + a.name.substr(3) + "'");
+    seen[c] = true;
+    a.values[c] = f;
+    sums[c] += f;
+    if (sums[c] > 1.0 + 1e-9)
+      s.fail("the fractions of this cell sum to " + std::to_string(sums[c]) + ", over 1");
+  }
+  data.set_cell_array(std::move(a));
+}
+
+}  // namespace
+
+MeshData read_text_case(std::string_view content, const std::string& file) {
+  LegacyScanner s(content, file);
+  MeshData data;
+  CellNumbering numbering;
+  const auto dim = static_cast<int>(s.integer("the dimension (2 or 3)", 2, 3));
+  const std::size_t on_line_2 = tokens_on_next_line(s);
+  if (on_line_2 == static_cast<std::size_t>(dim))
+    read_structured_mesh(s, dim, data, numbering);
+  else if (on_line_2 == 1 && dim == 2)
+    read_unstructured_mesh(s, data, numbering);
+  else
+    s.fail("expected " + std::to_string(dim) + " cell counts (structured format)" +
+           (dim == 2 ? " or a node count (unstructured format)" : "") + " on the second line");
+  const auto n_mat = s.integer("the number of materials", 1, 1 << 16);
+  std::vector<double> sums(static_cast<std::size_t>(numbering.n_cells), 0.0);
+  std::vector<std::int64_t> indices;
+  for (std::int64_t m = 0; m < n_mat; ++m) read_material(s, numbering, sums, data, indices);
+  if (!s.at_end())
+    s.fail("unexpected '" + std::string(s.peek_token()) + "' after the last material");
+  return data;
+}
+
+}  // namespace hexadapt::io

@@ -1,0 +1,92 @@
+#include "hexadapt/io/mesh_file.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include "hexadapt/core/error.h"
+#include "hexadapt/mesh/structured.h"
+
+namespace hexadapt::io {
+namespace {
+
+std::string temp_path(const std::string& name) {
+  return ::testing::TempDir() + "/hexadapt_mf_" + name;
+}
+
+MeshData small_hexes() {
+  MeshData d = from_mesh(make_hex_grid(2, 1, 1));
+  DataArray a;
+  a.name = "vf_a";
+  a.values = {0.25, 1};
+  d.set_cell_array(a);
+  return d;
+}
+
+std::vector<int> ids(const MeshData& d) {
+  std::vector<int> out;
+  for (NodeId n : d.cells) out.push_back(n.value());
+  return out;
+}
+
+TEST(MeshFile, WritesAndReadsEachWritableFormat) {
+  const MeshData d = small_hexes();
+  for (const char* ext : {".vtk", ".vtu", ".VTK"}) {
+    const std::string path = temp_path(std::string("out") + ext);
+    write_mesh(d, path);
+    const MeshData r = read_mesh(path);
+    EXPECT_EQ(ids(r), ids(d)) << ext;
+    EXPECT_EQ(r.points, d.points) << ext;
+    ASSERT_NE(r.find_cell_array("vf_a"), nullptr) << ext;
+    EXPECT_EQ(r.find_cell_array("vf_a")->values, d.find_cell_array("vf_a")->values) << ext;
+    std::remove(path.c_str());
+  }
+}
+
+TEST(MeshFile, TextCasesByExtension) {
+  const std::string path = temp_path("case.txt");
+  std::ofstream(path) << "2\n1 1\n1\n1\n0 a\n1\n0 1\n";
+  EXPECT_EQ(read_mesh(path).find_cell_array("vf_a")->values, std::vector<double>{1});
+  std::remove(path.c_str());
+}
+
+TEST(MeshFile, UnknownExtensionsListTheSupportedOnes) {
+  try {
+    write_mesh(small_hexes(), temp_path("out.obj"));
+    FAIL() << "no error";
+  } catch (const OptionError& e) {
+    EXPECT_NE(std::string(e.what()).find(".vtu .vts .vtk"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(read_mesh(temp_path("in.stl")), OptionError);
+  EXPECT_THROW(read_mesh(temp_path("no_extension")), OptionError);
+}
+
+TEST(MeshFile, MissingFileIsAnIoErrorWithTheReason) {
+  try {
+    read_mesh(temp_path("does_not_exist.vtk"));
+    FAIL() << "no error";
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find("does_not_exist.vtk: cannot open: No such file"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(MeshFile, MalformedContentIsAnInputErrorNamingTheFile) {
+  const std::string path = temp_path("bad.vtk");
+  std::ofstream(path)
+      << "# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 2 float\n0 0\n";
+  try {
+    read_mesh(path);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), path);
+    EXPECT_EQ(e.where(), "line 5");
+  }
+  std::remove(path.c_str());
+}
+
+}  // namespace
+}  // namespace hexadapt::io

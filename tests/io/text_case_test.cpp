@@ -1,0 +1,132 @@
+#include "hexadapt/io/text_case.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "hexadapt/core/error.h"
+#include "hexadapt/io/mesh_file.h"
+
+namespace hexadapt::io {
+namespace {
+
+TEST(TextCase, Structured2DNumbersCellsJFastest) {
+  // 2 x 3 cells; file cell 1 is (i=0, j=1), file cell 5 is (i=1, j=2).
+  const MeshData d = read_text_case(
+      "2\n2 3\n1\n2\n0 water\n2\n1 0.25\n5 1\n"
+      "1 air\n1\n1 0.75\n",
+      "t.txt");
+  ASSERT_EQ(d.dim, 2);
+  ASSERT_EQ(d.n_cells(), 6);
+  EXPECT_EQ(d.structured_cells, (std::array<int, 3>{2, 3, 0}));
+  const DataArray* w = d.find_cell_array("vf_water");
+  const DataArray* a = d.find_cell_array("vf_air");
+  ASSERT_TRUE(w && a);
+  EXPECT_EQ(w->type, ScalarType::float64);
+  EXPECT_EQ(w->values, (std::vector<double>{0, 0, 0.25, 0, 0, 1}));
+  EXPECT_EQ(a->values, (std::vector<double>{0, 0, 0.75, 0, 0, 0}));
+  // Unit cells from the origin: MeshData cell 5 = (1, 2) spans [1,2] x [2,3].
+  EXPECT_EQ(d.points[d.cells[4 * 5 + 2].idx()], Vec3(2, 3, 0));
+  EXPECT_EQ(d.cell_data.front().name, "vf_water");
+}
+
+TEST(TextCase, Structured3DNumbersCellsIFastest) {
+  const MeshData d = read_text_case("3\n2 1 2\n1\n1\n7 steel\n1\n3 0.5\n", "t.txt");
+  ASSERT_EQ(d.dim, 3);
+  ASSERT_EQ(d.n_cells(), 4);
+  EXPECT_EQ(d.find_cell_array("vf_steel")->values, (std::vector<double>{0, 0, 0, 0.5}));
+  EXPECT_EQ(d.points[d.cells[8 * 3 + 7].idx()], Vec3(2, 1, 2));
+}
+
+TEST(TextCase, Unstructured2D) {
+  const MeshData d = read_text_case(
+      "2\n6\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 1 0\n2 1 0\n2\n4 0 1 4 3\n4 1 2 5 4\n"
+      "1\n0 a\n2\n0 1\n1 0.5\n",
+      "u.txt");
+  ASSERT_EQ(d.dim, 2);
+  EXPECT_EQ(d.n_cells(), 2);
+  EXPECT_EQ(d.structured_cells, (std::array<int, 3>{0, 0, 0}));
+  EXPECT_EQ(d.find_cell_array("vf_a")->values, (std::vector<double>{1, 0.5}));
+}
+
+struct Bad {
+  const char* name;
+  std::string content;
+  std::string where, fragment;
+};
+
+TEST(TextCase, MalformedCasesNameTheLine) {
+  const std::string head = "2\n2 2\n1\n1\n0 a\n";
+  const std::vector<Bad> cases = {
+      {"dimension", "4\n2 2\n", "line 1", "out of range [2, 3]"},
+      {"second line", "3\n2 2\n", "line 1", "expected 3 cell counts"},
+      {"blocks", "2\n2 2\n2\n", "line 3", "only one block"},
+      {"zero cells", "2\n0 2\n", "line 2", "out of range"},
+      {"huge grid, no data", "2\n40000 40000\n1\n1\n0 a\n0\n", "line 2", "bytes follow"},
+      {"listed too many", head + "5\n", "line 6", "out of range [0, 4]"},
+      {"cell out of range", head + "1\n4 0.5\n", "line 7", "out of range [0, 3]"},
+      {"negative cell", head + "1\n-1 0.5\n", "line 7", "out of range"},
+      {"fraction over 1", head + "1\n0 1.5\n", "line 7", "outside [0, 1]"},
+      {"negative fraction", head + "1\n0 -0.1\n", "line 7", "outside [0, 1]"},
+      {"nan fraction", head + "1\n0 nan\n", "line 7", "outside [0, 1]"},
+      {"bad number", head + "1\n0 0.5x\n", "line 7", "found '0.5x'"},
+      {"truncated", head + "2\n0 0.5\n", "line 7", "unexpected end of file"},
+      {"listed twice", head + "2\n0 0.5\n0 0.5\n", "line 8", "listed twice"},
+      {"sum over 1", "2\n2 2\n1\n2\n0 a\n1\n3 0.6\n1 b\n1\n3 0.400001\n", "line 10",
+       "sum to 1.000001"},
+      {"same material twice", "2\n2 2\n1\n2\n0 a\n0\n1 a\n0\n", "line 7", "listed twice"},
+      {"trailing garbage", head + "0\nextra\n", "line 7", "unexpected 'extra'"},
+      {"unstruct not quad", "2\n4\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n1\n3 0 1 2\n", "line 8",
+       "expected 4"},
+      {"unstruct node range", "2\n4\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n1\n4 0 1 2 4\n", "line 8",
+       "out of range [0, 3]"},
+      {"unstruct truncated nodes", "2\n4\n0 0 0\n1 0 0\n", "line 2", "node coordinates"},
+  };
+  for (const Bad& b : cases) {
+    try {
+      read_text_case(b.content, "bad.txt");
+      ADD_FAILURE() << b.name << ": no error";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.file(), "bad.txt");
+      EXPECT_EQ(e.where(), b.where) << b.name << ": " << e.what();
+      EXPECT_NE(e.message().find(b.fragment), std::string::npos) << b.name << ": " << e.what();
+    }
+  }
+}
+
+TEST(TextCase, SumsWithinToleranceAreAccepted) {
+  EXPECT_NO_THROW(read_text_case("2\n1 1\n1\n2\n0 a\n1\n0 0.6\n1 b\n1\n0 0.4000000001\n", "t.txt"));
+}
+
+TEST(TextCase, EveryTestdataCaseReadsWithFractionsSummingToOne) {
+  int n_files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(HEXADAPT_TESTDATA)) {
+    if (entry.path().extension() != ".txt") continue;
+    ++n_files;
+    const MeshData d = read_mesh(entry.path().string());
+    SCOPED_TRACE(entry.path().filename().string());
+    EXPECT_GT(d.n_cells(), 0);
+    EXPECT_GE(d.cell_data.size(), 2u);
+    std::vector<double> sum(static_cast<std::size_t>(d.n_cells()), 0.0);
+    for (const DataArray& a : d.cell_data) {
+      EXPECT_EQ(a.name.rfind("vf_", 0), 0u);
+      for (std::size_t c = 0; c < sum.size(); ++c) sum[c] += a.values[c];
+    }
+    for (std::size_t c = 0; c < sum.size(); ++c) EXPECT_NEAR(sum[c], 1.0, 1e-9) << "cell " << c;
+    // Every case is a valid mesh for the kernels.
+    EXPECT_NO_THROW(to_mesh(d));
+  }
+  EXPECT_GE(n_files, 5);
+}
+
+TEST(TextCase, Figure2aCaseIsFiveBySeven) {
+  const MeshData d = read_mesh(std::string(HEXADAPT_TESTDATA) + "/fig2a_5x7_three_materials.txt");
+  EXPECT_EQ(d.structured_cells, (std::array<int, 3>{5, 7, 0}));
+  EXPECT_EQ(d.cell_data.size(), 3u);
+  // File cell 0 * 7 + 6 (i = 0, top-left) is all "top".
+  EXPECT_EQ(d.find_cell_array("vf_top")->values[static_cast<std::size_t>(0 + 5 * 6)], 1.0);
+}
+
+}  // namespace
+}  // namespace hexadapt::io

@@ -1,0 +1,125 @@
+#include <gtest/gtest.h>
+
+#include "hexadapt/core/error.h"
+#include "hexadapt/core/parallel.h"
+#include "hexadapt/io/vtk_xml.h"
+#include "io/vtk_xml_test_util.h"
+
+namespace hexadapt::io {
+namespace {
+
+void expect_same(const MeshData& a, const MeshData& b) {
+  ASSERT_EQ(a.dim, b.dim);
+  ASSERT_EQ(a.points.size(), b.points.size());
+  for (std::size_t k = 0; k < a.points.size(); ++k) EXPECT_EQ(a.points[k], b.points[k]) << k;
+  EXPECT_EQ(a.cells, b.cells);
+  ASSERT_EQ(a.cell_data.size(), b.cell_data.size());
+  for (std::size_t k = 0; k < a.cell_data.size(); ++k) {
+    EXPECT_EQ(a.cell_data[k].name, b.cell_data[k].name);
+    EXPECT_EQ(a.cell_data[k].type, b.cell_data[k].type) << a.cell_data[k].name;
+    EXPECT_EQ(a.cell_data[k].values, b.cell_data[k].values) << a.cell_data[k].name;
+  }
+  ASSERT_EQ(a.point_data.size(), b.point_data.size());
+  for (std::size_t k = 0; k < a.point_data.size(); ++k) {
+    EXPECT_EQ(a.point_data[k].name, b.point_data[k].name);
+    EXPECT_EQ(a.point_data[k].n_components, b.point_data[k].n_components);
+    EXPECT_EQ(a.point_data[k].values, b.point_data[k].values);
+  }
+  EXPECT_EQ(a.metadata, b.metadata);
+}
+
+MeshData write_and_read(const MeshData& d, bool vts, const WriteOptions& options) {
+  const std::string path = test::temp_path(vts ? "w.vts" : "w.vtu");
+  if (vts)
+    write_vts(d, path, options);
+  else
+    write_vtu(d, path, options);
+  MeshData back = read_vtk_xml(test::read_text(path), path);
+  std::filesystem::remove(path);
+  return back;
+}
+
+TEST(VtkXmlWriter, VtuRoundTripsHexesAndQuadsCompressedOrNot) {
+  for (bool hexes : {true, false})
+    for (bool compress : {true, false}) {
+      const MeshData d = test::sample_mesh(5, hexes);
+      WriteOptions o;
+      o.compress = compress;
+      o.compress_above = 100;
+      MeshData back = write_and_read(d, false, o);
+      back.structured_cells = d.structured_cells;  // a .vtu is unstructured
+      expect_same(d, back);
+    }
+}
+
+TEST(VtkXmlWriter, VtsRoundTripsStructuredData) {
+  for (bool hexes : {true, false}) {
+    const MeshData d = test::sample_mesh(4, hexes);
+    const MeshData back = write_and_read(d, true, {});
+    expect_same(d, back);
+    EXPECT_EQ(back.structured_cells, d.structured_cells);
+  }
+}
+
+TEST(VtkXmlWriter, VtsRefusesUnstructuredCells) {
+  MeshData d = test::sample_mesh(2, true);
+  std::swap(d.cells[0], d.cells[1]);
+  EXPECT_THROW(write_vts(d, test::temp_path("bad.vts")), OptionError);
+  d.structured_cells = {0, 0, 0};
+  EXPECT_THROW(write_vts(d, test::temp_path("bad.vts")), OptionError);
+}
+
+TEST(VtkXmlWriter, CompressionIsDeclaredOnlyWhenSomeArrayIsLarge) {
+  const MeshData d = test::sample_mesh(3, true);
+  const std::string path = test::temp_path("c.vtu");
+  WriteOptions o;
+  o.compress_above = 1 << 20;
+  write_vtu(d, path, o);
+  EXPECT_EQ(test::read_text(path).find("compressor"), std::string::npos);
+  o.compress_above = 64;
+  write_vtu(d, path, o);
+  const std::string compressed = test::read_text(path);
+  EXPECT_NE(compressed.find("compressor=\"vtkZLibDataCompressor\""), std::string::npos);
+  expect_same(d, read_vtk_xml(compressed, path));
+  std::filesystem::remove(path);
+}
+
+TEST(VtkXmlWriter, BytesDoNotDependOnTheThreadCount) {
+  const MeshData d = test::sample_mesh(24, true);  // arrays of many zlib blocks
+  const std::string path = test::temp_path("t.vtu");
+  std::string first;
+  for (int threads : {1, 2, 3}) {
+    set_threads(threads);
+    write_vtu(d, path, {});
+    const std::string bytes = test::read_text(path);
+    if (first.empty()) first = bytes;
+    EXPECT_EQ(bytes, first) << threads << " threads";
+    expect_same(d, read_vtk_xml(bytes, path));
+  }
+  set_threads(0);
+  std::filesystem::remove(path);
+}
+
+TEST(VtkXmlWriter, IntegerArraysAreRoundedAndClampedToTheirType) {
+  MeshData d = test::sample_mesh(1, false);
+  DataArray a;
+  a.name = "small";
+  a.type = ScalarType::uint8;
+  a.values = {300.0};
+  d.set_cell_array(a);
+  a.name = "rounded";
+  a.type = ScalarType::int32;
+  a.values = {-2.6};
+  d.set_cell_array(a);
+  const MeshData back = write_and_read(d, false, {});
+  EXPECT_EQ(back.find_cell_array("small")->values, std::vector<double>{255.0});
+  EXPECT_EQ(back.find_cell_array("rounded")->values, std::vector<double>{-3.0});
+}
+
+TEST(VtkXmlWriter, FailedWriteIsAnIoErrorAndLeavesNoFile) {
+  const MeshData d = test::sample_mesh(1, true);
+  EXPECT_THROW(write_vtu(d, "/nonexistent-dir/x.vtu"), IoError);
+}
+
+}  // namespace
+}  // namespace hexadapt::io
