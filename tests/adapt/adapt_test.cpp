@@ -4,6 +4,7 @@
 
 #include "adapt/flow_cases.h"
 #include "hexadapt/core/error.h"
+#include "hexadapt/core/parallel.h"
 
 namespace hexadapt {
 namespace {
@@ -96,6 +97,25 @@ TEST(BaseMethod, SmoothsASimpleDiskToGoodQuality) {
   check_result(grid, r);
   EXPECT_GT(r.min_quality, 0.4);
   EXPECT_EQ(r.n_inverted, 0);
+}
+
+TEST(BaseMethod, GivesTheSameMeshWhateverTheThreadCount) {
+  // Large enough that the colour classes of the move and the smoothing run on threads.
+  const QuadMesh grid = make_quad_grid(64, 40);
+  const Fractions f = test::sample_fractions(
+      grid,
+      [](const Vec3& p) {
+        return static_cast<int>(std::floor((p.x() + 2.0 * std::sin(0.3 * p.y())) / 4.1)) % 3;
+      },
+      3, 4);
+  set_threads(1);
+  const auto a = adapt(grid, f, test::majority(f));
+  set_threads(2);
+  const auto b = adapt(grid, f, test::majority(f));
+  set_threads(0);
+  ASSERT_EQ(a.mesh.n_nodes(), b.mesh.n_nodes());
+  for (NodeId v : id_range<NodeId>(a.mesh.n_nodes())) ASSERT_EQ(a.mesh.point(v), b.mesh.point(v));
+  EXPECT_EQ(a.material.raw(), b.material.raw());
 }
 
 TEST(Adapt, RejectsTheGuaranteedMethodForNowAndBadOptions) {
