@@ -2,7 +2,6 @@
 #include "hexadapt/measure/imprint.h"
 
 #include <cmath>
-#include <cstdlib>
 
 #include "cell_bins.h"
 #include "cell_pieces.h"
@@ -112,7 +111,7 @@ Imprint imprint(const io::MeshData& input, const io::MeshData& output,
   for (index_t o = 0; o < output.n_cells(); ++o)
     r.output_volume[static_cast<std::size_t>(material[static_cast<std::size_t>(o)])] +=
         output_cell_volume(output, o);
-  const CellBins bins(output, std::getenv("HX_ONEBIN") ? 1e-12 : options.bins_per_cell);
+  const CellBins bins(output, options.bins_per_cell);
   parallel_for(r.n_cells, [&](std::int64_t i) {
     const auto c = static_cast<index_t>(i);
     double volume = 0;
