@@ -38,11 +38,13 @@ Vec3 hex_centroid(const io::MeshData& d, index_t cell) {
   return c / 8.0;
 }
 
-double diagonal(const io::MeshData& d, index_t cell) {
+Eigen::AlignedBox3d cell_box(const io::MeshData& d, index_t cell) {
   Eigen::AlignedBox3d box;
   for (int k = 0; k < d.nodes_per_cell(); ++k) box.extend(node(d, cell, k));
-  return box.diagonal().norm();
+  return box;
 }
+
+double diagonal(const io::MeshData& d, index_t cell) { return cell_box(d, cell).diagonal().norm(); }
 
 // True when every corner is inside (or within tol of) every plane.
 bool contains_corners(const io::MeshData& d, index_t cell, const std::vector<Plane>& planes,
@@ -59,7 +61,7 @@ std::vector<Plane> tet_planes(const Tet& t) {
           plane_through(p[0], p[3], p[2]), plane_through(p[1], p[2], p[3])};
 }
 
-std::vector<std::vector<Plane>> hex_pieces(const io::MeshData& d, index_t cell, double tol,
+std::vector<Piece> hex_pieces(const io::MeshData& d, index_t cell, double tol,
                                            double* volume) {
   const std::array<Tet, 12> tets = hex_tets(d, cell);
   *volume = 0;
@@ -78,10 +80,15 @@ std::vector<std::vector<Plane>> hex_pieces(const io::MeshData& d, index_t cell, 
   }
   const bool degenerate =
       std::any_of(planes.begin(), planes.end(), [](const Plane& p) { return p.n.isZero(); });
-  if (!degenerate && *volume > 0 && contains_corners(d, cell, planes, eps)) return {planes};
-  std::vector<std::vector<Plane>> pieces;
+  if (!degenerate && *volume > 0 && contains_corners(d, cell, planes, eps))
+    return {{planes, cell_box(d, cell)}};
+  std::vector<Piece> pieces;
   for (const Tet& t : tets)
-    if (t.sign > 0) pieces.push_back(tet_planes(t));
+    if (t.sign > 0) {
+      Eigen::AlignedBox3d box;
+      for (const Vec3& p : t.p) box.extend(p);
+      pieces.push_back({tet_planes(t), box});
+    }
   return pieces;
 }
 
@@ -103,7 +110,7 @@ double cross_z(const Vec3& a, const Vec3& b, const Vec3& c) {
   return (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
 }
 
-std::vector<std::vector<Plane>> quad_pieces(const io::MeshData& d, index_t cell, double tol,
+std::vector<Piece> quad_pieces(const io::MeshData& d, index_t cell, double tol,
                                             double* volume) {
   double sign = 1;
   const Polygon q = quad_polygon(d, cell, &sign);
@@ -115,10 +122,15 @@ std::vector<std::vector<Plane>> quad_pieces(const io::MeshData& d, index_t cell,
     if (cross_z(q[static_cast<std::size_t>((i + 3) % 4)], q[static_cast<std::size_t>(i)],
                 q[static_cast<std::size_t>((i + 1) % 4)]) < -eps)
       reflex = i;
-  if (reflex < 0) return {polygon_planes(q)};
+  if (reflex < 0) return {{polygon_planes(q), cell_box(d, cell)}};
   // A dart: split along the diagonal through the reflex corner.
   auto at = [&](int k) { return q[static_cast<std::size_t>((reflex + k) % 4)]; };
-  return {polygon_planes({at(0), at(1), at(2)}), polygon_planes({at(0), at(2), at(3)})};
+  auto piece = [](const Polygon& t) {
+    Eigen::AlignedBox3d box;
+    for (const Vec3& p : t) box.extend(p);
+    return Piece{polygon_planes(t), box};
+  };
+  return {piece({at(0), at(1), at(2)}), piece({at(0), at(2), at(3)})};
 }
 
 }  // namespace
@@ -149,8 +161,8 @@ Polygon quad_polygon(const io::MeshData& d, index_t cell, double* sign) {
   return q;
 }
 
-std::vector<std::vector<Plane>> convex_pieces(const io::MeshData& data, index_t cell,
-                                              double tolerance, double* volume) {
+std::vector<Piece> convex_pieces(const io::MeshData& data, index_t cell, double tolerance,
+                                 double* volume) {
   return data.dim == 3 ? hex_pieces(data, cell, tolerance, volume)
                        : quad_pieces(data, cell, tolerance, volume);
 }

@@ -25,6 +25,12 @@ struct Tet {
   double sign = 1;        ///< -1 when the cell was inverted here (the corners were swapped)
 };
 
+/// A convex piece: the intersection of the half-spaces, and a box around it.
+struct Piece {
+  std::vector<Plane> planes;
+  Eigen::AlignedBox3d box;
+};
+
 /// The 12 tetrahedra of hex `cell` of the data (3D).
 std::array<Tet, 12> hex_tets(const io::MeshData& data, index_t cell);
 /// The quad's polygon (2D), counter-clockwise; sign -1 when the quad was clockwise.
@@ -32,7 +38,7 @@ Polygon quad_polygon(const io::MeshData& data, index_t cell, double* sign);
 
 /// Convex pieces of input cell `cell`; `tolerance` (relative to the cell's diagonal) decides
 /// when a face is planar and a cell convex. Also returns the cell's volume (area).
-std::vector<std::vector<Plane>> convex_pieces(const io::MeshData& data, index_t cell,
-                                              double tolerance, double* volume);
+std::vector<Piece> convex_pieces(const io::MeshData& data, index_t cell,
+                          double tolerance, double* volume);
 
 }  // namespace hexadapt::clip

@@ -1,6 +1,7 @@
 // Exact imprint of an output mesh onto the input cells (see imprint.h).
 #include "hexadapt/measure/imprint.h"
 
+#include <array>
 #include <cmath>
 
 #include "cell_bins.h"
@@ -14,13 +15,22 @@ namespace hexadapt {
 namespace {
 
 using clip::Plane;
-using Pieces = std::vector<std::vector<Plane>>;
+using Pieces = std::vector<clip::Piece>;
+
+// Boxes overlapping with positive volume (area: the z extents of 2D boxes are empty).
+bool overlap(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b, int dim) {
+  for (int k = 0; k < dim; ++k)
+    if (a.max()[k] <= b.min()[k] || b.max()[k] <= a.min()[k]) return false;
+  return true;
+}
 
 // Volume of a positively oriented tet inside one convex piece; the tet is only clipped by
 // the planes it straddles.
-double tet_in_piece(const clip::Tet& t, const std::vector<Plane>& piece) {
-  std::vector<const Plane*> cuts;
-  for (const Plane& pl : piece) {
+double tet_in_piece(const clip::Tet& t, const Eigen::AlignedBox3d& box, const clip::Piece& piece) {
+  if (!overlap(box, piece.box, 3)) return 0;
+  std::array<const Plane*, 16> cuts;
+  std::size_t n_cuts = 0;
+  for (const Plane& pl : piece.planes) {
     int out = 0, in = 0;
     for (const Vec3& p : t.p) {
       const double s = pl.side(p);
@@ -28,13 +38,12 @@ double tet_in_piece(const clip::Tet& t, const std::vector<Plane>& piece) {
       in += s <= 0;
     }
     if (out == 4) return 0;  // wholly outside this plane
-    if (in < 4) cuts.push_back(&pl);
+    if (in < 4) cuts[n_cuts++] = &pl;
   }
-  const double full = clip::tet_volume(t.p[0], t.p[1], t.p[2], t.p[3]);
-  if (cuts.empty()) return full;
+  if (n_cuts == 0) return clip::tet_volume(t.p[0], t.p[1], t.p[2], t.p[3]);
   clip::Polyhedron poly = clip::tetrahedron(t.p[0], t.p[1], t.p[2], t.p[3]);
-  for (const Plane* pl : cuts) {
-    clip::clip_polyhedron(poly, *pl);
+  for (std::size_t k = 0; k < n_cuts; ++k) {
+    clip::clip_polyhedron(poly, *cuts[k]);
     if (poly.faces.size() < 4) return 0;
   }
   return clip::polyhedron_volume(poly);
@@ -43,8 +52,10 @@ double tet_in_piece(const clip::Tet& t, const std::vector<Plane>& piece) {
 double hex_in_pieces(const io::MeshData& output, index_t o, const Pieces& pieces) {
   double v = 0;
   for (const clip::Tet& t : clip::hex_tets(output, o)) {
+    Eigen::AlignedBox3d box;
+    for (const Vec3& p : t.p) box.extend(p);
     double in = 0;
-    for (const auto& piece : pieces) in += tet_in_piece(t, piece);
+    for (const auto& piece : pieces) in += tet_in_piece(t, box, piece);
     v += t.sign * in;
   }
   return v;
@@ -57,7 +68,7 @@ double quad_in_pieces(const io::MeshData& output, index_t o, const Pieces& piece
   double v = 0;
   for (const auto& piece : pieces) {
     a = q;
-    for (const Plane& pl : piece) {
+    for (const Plane& pl : piece.planes) {
       clip::clip_polygon(a, pl, b);
       std::swap(a, b);
       if (a.size() < 3) break;
