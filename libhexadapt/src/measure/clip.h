@@ -20,8 +20,18 @@ struct Plane {
 
 using Polygon = std::vector<Vec3>;
 
+/// Faces stored one after the other (no allocation once the buffers have grown): face f
+/// is points[begin(f) .. end[f]).
 struct Polyhedron {
-  std::vector<Polygon> faces;
+  std::vector<Vec3> points;
+  std::vector<std::size_t> end;
+  std::size_t n_faces() const { return end.size(); }
+  std::size_t begin(std::size_t f) const { return f == 0 ? 0 : end[f - 1]; }
+  void clear() {
+    points.clear();
+    end.clear();
+  }
+  void close_face() { end.push_back(points.size()); }
 };
 
 /// Signed area of a polygon in the xy plane (positive counter-clockwise).
@@ -29,14 +39,15 @@ double polygon_area(const Polygon& p);
 /// The part of `p` where plane.side <= 0 (into `out`, which is overwritten).
 void clip_polygon(const Polygon& p, const Plane& plane, Polygon& out);
 
-/// The tetrahedron a, b, c, d, which must be positively oriented.
-Polyhedron tetrahedron(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+/// The tetrahedron a, b, c, d (positively oriented) into `out`.
+void tetrahedron(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, Polyhedron& out);
 /// Signed volume of the tetrahedron (positive when d is on the left of a, b, c).
 double tet_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 /// Volume of a closed polyhedron with outward faces.
 double polyhedron_volume(const Polyhedron& p);
-/// Cuts `p` by the plane, keeping the side <= 0 and closing the cut with a cap face.
-void clip_polyhedron(Polyhedron& p, const Plane& plane);
+/// Cuts `p` by the plane, keeping the side <= 0 and closing the cut with a cap face;
+/// `scratch` is working memory.
+void clip_polyhedron(Polyhedron& p, const Plane& plane, Polyhedron& scratch);
 
 /// The plane through a, b, c with normal (b - a) x (c - a); a zero normal for collinear points.
 Plane plane_through(const Vec3& a, const Vec3& b, const Vec3& c);

@@ -41,10 +41,12 @@ double tet_in_piece(const clip::Tet& t, const Eigen::AlignedBox3d& box, const cl
     if (in < 4) cuts[n_cuts++] = &pl;
   }
   if (n_cuts == 0) return clip::tet_volume(t.p[0], t.p[1], t.p[2], t.p[3]);
-  clip::Polyhedron poly = clip::tetrahedron(t.p[0], t.p[1], t.p[2], t.p[3]);
+  // Per-thread buffers: clipping allocates nothing once they have grown.
+  thread_local clip::Polyhedron poly, scratch;
+  clip::tetrahedron(t.p[0], t.p[1], t.p[2], t.p[3], poly);
   for (std::size_t k = 0; k < n_cuts; ++k) {
-    clip::clip_polyhedron(poly, *cuts[k]);
-    if (poly.faces.size() < 4) return 0;
+    clip::clip_polyhedron(poly, *cuts[k], scratch);
+    if (poly.n_faces() < 4) return 0;
   }
   return clip::polyhedron_volume(poly);
 }
