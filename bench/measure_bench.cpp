@@ -38,9 +38,10 @@ void run(const char* name, const io::MeshData& in, const io::MeshData& out, int 
   for (double v : im.volume) imprinted += v;
   for (double v : im.cell_volume) cells += v;
   for (double v : im.output_volume) output += v;
-  std::printf("%-22s threads %d  wall %7.3f s  cpu %7.3f s  %.3g cells/s  "
-              "volume input %.12g output %.12g imprinted %.12g\n",
-              name, threads, wall, cpu, in.n_cells() / wall, cells, output, imprinted);
+  std::printf(
+      "%-22s threads %d  wall %7.3f s  cpu %7.3f s  %.3g cells/s  "
+      "volume input %.12g output %.12g imprinted %.12g\n",
+      name, threads, wall, cpu, in.n_cells() / wall, cells, output, imprinted);
 }
 
 }  // namespace

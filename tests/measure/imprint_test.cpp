@@ -2,18 +2,18 @@
 // per material, independent Monte-Carlo estimates (point location by inverse bilinear /
 // affine maps, not by clipping), a dart-shaped input cell, and the analytic discrepancy of
 // a straight interface moved by a known offset.
+#include "hexadapt/measure/imprint.h"
+
 #include <gtest/gtest.h>
 
+#include <Eigen/Dense>
 #include <cmath>
 #include <random>
-
-#include <Eigen/Dense>
 
 #include "hexadapt/core/error.h"
 #include "hexadapt/core/parallel.h"
 #include "hexadapt/io/mesh_data.h"
 #include "hexadapt/measure/discrepancy.h"
-#include "hexadapt/measure/imprint.h"
 #include "hexadapt/measure/target_distance.h"
 #include "hexadapt/mesh/fractions.h"
 #include "hexadapt/mesh/structured.h"
@@ -48,7 +48,8 @@ Eigen::Matrix3d rotation(double angle, const Vec3& axis) {
 
 std::vector<int> pattern(index_t n, int n_materials) {
   std::vector<int> m(static_cast<std::size_t>(n));
-  for (std::size_t i = 0; i < m.size(); ++i) m[i] = static_cast<int>((i * 7 + i / 3) % static_cast<std::size_t>(n_materials));
+  for (std::size_t i = 0; i < m.size(); ++i)
+    m[i] = static_cast<int>((i * 7 + i / 3) % static_cast<std::size_t>(n_materials));
   return m;
 }
 
@@ -131,7 +132,8 @@ TEST(Imprint, VolumePerMaterialIsConserved) {
   const io::MeshData flat = hexes(5, 5, 4);
   for (std::size_t i = 0; i < in.points.size(); ++i) {
     const Vec3 p = flat.points[i];
-    const bool boundary = p.x() == 0 || p.x() == 5 || p.y() == 0 || p.y() == 5 || p.z() == 0 || p.z() == 4;
+    const bool boundary =
+        p.x() == 0 || p.x() == 5 || p.y() == 0 || p.y() == 5 || p.z() == 0 || p.z() == 4;
     if (boundary) in.points[i] = out.points[i] = p;  // flat boundary shared by both meshes
   }
   const std::vector<int> m = pattern(out.n_cells(), 4);
@@ -213,14 +215,15 @@ void expect_monte_carlo(const io::MeshData& in, const io::MeshData& out, InCell 
       if (in_cell(in, c, p)) ci = c;
     for (index_t o = 0; o < out.n_cells() && co < 0; ++o)
       if (in_cell(out, o, p)) co = o;
-    if (ci >= 0 && co >= 0) hits[static_cast<std::size_t>(ci * n_mat + m[static_cast<std::size_t>(co)])] += 1;
+    if (ci >= 0 && co >= 0)
+      hits[static_cast<std::size_t>(ci * n_mat + m[static_cast<std::size_t>(co)])] += 1;
   }
   const double w = box.sizes().head(in.dim).prod() / samples;
   double err = 0, sum = 0;
   for (std::size_t i = 0; i < hits.size(); ++i) {
     const double p = hits[i] / samples;
-    const double sigma = std::sqrt(std::max(p * (1 - p), 1.0 / samples) / samples) *
-                         box.sizes().head(in.dim).prod();
+    const double sigma =
+        std::sqrt(std::max(p * (1 - p), 1.0 / samples) / samples) * box.sizes().head(in.dim).prod();
     EXPECT_NEAR(im.volume[i], hits[i] * w, 5 * sigma + 1e-12) << "slot " << i;
     err += std::abs(im.volume[i] - hits[i] * w);
     sum += im.volume[i];
@@ -266,7 +269,9 @@ void expect_line_discrepancy(Make make, int dim) {
   Fractions f(in.n_cells(), {"vf_left", "vf_right"});
   const io::MeshData flat = make(n, h);
   for (CellId c : id_range<CellId>(in.n_cells())) {
-    const double x0 = flat.points[flat.cells[c.idx() * static_cast<std::size_t>(flat.nodes_per_cell())].idx()].x();
+    const double x0 =
+        flat.points[flat.cells[c.idx() * static_cast<std::size_t>(flat.nodes_per_cell())].idx()]
+            .x();
     const double left = std::clamp((a - x0) / h, 0.0, 1.0);
     f(c, 0) = left;
     f(c, 1) = 1 - left;
@@ -275,7 +280,12 @@ void expect_line_discrepancy(Make make, int dim) {
   const io::MeshData fo = make(n / 2, 2 * h);
   for (index_t o = 0; o < out.n_cells(); ++o) {
     m[static_cast<std::size_t>(o)] =
-        fo.points[fo.cells[static_cast<std::size_t>(o) * static_cast<std::size_t>(fo.nodes_per_cell())].idx()].x() < b ? 0 : 1;
+        fo.points[fo.cells[static_cast<std::size_t>(o) *
+                           static_cast<std::size_t>(fo.nodes_per_cell())]
+                      .idx()]
+                    .x() < b
+            ? 0
+            : 1;
   }
   const DiscrepancyReport d = discrepancy(imprint(in, out, m, 2), f);
   const double height = std::pow(n * h, dim - 1);
@@ -284,7 +294,9 @@ void expect_line_discrepancy(Make make, int dim) {
   // Per cell: the column of cells with x in [3, 4) loses 2 * 0.63, those in [4, 6) 2 * 1.
   const double per = std::pow(h, dim - 1);
   for (CellId c : id_range<CellId>(in.n_cells())) {
-    const double x0 = flat.points[flat.cells[c.idx() * static_cast<std::size_t>(flat.nodes_per_cell())].idx()].x();
+    const double x0 =
+        flat.points[flat.cells[c.idx() * static_cast<std::size_t>(flat.nodes_per_cell())].idx()]
+            .x();
     const double want = x0 == 3 ? 2 * (4 - a) * per : (x0 == 4 || x0 == 5) ? 2 * per : 0.0;
     EXPECT_NEAR(d.per_cell[c.idx()], want, 1e-12) << "cell " << c.value();
   }

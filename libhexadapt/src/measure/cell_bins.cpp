@@ -32,8 +32,8 @@ CellBins::CellBins(const io::MeshData& mesh, double bins_per_cell) : dim_(mesh.d
     n_[static_cast<std::size_t>(a)] =
         std::clamp(static_cast<int>(std::ceil(ext[a] / side)), 1, 1 << 20);
   size_ = ext.cwiseQuotient(Eigen::Vector3d(n_[0], n_[1], n_[2]));
-  const std::size_t n_bins =
-      static_cast<std::size_t>(n_[0]) * static_cast<std::size_t>(n_[1]) * static_cast<std::size_t>(n_[2]);
+  const std::size_t n_bins = static_cast<std::size_t>(n_[0]) * static_cast<std::size_t>(n_[1]) *
+                             static_cast<std::size_t>(n_[2]);
   start_.assign(n_bins + 1, 0);
   auto each_bin = [&](index_t c, auto&& f) {
     const auto lo = bin_of(boxes_[static_cast<std::size_t>(c)].min());
@@ -41,7 +41,8 @@ CellBins::CellBins(const io::MeshData& mesh, double bins_per_cell) : dim_(mesh.d
     for (int k = lo[2]; k <= hi[2]; ++k)
       for (int j = lo[1]; j <= hi[1]; ++j)
         for (int i = lo[0]; i <= hi[0]; ++i)
-          f((static_cast<std::size_t>(k) * static_cast<std::size_t>(n_[1]) + static_cast<std::size_t>(j)) *
+          f((static_cast<std::size_t>(k) * static_cast<std::size_t>(n_[1]) +
+             static_cast<std::size_t>(j)) *
                 static_cast<std::size_t>(n_[0]) +
             static_cast<std::size_t>(i));
   };
@@ -56,8 +57,8 @@ std::array<int, 3> CellBins::bin_of(const Eigen::Vector3d& p) const {
   std::array<int, 3> b{0, 0, 0};
   for (int a = 0; a < 3; ++a) {
     const double t = std::floor((p[a] - domain_.min()[a]) / size_[a]);
-    b[static_cast<std::size_t>(a)] =
-        static_cast<int>(std::clamp(t, 0.0, static_cast<double>(n_[static_cast<std::size_t>(a)] - 1)));
+    b[static_cast<std::size_t>(a)] = static_cast<int>(
+        std::clamp(t, 0.0, static_cast<double>(n_[static_cast<std::size_t>(a)] - 1)));
   }
   return b;
 }
@@ -71,10 +72,10 @@ void CellBins::query(const Eigen::AlignedBox3d& q, std::vector<index_t>& out) co
   for (int k = lo[2]; k <= hi[2]; ++k)
     for (int j = lo[1]; j <= hi[1]; ++j)
       for (int i = lo[0]; i <= hi[0]; ++i) {
-        const std::size_t b =
-            (static_cast<std::size_t>(k) * static_cast<std::size_t>(n_[1]) + static_cast<std::size_t>(j)) *
-                static_cast<std::size_t>(n_[0]) +
-            static_cast<std::size_t>(i);
+        const std::size_t b = (static_cast<std::size_t>(k) * static_cast<std::size_t>(n_[1]) +
+                               static_cast<std::size_t>(j)) *
+                                  static_cast<std::size_t>(n_[0]) +
+                              static_cast<std::size_t>(i);
         for (std::size_t s = start_[b]; s < start_[b + 1]; ++s) {
           const index_t c = items_[s];
           const Eigen::AlignedBox3d o = q.intersection(box(c));

@@ -3,9 +3,8 @@
 // serially so the lists are in increasing cell order).
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Geometry>
+#include <vector>
 
 #include "hexadapt/core/ids.h"
 
@@ -17,7 +16,9 @@ struct MeshData;
 class CellBins {
  public:
   CellBins(const io::MeshData& mesh, double bins_per_cell);
-  const Eigen::AlignedBox3d& box(index_t cell) const { return boxes_[static_cast<std::size_t>(cell)]; }
+  const Eigen::AlignedBox3d& box(index_t cell) const {
+    return boxes_[static_cast<std::size_t>(cell)];
+  }
   /// Cells whose box overlaps `q` with positive volume (area in 2D), increasing ids, into
   /// `out` (overwritten).
   void query(const Eigen::AlignedBox3d& q, std::vector<index_t>& out) const;

@@ -9,7 +9,8 @@ namespace hexadapt::clip {
 namespace {
 
 Vec3 node(const io::MeshData& d, index_t cell, int k) {
-  return d.points[d.cells[static_cast<std::size_t>(cell) * static_cast<std::size_t>(d.nodes_per_cell()) +
+  return d.points[d.cells[static_cast<std::size_t>(cell) *
+                              static_cast<std::size_t>(d.nodes_per_cell()) +
                           static_cast<std::size_t>(k)]
                       .idx()];
 }
@@ -44,7 +45,9 @@ Eigen::AlignedBox3d cell_box(const io::MeshData& d, index_t cell) {
   return box;
 }
 
-double diagonal(const io::MeshData& d, index_t cell) { return cell_box(d, cell).diagonal().norm(); }
+double diagonal(const io::MeshData& d, index_t cell) {
+  return cell_box(d, cell).diagonal().norm();
+}
 
 // True when every corner is inside (or within tol of) every plane.
 bool contains_corners(const io::MeshData& d, index_t cell, const std::vector<Plane>& planes,
@@ -61,8 +64,7 @@ std::vector<Plane> tet_planes(const Tet& t) {
           plane_through(p[0], p[3], p[2]), plane_through(p[1], p[2], p[3])};
 }
 
-std::vector<Piece> hex_pieces(const io::MeshData& d, index_t cell, double tol,
-                                           double* volume) {
+std::vector<Piece> hex_pieces(const io::MeshData& d, index_t cell, double tol, double* volume) {
   const std::array<Tet, 12> tets = hex_tets(d, cell);
   *volume = 0;
   for (const Tet& t : tets) *volume += t.sign * tet_volume(t.p[0], t.p[1], t.p[2], t.p[3]);
@@ -70,8 +72,8 @@ std::vector<Piece> hex_pieces(const io::MeshData& d, index_t cell, double tol,
   std::vector<Plane> planes;
   for (int f = 0; f < 6; ++f) {
     const auto tri = face_triangles(d, cell, f);
-    const Plane a = plane_through(node(d, cell, tri[0][0]), node(d, cell, tri[0][1]),
-                                  node(d, cell, tri[0][2]));
+    const Plane a =
+        plane_through(node(d, cell, tri[0][0]), node(d, cell, tri[0][1]), node(d, cell, tri[0][2]));
     planes.push_back(a);
     // One plane for a planar face; two for a folded one.
     if (std::abs(a.side(node(d, cell, tri[1][2]))) > eps)
@@ -102,7 +104,8 @@ Plane edge_plane(const Vec3& a, const Vec3& b) {
 
 std::vector<Plane> polygon_planes(const std::vector<Vec3>& p) {
   std::vector<Plane> planes;
-  for (std::size_t i = 0; i < p.size(); ++i) planes.push_back(edge_plane(p[i], p[(i + 1) % p.size()]));
+  for (std::size_t i = 0; i < p.size(); ++i)
+    planes.push_back(edge_plane(p[i], p[(i + 1) % p.size()]));
   return planes;
 }
 
@@ -110,8 +113,7 @@ double cross_z(const Vec3& a, const Vec3& b, const Vec3& c) {
   return (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
 }
 
-std::vector<Piece> quad_pieces(const io::MeshData& d, index_t cell, double tol,
-                                            double* volume) {
+std::vector<Piece> quad_pieces(const io::MeshData& d, index_t cell, double tol, double* volume) {
   double sign = 1;
   const Polygon q = quad_polygon(d, cell, &sign);
   *volume = sign * polygon_area(q);

@@ -38,7 +38,7 @@ Polygon quad_polygon(const io::MeshData& data, index_t cell, double* sign);
 
 /// Convex pieces of input cell `cell`; `tolerance` (relative to the cell's diagonal) decides
 /// when a face is planar and a cell convex. Also returns the cell's volume (area).
-std::vector<Piece> convex_pieces(const io::MeshData& data, index_t cell,
-                          double tolerance, double* volume);
+std::vector<Piece> convex_pieces(const io::MeshData& data, index_t cell, double tolerance,
+                                 double* volume);
 
 }  // namespace hexadapt::clip

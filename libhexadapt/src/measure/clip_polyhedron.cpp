@@ -23,8 +23,9 @@ double tet_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
 
 void tetrahedron(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, Polyhedron& out) {
   out.clear();
-  for (const auto& f : {std::array<const Vec3*, 3>{&a, &c, &b}, std::array<const Vec3*, 3>{&a, &b, &d},
-                        std::array<const Vec3*, 3>{&a, &d, &c}, std::array<const Vec3*, 3>{&b, &c, &d}}) {
+  for (const auto& f :
+       {std::array<const Vec3*, 3>{&a, &c, &b}, std::array<const Vec3*, 3>{&a, &b, &d},
+        std::array<const Vec3*, 3>{&a, &d, &c}, std::array<const Vec3*, 3>{&b, &c, &d}}) {
     for (const Vec3* q : f) out.points.push_back(*q);
     out.close_face();
   }
@@ -36,7 +37,8 @@ double polyhedron_volume(const Polyhedron& p) {
   double v = 0;
   for (std::size_t f = 0; f < p.n_faces(); ++f) {
     const std::size_t b = p.begin(f), e = p.end[f];
-    for (std::size_t i = b + 1; i + 1 < e; ++i) v += tet_volume(r, p.points[b], p.points[i], p.points[i + 1]);
+    for (std::size_t i = b + 1; i + 1 < e; ++i)
+      v += tet_volume(r, p.points[b], p.points[i], p.points[i + 1]);
   }
   return v;
 }

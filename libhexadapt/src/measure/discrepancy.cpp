@@ -2,7 +2,6 @@
 #include "hexadapt/measure/discrepancy.h"
 
 #include <cmath>
-
 #include <nlohmann/json.hpp>
 
 #include "hexadapt/core/error.h"
@@ -13,10 +12,11 @@ namespace hexadapt {
 
 DiscrepancyReport discrepancy(const Imprint& im, const Fractions& f) {
   if (f.n_cells() != im.n_cells || f.n_materials() != im.n_materials)
-    throw InputError({}, {}, "discrepancy: " + std::to_string(f.n_cells()) + " cells and " +
-                                 std::to_string(f.n_materials()) + " materials in the fractions, " +
-                                 std::to_string(im.n_cells) + " and " +
-                                 std::to_string(im.n_materials) + " in the imprint");
+    throw InputError({}, {},
+                     "discrepancy: " + std::to_string(f.n_cells()) + " cells and " +
+                         std::to_string(f.n_materials()) + " materials in the fractions, " +
+                         std::to_string(im.n_cells) + " and " + std::to_string(im.n_materials) +
+                         " in the imprint");
   DiscrepancyReport r;
   r.per_cell.assign(static_cast<std::size_t>(im.n_cells), 0.0);
   r.materials.resize(static_cast<std::size_t>(im.n_materials));

@@ -96,12 +96,13 @@ void check_inputs(const io::MeshData& input, const io::MeshData& output,
                   const std::vector<int>& material, int n_materials) {
   if (input.dim == 0 || output.dim == 0) throw InputError({}, {}, "imprint: a mesh has no cells");
   if (input.dim != output.dim)
-    throw InputError({}, {}, "imprint: the reference grid is " + std::to_string(input.dim) +
-                                 "D but the mesh is " + std::to_string(output.dim) + "D");
+    throw InputError({}, {},
+                     "imprint: the reference grid is " + std::to_string(input.dim) +
+                         "D but the mesh is " + std::to_string(output.dim) + "D");
   if (material.size() != static_cast<std::size_t>(output.n_cells()))
-    throw InputError({}, {}, "imprint: " + std::to_string(material.size()) +
-                                 " materials given for " + std::to_string(output.n_cells()) +
-                                 " cells");
+    throw InputError({}, {},
+                     "imprint: " + std::to_string(material.size()) + " materials given for " +
+                         std::to_string(output.n_cells()) + " cells");
   for (std::size_t o = 0; o < material.size(); ++o)
     if (material[o] < 0 || material[o] >= n_materials)
       throw InputError({}, "cell " + std::to_string(o),
@@ -134,8 +135,8 @@ Imprint imprint(const io::MeshData& input, const io::MeshData& output,
     bins.query(cell_box(input, c), candidates);
     double* slot = r.volume.data() + static_cast<std::size_t>(c) * n_mat;
     for (index_t o : candidates) {
-      const double v = input.dim == 3 ? hex_in_pieces(output, o, pieces)
-                                      : quad_in_pieces(output, o, pieces);
+      const double v =
+          input.dim == 3 ? hex_in_pieces(output, o, pieces) : quad_in_pieces(output, o, pieces);
       slot[material[static_cast<std::size_t>(o)]] += v;
     }
   });

@@ -2,7 +2,6 @@
 #include "hexadapt/measure/target_distance.h"
 
 #include <cmath>
-
 #include <nlohmann/json.hpp>
 
 #include "hexadapt/core/error.h"

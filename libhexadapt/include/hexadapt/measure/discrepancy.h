@@ -23,11 +23,11 @@ struct MaterialVolume {
 };
 
 struct DiscrepancyReport {
-  double total = 0;          ///< sum_c d_c
-  double input_volume = 0;   ///< sum_c V(c)
-  double relative = 0;       ///< total / input_volume
-  double max_cell = 0;       ///< max_c d_c
-  CellId max_cell_id;        ///< the lowest id reaching it
+  double total = 0;              ///< sum_c d_c
+  double input_volume = 0;       ///< sum_c V(c)
+  double relative = 0;           ///< total / input_volume
+  double max_cell = 0;           ///< max_c d_c
+  CellId max_cell_id;            ///< the lowest id reaching it
   std::vector<double> per_cell;  ///< d_c
   std::vector<MaterialVolume> materials;
 };

@@ -30,9 +30,9 @@ struct ImprintOptions {
 
 struct Imprint {
   int n_materials = 0;
-  index_t n_cells = 0;              ///< input cells
-  std::vector<double> volume;       ///< [c * n_materials + m]: V(c ∩ output cells of m)
-  std::vector<double> cell_volume;  ///< V(c) (12-tet volume of a hex, area of a quad)
+  index_t n_cells = 0;                ///< input cells
+  std::vector<double> volume;         ///< [c * n_materials + m]: V(c ∩ output cells of m)
+  std::vector<double> cell_volume;    ///< V(c) (12-tet volume of a hex, area of a quad)
   std::vector<double> output_volume;  ///< per material: total volume of its output cells
   double at(index_t c, int m) const {
     return volume[static_cast<std::size_t>(c) * static_cast<std::size_t>(n_materials) +

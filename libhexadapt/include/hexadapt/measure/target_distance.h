@@ -19,7 +19,7 @@ struct TargetDistances {
   index_t nodes = 0;         ///< nodes with a (finite) target
   double sum = 0;            ///< dist
   double max = 0;
-  NodeId max_node;           ///< the lowest id reaching max
+  NodeId max_node;  ///< the lowest id reaching max
 };
 
 /// Throws InputError when the array exists with a number of components other than 3.
