@@ -320,6 +320,9 @@ TEST(Discrepancy, RejectsMismatchedFractions) {
   EXPECT_THROW(discrepancy(im, Fractions(4, {"vf_a"})), InputError);
   EXPECT_THROW(imprint(g, g, {0, 2, 0, 1}, 2), InputError);
   EXPECT_THROW(imprint(g, hexes(1, 1, 1), {0}, 1), InputError);
+  io::MeshData broken = g;
+  broken.cells[5] = NodeId(9);
+  EXPECT_THROW(imprint(broken, g, {0, 1, 0, 1}, 2), InputError);
 }
 
 TEST(TargetDistances, SumAndMax) {

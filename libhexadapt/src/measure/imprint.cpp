@@ -99,6 +99,13 @@ void check_inputs(const io::MeshData& input, const io::MeshData& output,
     throw InputError({}, {},
                      "imprint: the reference grid is " + std::to_string(input.dim) +
                          "D but the mesh is " + std::to_string(output.dim) + "D");
+  for (const io::MeshData* d : {&input, &output})
+    for (std::size_t i = 0; i < d->cells.size(); ++i)
+      if (!d->cells[i].valid() || d->cells[i].value() >= d->n_points())
+        throw InputError(
+            {}, "cell " + std::to_string(i / static_cast<std::size_t>(d->nodes_per_cell())),
+            "node " + std::to_string(d->cells[i].value()) + " does not exist (" +
+                std::to_string(d->n_points()) + " points)");
   if (material.size() != static_cast<std::size_t>(output.n_cells()))
     throw InputError({}, {},
                      "imprint: " + std::to_string(material.size()) + " materials given for " +
