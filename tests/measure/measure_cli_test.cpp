@@ -175,10 +175,64 @@ TEST_F(MeasureCli, BadInputAndUsage) {
 TEST_F(MeasureCli, HelpDocumentsEveryOption) {
   std::string out;
   ASSERT_EQ(run("--help", &out), 0);
-  for (const char* opt :
-       {"--threshold", "--bins", "--quality-field", "--json", "--threads", "-q", "-v", "--list",
-        "--duplicate-tolerance", "--conformity-tolerance", "--material-array", "--plane"})
+  for (const char* opt : {"--threshold", "--bins", "--quality-field", "--json", "--threads", "-q",
+                          "-v", "--list", "--duplicate-tolerance", "--conformity-tolerance",
+                          "--material-array", "--plane", "--reference",
+                          "--discrepancy-field", "--target-array"})
     EXPECT_NE(out.find(opt), std::string::npos) << opt;
+}
+
+// A 4x4x1 reference grid whose interface x = 1.5 splits column 1 in halves, and a 2x2x1
+// output mesh (cells of size 2) with material 0 left of x = 2: the column of cells
+// x in [1, 2) is off by 2 * 0.5 per cell, the total is 4 * 1 = 4 of a volume of 16.
+TEST_F(MeasureCli, DiscrepancyAgainstReference) {
+  io::MeshData ref = io::from_mesh(make_hex_grid(4, 4, 1));
+  io::DataArray left{"vf_left", 1, io::ScalarType::float64, {}}, right = left;
+  right.name = "vf_right";
+  for (index_t c = 0; c < 16; ++c) {
+    const double x0 = static_cast<double>(c % 4);
+    const double f = x0 < 1 ? 1.0 : x0 < 2 ? 0.5 : 0.0;
+    left.values.push_back(f);
+    right.values.push_back(1 - f);
+  }
+  ref.set_cell_array(left);
+  ref.set_cell_array(right);
+  io::write_mesh(ref, path("ref.vtu"));
+  io::MeshData mesh = io::from_mesh(make_hex_grid(2, 2, 1, Vec3::Zero(), Vec3(2, 2, 1)));
+  mesh.set_cell_array({"material", 1, io::ScalarType::int32, {0, 1, 0, 1}});
+  io::DataArray target{"target", 3, io::ScalarType::float64, {}};
+  for (const Vec3& p : mesh.points)
+    for (double v : {p.x() + 0.5, p.y(), p.z()}) target.values.push_back(v);
+  mesh.set_point_array(target);
+  io::write_mesh(mesh, path("mesh.vtu"));
+  std::string out;
+  ASSERT_EQ(run(path("mesh.vtu") + " --reference " + path("ref.vtu") + " --discrepancy-field " +
+                    path("d.vtu") + " --json " + path("report.json"),
+                &out),
+            0)
+      << out << slurp(path("stderr.txt"));
+  const auto j = report();
+  EXPECT_NEAR(j["discrepancy"]["total"].get<double>(), 4.0, 1e-12);
+  EXPECT_NEAR(j["discrepancy"]["relative"].get<double>(), 0.25, 1e-12);
+  EXPECT_NEAR(j["discrepancy"]["max_cell"]["value"].get<double>(), 1.0, 1e-12);
+  EXPECT_EQ(j["discrepancy"]["max_cell"]["cell"].get<int>() % 4, 1);  // ties up to rounding
+  EXPECT_EQ(j["discrepancy"]["materials"][0]["name"], "left");
+  EXPECT_NEAR(j["discrepancy"]["materials"][0]["input"].get<double>(), 6.0, 1e-12);
+  EXPECT_NEAR(j["discrepancy"]["materials"][0]["output"].get<double>(), 8.0, 1e-12);
+  EXPECT_NEAR(j["distances"]["dist"].get<double>(), 0.5 * 18, 1e-12);
+  EXPECT_NEAR(j["distances"]["max"].get<double>(), 0.5, 1e-12);
+  EXPECT_EQ(j["distances"]["nodes"], 18);
+  const io::MeshData field = io::read_mesh(path("d.vtu"));
+  const io::DataArray* d = field.find_cell_array("discrepancy");
+  ASSERT_NE(d, nullptr);
+  for (index_t c = 0; c < 16; ++c)
+    EXPECT_NEAR(d->values[static_cast<std::size_t>(c)], c % 4 == 1 ? 1.0 : 0.0, 1e-12) << c;
+  // A material index with no fraction array, and a field without a reference.
+  mesh.set_cell_array({"material", 1, io::ScalarType::int32, {0, 2, 0, 1}});
+  io::write_mesh(mesh, path("bad.vtu"));
+  EXPECT_EQ(run(path("bad.vtu") + " --reference " + path("ref.vtu")), 2);
+  EXPECT_NE(slurp(path("stderr.txt")).find("bad.vtu"), std::string::npos);
+  EXPECT_EQ(run(path("mesh.vtu") + " --discrepancy-field " + path("e.vtu")), 1);
 }
 
 }  // namespace

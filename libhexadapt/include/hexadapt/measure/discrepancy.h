@@ -1,0 +1,41 @@
+// Discrepancy of an output mesh against the input fractions (paper sec. 6.2, eq. 5):
+// per input cell c, d_c = sum_m |V(c ∩ M_m) - ma_m(c) V(c)|, from the exact imprint
+// (imprint.h); the total is the sum over the cells. Also the volume balance per material:
+// what the fractions hold, what the output cells of the material hold, and how much of
+// that lies inside the input grid.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "hexadapt/core/ids.h"
+
+namespace hexadapt {
+
+class Fractions;
+struct Imprint;
+
+struct MaterialVolume {
+  std::string name;
+  double input = 0;      ///< sum_c ma_m(c) V(c)
+  double output = 0;     ///< volume of the output cells of m
+  double imprinted = 0;  ///< sum_c V(c ∩ M_m): the part inside the input grid
+};
+
+struct DiscrepancyReport {
+  double total = 0;              ///< sum_c d_c
+  double input_volume = 0;       ///< sum_c V(c)
+  double relative = 0;           ///< total / input_volume
+  double max_cell = 0;           ///< max_c d_c
+  CellId max_cell_id;            ///< the lowest id reaching it
+  std::vector<double> per_cell;  ///< d_c
+  std::vector<MaterialVolume> materials;
+};
+
+/// Throws InputError when the fractions and the imprint disagree on cells or materials.
+DiscrepancyReport discrepancy(const Imprint& imprint, const Fractions& fractions);
+
+/// The report (without per_cell) as a JSON object (text), fields in docs/reports.md.
+std::string discrepancy_json(const DiscrepancyReport& report);
+
+}  // namespace hexadapt

@@ -1,0 +1,54 @@
+// Imprint of an output mesh onto the input grid (paper sec. 6.2, eq. 5; DESIGN sec. 4.4).
+//
+// For every input cell c and material m, the volume (area in 2D) of c intersected with the
+// output cells of material m, exact up to rounding: quads are clipped as polygons, hexes
+// are split into 12 tetrahedra (faces split along the diagonal through their lowest global
+// node id, so that neighbours agree) and clipped by the half-spaces of the input cell's
+// convex pieces. Candidate output cells come from a uniform grid of bins over their
+// bounding boxes. The loop runs in parallel over input cells, each writing its own slots,
+// so the result does not depend on the thread count. Cost: linear in the cells when the
+// two meshes have similar cell sizes.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "hexadapt/core/ids.h"
+
+namespace hexadapt {
+namespace io {
+struct MeshData;
+}
+
+struct ImprintOptions {
+  /// Relative to a cell's diagonal: how far from planar a face, or from convex a cell, may
+  /// be and still be clipped as one convex piece (else it is split into tets / triangles).
+  double convex_tolerance = 1e-12;
+  /// Bins of the candidate grid per output cell (about).
+  double bins_per_cell = 1.0;
+};
+
+struct Imprint {
+  int n_materials = 0;
+  index_t n_cells = 0;                ///< input cells
+  std::vector<double> volume;         ///< [c * n_materials + m]: V(c ∩ output cells of m)
+  std::vector<double> cell_volume;    ///< V(c) (12-tet volume of a hex, area of a quad)
+  std::vector<double> output_volume;  ///< per material: total volume of its output cells
+  double at(index_t c, int m) const {
+    return volume[static_cast<std::size_t>(c) * static_cast<std::size_t>(n_materials) +
+                  static_cast<std::size_t>(m)];
+  }
+};
+
+/// Imprints `output` (material of each output cell in `material`, values in
+/// [0, n_materials)) onto the cells of `input`. Both must have the same dimension. Throws
+/// InputError (dimension mismatch, a material out of range or of the wrong size).
+Imprint imprint(const io::MeshData& input, const io::MeshData& output,
+                const std::vector<int>& material, int n_materials,
+                const ImprintOptions& options = {});
+
+/// The output's material per cell, read from its integer cell array `name`. Throws
+/// InputError when missing, not one component, or not a non-negative integer.
+std::vector<int> cell_materials(const io::MeshData& output, const std::string& name);
+
+}  // namespace hexadapt

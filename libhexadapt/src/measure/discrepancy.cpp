@@ -1,0 +1,68 @@
+// Per-cell discrepancy (paper eq. 5) and volume balance per material.
+#include "hexadapt/measure/discrepancy.h"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "hexadapt/core/error.h"
+#include "hexadapt/measure/imprint.h"
+#include "hexadapt/mesh/fractions.h"
+
+namespace hexadapt {
+
+DiscrepancyReport discrepancy(const Imprint& im, const Fractions& f) {
+  if (f.n_cells() != im.n_cells || f.n_materials() != im.n_materials)
+    throw InputError({}, {},
+                     "discrepancy: " + std::to_string(f.n_cells()) + " cells and " +
+                         std::to_string(f.n_materials()) + " materials in the fractions, " +
+                         std::to_string(im.n_cells) + " and " + std::to_string(im.n_materials) +
+                         " in the imprint");
+  DiscrepancyReport r;
+  r.per_cell.assign(static_cast<std::size_t>(im.n_cells), 0.0);
+  r.materials.resize(static_cast<std::size_t>(im.n_materials));
+  for (int m = 0; m < im.n_materials; ++m) {
+    auto& mv = r.materials[static_cast<std::size_t>(m)];
+    mv.name = f.names()[static_cast<std::size_t>(m)];
+    mv.output = im.output_volume[static_cast<std::size_t>(m)];
+  }
+  for (CellId c : id_range<CellId>(im.n_cells)) {
+    const double vc = im.cell_volume[c.idx()];
+    double d = 0;
+    for (int m = 0; m < im.n_materials; ++m) {
+      const double want = f(c, m) * vc, got = im.at(c.value(), m);
+      d += std::abs(got - want);
+      r.materials[static_cast<std::size_t>(m)].input += want;
+      r.materials[static_cast<std::size_t>(m)].imprinted += got;
+    }
+    r.per_cell[c.idx()] = d;
+    r.total += d;
+    r.input_volume += vc;
+    if (d > r.max_cell) {
+      r.max_cell = d;
+      r.max_cell_id = c;
+    }
+  }
+  r.relative = r.input_volume > 0 ? r.total / r.input_volume : 0;
+  return r;
+}
+
+std::string discrepancy_json(const DiscrepancyReport& r) {
+  nlohmann::ordered_json j;
+  j["total"] = r.total;
+  j["relative"] = r.relative;
+  j["input_volume"] = r.input_volume;
+  j["max_cell"] = {{"value", r.max_cell},
+                   {"cell", r.max_cell_id.valid() ? nlohmann::ordered_json(r.max_cell_id.value())
+                                                  : nlohmann::ordered_json(nullptr)}};
+  auto mats = nlohmann::ordered_json::array();
+  for (const auto& m : r.materials)
+    mats.push_back({{"name", m.name},
+                    {"input", m.input},
+                    {"output", m.output},
+                    {"imprinted", m.imprinted},
+                    {"imprinted_minus_input", m.imprinted - m.input}});
+  j["materials"] = mats;
+  return j.dump();
+}
+
+}  // namespace hexadapt
