@@ -26,7 +26,7 @@ struct Args {
   std::string reference;
   std::string discrepancy_field;
   std::string target_array = "target";
-  io::Plane plane = io::Plane::automatic;
+  cli::InputOptions in;  ///< --plane, and how the reference fractions are read
   QualityReportOptions report;
 };
 
@@ -67,14 +67,7 @@ void add_options(CLI::App& app, Args& a) {
   app.add_option("--target-array", a.target_array,
                  "Point array (3 components) of node targets for the distances")
       ->capture_default_str();
-  const std::map<std::string, io::Plane> planes = {{"auto", io::Plane::automatic},
-                                                   {"xy", io::Plane::xy},
-                                                   {"yz", io::Plane::yz},
-                                                   {"xz", io::Plane::xz}};
-  app.add_option("--plane", a.plane,
-                 "Plane of 2D data sets: auto (the flat axis of a structured grid), xy, yz, xz")
-      ->transform(CLI::CheckedTransformer(planes, CLI::ignore_case))
-      ->default_str("auto");
+  cli::add_input_options(app, a.in);
 }
 
 // Library errors about the data name no file: add the input's name.
@@ -133,15 +126,13 @@ struct DiscrepancyRun {
 // reference's m-th fraction array.
 DiscrepancyRun measure_discrepancy(const Args& a, const io::MeshData& mesh, PhaseTimes& times) {
   Timer timer;
-  io::ReadOptions read;
-  read.plane = a.plane;
   DiscrepancyRun run;
-  run.reference = io::read_mesh(a.reference, read);
+  run.reference = io::read_mesh(a.reference, a.in.read_options());
   times.emplace_back("read_reference", timer.seconds());
   timer.restart();
   Fractions fractions;
   try {
-    fractions = extract_fractions(run.reference, FractionOptions{}, nullptr, a.reference);
+    fractions = extract_fractions(run.reference, a.in.fractions, nullptr, a.reference);
   } catch (const InputError& e) {
     rethrow_with_file(e, a.reference);
   }
@@ -188,9 +179,7 @@ int measure(const CLI::App& app, const cli::CommonOptions& common, const Args& a
   }
   PhaseTimes times;
   Timer timer;
-  io::ReadOptions read;
-  read.plane = a.plane;
-  const io::MeshData data = io::read_mesh(a.input, read);
+  const io::MeshData data = io::read_mesh(a.input, a.in.read_options());
   times.emplace_back("read", timer.seconds());
   timer.restart();
   QualityReport report;
