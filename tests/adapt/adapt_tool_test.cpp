@@ -87,7 +87,8 @@ TEST(AdaptTool, ExitCodes) {
   EXPECT_EQ(run_tool(in + " -o " + (dir / "g.vtu").string() + " -q"), 0);
   // Input cells below the threshold: stop with exit 3 and write nothing, unless allowed.
   const QuadMesh jittered = make_quad_grid(10, 10, test::jittered_points(10, 10, 0, 0.3, 7));
-  write_assigned(jittered, [](const Vec3& p) { return p.x() < 4.5; }, 2, 4, dir / "jit.vtu");
+  write_assigned(
+      jittered, [](const Vec3& p) { return p.x() < 4.5; }, 2, 4, dir / "jit.vtu");
   const std::string jit = (dir / "jit.vtu").string();
   const fs::path bad = dir / "bad.vtu";
   EXPECT_EQ(run_tool(jit + " -o " + bad.string() + " --threshold 0.9 -q"), 3);

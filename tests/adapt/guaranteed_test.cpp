@@ -101,8 +101,7 @@ INSTANTIATE_TEST_SUITE_P(
                       GeneratedCase{"stir", {16, 16}, 0.5}, GeneratedCase{"stir", {24, 24}, 1.0},
                       GeneratedCase{"triple-point", {21, 9}, 1.0, 3},
                       GeneratedCase{"vortex", {24, 24}}, GeneratedCase{"venn", {20, 20}},
-                      GeneratedCase{"slotted-disk", {24, 24}},
-                      GeneratedCase{"asteroid", {8, 8, 8}},
+                      GeneratedCase{"slotted-disk", {24, 24}}, GeneratedCase{"asteroid", {8, 8, 8}},
                       GeneratedCase{"venn", {20, 20}, -1, 0, 0.2}),
     [](const ::testing::TestParamInfo<GeneratedCase>& i) {
       std::string s = label(i.param);

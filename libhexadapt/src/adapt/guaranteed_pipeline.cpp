@@ -132,8 +132,8 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
   r.dist_init = first.dist;
   record_step(r, mesh, "move", clock, options.progress, 0.3);
 
-  r.loops = move_smooth_loop(mesh, targets, first, sliding_constraints(boundary, targets), mo,
-                             options);
+  r.loops =
+      move_smooth_loop(mesh, targets, first, sliding_constraints(boundary, targets), mo, options);
   record_step(r, mesh, "move-smooth", clock, options.progress, 1.0);
 
   r.mesh = std::move(mesh);
@@ -146,8 +146,7 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
   return r;
 }
 
-template AdaptResult<QuadMesh> run_guaranteed_pipeline<QuadMesh>(const QuadMesh&,
-                                                                 const Fractions&,
+template AdaptResult<QuadMesh> run_guaranteed_pipeline<QuadMesh>(const QuadMesh&, const Fractions&,
                                                                  const IdVector<CellId, int>&,
                                                                  const AdaptOptions&);
 template AdaptResult<HexMesh> run_guaranteed_pipeline<HexMesh>(const HexMesh&, const Fractions&,

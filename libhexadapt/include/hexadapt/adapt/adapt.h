@@ -34,13 +34,13 @@ std::string to_string(AdaptMethod method);
 
 struct AdaptOptions {
   AdaptMethod method = AdaptMethod::guaranteed;  ///< which pipeline runs
-  double threshold = 0.3;                  ///< S_q, the quality the guaranteed method keeps
-  int steps = 16;                          ///< steps of the controlled move
-  BoundaryOptions boundary;                ///< feature detection on the domain boundary
-  TargetOptions targets;                   ///< target computation
-  PillowOptions pillow;                    ///< where pillow nodes start
-  SmoothOptions smooth;                    ///< smoothing sweeps
-  Progress progress;                       ///< phase progress, nullptr = silent
+  double threshold = 0.3;                        ///< S_q, the quality the guaranteed method keeps
+  int steps = 16;                                ///< steps of the controlled move
+  BoundaryOptions boundary;                      ///< feature detection on the domain boundary
+  TargetOptions targets;                         ///< target computation
+  PillowOptions pillow;                          ///< where pillow nodes start
+  SmoothOptions smooth;                          ///< smoothing sweeps
+  Progress progress;                             ///< phase progress, nullptr = silent
   /// guaranteed: run even when input cells are below the threshold (no guarantee then).
   bool allow_bad_input = false;
   int max_loops = 20;  ///< guaranteed: move-smooth rounds at most
