@@ -56,7 +56,7 @@ TEST(AdaptTool, WritesTheMeshTheArraysAndTheReport) {
   ASSERT_EQ(run_tool((dir / "in.vtu").string() + " -o " + out + " --json " + json + " -q"), 0);
   const io::MeshData d = io::read_mesh(out);
   EXPECT_EQ(d.dim, 2);
-  EXPECT_EQ(d.n_cells(), grid.n_cells());  // the guaranteed method does not pillow (yet)
+  EXPECT_GE(d.n_cells(), grid.n_cells());  // cavities add cells
   ASSERT_NE(d.find_cell_array("material"), nullptr);
   ASSERT_NE(d.find_point_array("target"), nullptr);
   ASSERT_NE(d.find_point_array("distance"), nullptr);
@@ -69,7 +69,7 @@ TEST(AdaptTool, WritesTheMeshTheArraysAndTheReport) {
             report["result"]["dist_init"].get<double>());
   EXPECT_GE(report["result"]["min_quality"].get<double>(), 0.3);
   EXPECT_EQ(report["result"]["cells"], d.n_cells());
-  EXPECT_EQ(report["result"]["steps"].size(), 4u);
+  EXPECT_EQ(report["result"]["steps"].size(), 5u);  // check targets move cavity move-smooth
   EXPECT_TRUE(report["threshold_met"].get<bool>());
   fs::remove_all(dir);
 }

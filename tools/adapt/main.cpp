@@ -19,6 +19,7 @@ struct Args {
   std::string method = "guaranteed";
   bool allow_bad_input = false;
   int max_loops = 20;
+  int cavity_range = 3;
   std::vector<std::string> fractions;
   std::string void_material;
   double threshold = 0.3;
@@ -44,10 +45,21 @@ Json result_json(const AdaptResult<M>& r, index_t input_cells) {
   j["input_cells_below_threshold"] = r.bad_input_cells.size();
   j["move_smooth_loops"] = r.loops;
   j["blocked_nodes"] = r.n_blocked;
-  // Cavity pillowing (paper sec. 5.2) is not implemented: nothing tried, nothing added.
-  j["cavities_tried"] = 0;
-  j["cavities_published"] = 0;
-  j["cells_added_by_pillowing"] = 0;
+  j["cavities_tried"] = r.cavities.size();
+  j["cavities_published"] = r.n_cavities_published;
+  j["cells_added_by_pillowing"] = r.n_cells_added;
+  Json cavities = Json::array();
+  for (const auto& a : r.cavities) {
+    Json seeds = Json::array();
+    for (NodeId s : a.seeds) seeds.push_back(s.value());
+    cavities.push_back({{"material", a.material},
+                        {"seeds", seeds},
+                        {"range", a.range},
+                        {"cells", a.cells},
+                        {"published", a.published},
+                        {"min_quality", a.min_quality}});
+  }
+  j["cavities"] = cavities;
   Json blocking = Json::array();
   for (const auto& [c, q] : r.blocking_cells)
     blocking.push_back({{"cell", c.value()}, {"quality", q}});
@@ -91,6 +103,7 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   options.progress = cli::terminal_progress(common);
   options.allow_bad_input = args.allow_bad_input;
   options.max_loops = args.max_loops;
+  options.cavity_range = args.cavity_range;
 
   Timer clock;
   PhaseTimes times;
@@ -151,15 +164,16 @@ int main(int argc, char** argv) {
       "Adapts an assigned grid (material + vf_* cell arrays, from hexadapt-assign) into a\n"
       "conformal mesh whose cells each hold one material, with point arrays 'target' and\n"
       "'distance', 'blocked' (1: the node stopped short of its target because of the quality of\n"
-      "the cells around it). Exit code 3 when output cells end below --threshold, or when\n"
-      "input cells are below it (guaranteed method, nothing written).",
+      "the cells around it; 2: and no cavity around it could be pillowed). Exit code 3 when\n"
+      "output cells end below --threshold, or when input cells are below it (guaranteed\n"
+      "method, nothing written).",
       "hexadapt-adapt"};
   Args args;
   cli::CommonOptions common;
   app.add_option("input", args.input, "Assigned grid (.vtu, .vtk, ...)")->required();
   app.add_option("--method", args.method,
                  "guaranteed: controlled move and move-smooth loop keeping every cell >= "
-                 "--threshold (Fig. 10-b; cavity pillowing not implemented yet); base: direct "
+                 "--threshold (Fig. 10-b); base: direct "
                  "move, global pillowing, smoothing (Fig. 10-a), no guarantee")
       ->check(CLI::IsMember({"base", "guaranteed"}))
       ->capture_default_str();
@@ -175,6 +189,11 @@ int main(int argc, char** argv) {
   app.add_flag("--allow-bad-input", args.allow_bad_input,
                "guaranteed: run even when input cells are below --threshold (exit 3 otherwise)");
   app.add_option("--max-loops", args.max_loops, "guaranteed: move-smooth rounds at most")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--cavity-range", args.cavity_range,
+                 "guaranteed: vertex distance of the cavities pillowed around blocked nodes "
+                 "(0: no cavity pillowing)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   app.add_option("--fractions", args.fractions, "Fraction arrays to use, in order")->delimiter(',');

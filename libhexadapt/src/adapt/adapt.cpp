@@ -26,6 +26,8 @@ void check_options(const AdaptOptions& o) {
   if (o.steps < 1) throw OptionError("steps must be at least 1, got " + std::to_string(o.steps));
   if (o.max_loops < 0)
     throw OptionError("max_loops must be >= 0, got " + std::to_string(o.max_loops));
+  if (o.cavity_range < 0)
+    throw OptionError("cavity_range must be >= 0, got " + std::to_string(o.cavity_range));
   if (!(o.loop_tolerance >= 0))
     throw OptionError("loop_tolerance must be >= 0, got " + std::to_string(o.loop_tolerance));
 }

@@ -72,16 +72,50 @@ int move_smooth_loop(M& mesh, const Targets& targets, MoveResult move,
   return loops;
 }
 
+// Pillows cavities around the nodes the first move left short (sec. 5.2). Input nodes keep
+// their ids and their targets: a seed stays with the cells outside its cavity, on the
+// interface; its copies inside the cavity are new nodes without a target, free to smooth.
+template <class M>
+std::vector<NodeId> pillow_cavities(M& mesh, IdVector<CellId, int>& material, Targets& targets,
+                                    const MoveResult& first, int n_materials, AdaptResult<M>& r,
+                                    const AdaptOptions& options) {
+  std::vector<NodeId> seeds;
+  for (NodeId v : id_range<NodeId>(mesh.n_nodes()))
+    if (targets.has[v] && !first.reached[v]) seeds.push_back(v);
+  if (seeds.empty() || options.cavity_range < 1) return {};
+  CavityOptions co;
+  co.range = options.cavity_range;
+  co.threshold = options.threshold;
+  co.pillow = options.pillow;
+  co.smooth = options.smooth;
+  co.boundary = options.boundary;
+  CavityResult<M> c = cavity_pillow(mesh, material, n_materials, seeds, co);
+  r.cavities = std::move(c.attempts);
+  r.n_cavities_published = c.n_published;
+  r.n_cells_added = c.n_cells_added;
+  mesh = std::move(c.mesh);
+  material = std::move(c.material);
+  for (NodeId v : id_range<NodeId>(mesh.n_nodes())) {
+    if (v.idx() < targets.has.size()) continue;
+    targets.has.push_back(0);
+    targets.position.push_back(mesh.point(v));
+    targets.interface.push_back(NodeConstraint{});
+  }
+  return c.failed_seeds;
+}
+
 // Marks the nodes left short of their targets and collects the worst cells around them.
 template <class M>
-void diagnose(AdaptResult<M>& r) {
+void diagnose(AdaptResult<M>& r, const std::vector<NodeId>& failed_seeds) {
   const M& mesh = r.mesh;
   r.blocked.assign(static_cast<std::size_t>(mesh.n_nodes()), 0);
   std::vector<std::pair<CellId, double>> cells;
   IdVector<CellId, char> seen(static_cast<std::size_t>(mesh.n_cells()), 0);
   for (NodeId v : id_range<NodeId>(mesh.n_nodes())) {
     if (!r.has_target[v] || !(r.distance[v] > 0)) continue;
-    r.blocked[v] = static_cast<char>(BlockReason::quality);
+    r.blocked[v] = static_cast<char>(std::binary_search(failed_seeds.begin(), failed_seeds.end(), v)
+                                         ? BlockReason::cavity
+                                         : BlockReason::quality);
     ++r.n_blocked;
     for (CellId c : mesh.node_cells(v))
       if (!seen[c]) {
@@ -120,8 +154,8 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
   }
   record_step(r, mesh, "check", clock, options.progress, 0.05);
 
-  const auto boundary = boundary_constraints(mesh, options.boundary);
-  const Targets targets = compute_targets(mesh, fractions, material, boundary, options.targets);
+  const auto grid_boundary = boundary_constraints(mesh, options.boundary);
+  Targets targets = compute_targets(mesh, fractions, material, grid_boundary, options.targets);
   r.n_interface_nodes = targets.n_interface_nodes;
   record_step(r, mesh, "targets", clock, options.progress, 0.1);
 
@@ -132,14 +166,20 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
   r.dist_init = first.dist;
   record_step(r, mesh, "move", clock, options.progress, 0.3);
 
+  IdVector<CellId, int> out_material = material;
+  const std::vector<NodeId> failed =
+      pillow_cavities(mesh, out_material, targets, first, fractions.n_materials(), r, options);
+  record_step(r, mesh, "cavity", clock, options.progress, 0.5);
+
+  const auto boundary = boundary_constraints(mesh, options.boundary);
   r.loops =
       move_smooth_loop(mesh, targets, first, sliding_constraints(boundary, targets), mo, options);
   record_step(r, mesh, "move-smooth", clock, options.progress, 1.0);
 
   r.mesh = std::move(mesh);
-  r.material = material;
+  r.material = std::move(out_material);
   finish_result(r, targets.position, targets.has, options);
-  diagnose(r);
+  diagnose(r, failed);
   if (good_input && r.n_below_threshold > 0)
     throw InternalError("guaranteed pipeline left " + std::to_string(r.n_below_threshold) +
                         " cells below the threshold " + std::to_string(options.threshold));

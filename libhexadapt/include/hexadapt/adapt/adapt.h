@@ -8,14 +8,16 @@
 // controlled move, then the move-smooth loop) reuses the same steps and keeps every cell at
 // or above the threshold S_q when the input cells all are; an input cell below S_q stops it
 // (the result lists them in bad_input_cells, sets stopped_bad_input and holds the input grid
-// unchanged) unless allow_bad_input. Cavity pillowing (sec. 5.2, Alg. 5)
-// is not part of it yet: nodes the move cannot bring to their targets are reported in
-// `blocked` instead.
+// unchanged) unless allow_bad_input. Between the first controlled move and the move-smooth
+// loop, cavity pillowing (sec. 5.2, Alg. 5, cavity_pillow.h) gives the nodes left short of
+// their targets new cells to move into; those still short at the end are reported in
+// `blocked`. The 3D target correction of sec. 5.3 is not implemented.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "hexadapt/adapt/cavity_pillow.h"
 #include "hexadapt/adapt/controlled_move.h"
 #include "hexadapt/adapt/global_pillow.h"
 #include "hexadapt/adapt/node_constraint.h"
@@ -43,13 +45,18 @@ struct AdaptOptions {
   Progress progress;                             ///< phase progress, nullptr = silent
   /// guaranteed: run even when input cells are below the threshold (no guarantee then).
   bool allow_bad_input = false;
-  int max_loops = 20;  ///< guaranteed: move-smooth rounds at most
+  int max_loops = 20;    ///< guaranteed: move-smooth rounds at most
+  int cavity_range = 3;  ///< guaranteed: starting vertex distance of a cavity; 0 = no cavities
   /// guaranteed: the loop stops when a round lowers dist by no more than this share of it.
   double loop_tolerance = 1e-3;
 };
 
 /// Why a node with a target did not reach it (the `blocked` point array).
-enum class BlockReason : char { none = 0, quality = 1 };
+enum class BlockReason : char {
+  none = 0,
+  quality = 1,  ///< a further step would put a cell around it below the threshold
+  cavity = 2,   ///< and no cavity around it could be pillowed at any range
+};
 
 /// One step of a pipeline, in the order it ran.
 struct AdaptStep {
@@ -82,7 +89,10 @@ struct AdaptResult {
   index_t n_blocked = 0;                ///< nodes left short of their target
   /// The worst cells next to blocked nodes, lowest quality first (at most 10).
   std::vector<std::pair<CellId, double>> blocking_cells;
-  int loops = 0;  ///< move-smooth rounds run
+  int loops = 0;                        ///< move-smooth rounds run
+  std::vector<CavityAttempt> cavities;  ///< every cavity tried, in order
+  index_t n_cavities_published = 0;
+  index_t n_cells_added = 0;  ///< layer cells of the published cavities
 };
 
 /// Runs the chosen pipeline. `material` holds one index into `fractions`' materials per
