@@ -55,7 +55,7 @@ struct AdaptOptions {
 enum class BlockReason : char {
   none = 0,
   quality = 1,  ///< a further step would put a cell around it below the threshold
-  cavity = 2,   ///< and no cavity around it could be pillowed at any range
+  cavity = 2,   ///< and a cavity around it (for one of its materials) failed at every range
 };
 
 /// One step of a pipeline, in the order it ran.
