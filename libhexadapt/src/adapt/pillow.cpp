@@ -145,8 +145,8 @@ PillowResult<M> pillow_cells(const M& mesh, const IdVector<CellId, char>& in_set
       }
       centre /= count;
       reach /= count;
-      points.push_back(p +
-                       options.offset * copy_offset(boundary[n], inward[n][f], centre - p, reach));
+      points.push_back(p + options.offset *
+                               copy_offset(boundary[n], inward[n][f], centre - p, reach));
       out.node_origin.push_back(n);
     }
   }
