@@ -12,7 +12,9 @@ namespace {
 template <class M>
 AdaptResult<M> run_base(const M& mesh, const test::Shape& shape, int n_materials, int samples) {
   const Fractions f = test::sample_fractions(mesh, shape, n_materials, samples);
-  return adapt(mesh, f, test::majority(f));
+  AdaptOptions o;
+  o.method = AdaptMethod::base;
+  return adapt(mesh, f, test::majority(f), o);
 }
 
 // What every base result must satisfy, good quality or not.
@@ -108,23 +110,24 @@ TEST(BaseMethod, GivesTheSameMeshWhateverTheThreadCount) {
         return static_cast<int>(std::floor((p.x() + 2.0 * std::sin(0.3 * p.y())) / 4.1)) % 3;
       },
       3, 4);
+  AdaptOptions o;
+  o.method = AdaptMethod::base;
   set_threads(1);
-  const auto a = adapt(grid, f, test::majority(f));
+  const auto a = adapt(grid, f, test::majority(f), o);
   set_threads(2);
-  const auto b = adapt(grid, f, test::majority(f));
+  const auto b = adapt(grid, f, test::majority(f), o);
   set_threads(0);
   ASSERT_EQ(a.mesh.n_nodes(), b.mesh.n_nodes());
   for (NodeId v : id_range<NodeId>(a.mesh.n_nodes())) ASSERT_EQ(a.mesh.point(v), b.mesh.point(v));
   EXPECT_EQ(a.material.raw(), b.material.raw());
 }
 
-TEST(Adapt, RejectsTheGuaranteedMethodForNowAndBadOptions) {
+TEST(Adapt, RejectsBadOptions) {
   const QuadMesh grid = make_quad_grid(4, 4);
   const Fractions f = test::sample_fractions(
       grid, [](const Vec3& p) { return p.x() < 1.5; }, 2, 4);
   AdaptOptions o;
-  o.method = AdaptMethod::guaranteed;
-  EXPECT_THROW(adapt(grid, f, test::majority(f), o), OptionError);
+  EXPECT_EQ(o.method, AdaptMethod::guaranteed);
   o.method = AdaptMethod::base;
   o.steps = 0;
   EXPECT_THROW(adapt(grid, f, test::majority(f), o), OptionError);

@@ -56,16 +56,20 @@ TEST(AdaptTool, WritesTheMeshTheArraysAndTheReport) {
   ASSERT_EQ(run_tool((dir / "in.vtu").string() + " -o " + out + " --json " + json + " -q"), 0);
   const io::MeshData d = io::read_mesh(out);
   EXPECT_EQ(d.dim, 2);
-  EXPECT_GT(d.n_cells(), grid.n_cells());
+  EXPECT_GE(d.n_cells(), grid.n_cells());  // cavities add cells
   ASSERT_NE(d.find_cell_array("material"), nullptr);
   ASSERT_NE(d.find_point_array("target"), nullptr);
   ASSERT_NE(d.find_point_array("distance"), nullptr);
   EXPECT_EQ(d.find_point_array("target")->n_components, 3);
   std::ifstream in(json);
   const auto report = nlohmann::json::parse(in);
-  EXPECT_EQ(report["method"], "base");
+  EXPECT_EQ(report["method"], "guaranteed");
+  ASSERT_NE(d.find_point_array("blocked"), nullptr);
+  EXPECT_LE(report["result"]["dist_final"].get<double>(),
+            report["result"]["dist_init"].get<double>());
+  EXPECT_GE(report["result"]["min_quality"].get<double>(), 0.3);
   EXPECT_EQ(report["result"]["cells"], d.n_cells());
-  EXPECT_EQ(report["result"]["steps"].size(), 4u);
+  EXPECT_EQ(report["result"]["steps"].size(), 5u);  // check targets move cavity move-smooth
   EXPECT_TRUE(report["threshold_met"].get<bool>());
   fs::remove_all(dir);
 }
@@ -77,9 +81,21 @@ TEST(AdaptTool, ExitCodes) {
   write_assigned(grid, test::triple_point(4.0), 3, 12, dir / "in.vtu");
   const std::string in = (dir / "in.vtu").string(), out = (dir / "out.vtu").string();
   // The base method leaves cells below 0.3 here: written, but exit 3.
-  EXPECT_EQ(run_tool(in + " -o " + out + " -q"), 3);
+  EXPECT_EQ(run_tool(in + " -o " + out + " --method base -q"), 3);
   EXPECT_TRUE(fs::exists(out));
-  EXPECT_EQ(run_tool(in + " -o " + (dir / "g.vtu").string() + " --method guaranteed -q"), 1);
+  // The guaranteed method (the default) keeps them.
+  EXPECT_EQ(run_tool(in + " -o " + (dir / "g.vtu").string() + " -q"), 0);
+  // Input cells below the threshold: stop with exit 3 and write nothing, unless allowed.
+  const QuadMesh jittered = make_quad_grid(10, 10, test::jittered_points(10, 10, 0, 0.3, 7));
+  write_assigned(
+      jittered, [](const Vec3& p) { return p.x() < 4.5; }, 2, 4, dir / "jit.vtu");
+  const std::string jit = (dir / "jit.vtu").string();
+  const fs::path bad = dir / "bad.vtu";
+  EXPECT_EQ(run_tool(jit + " -o " + bad.string() + " --threshold 0.9 -q"), 3);
+  EXPECT_FALSE(fs::exists(bad));
+  EXPECT_EQ(run_tool(jit + " -o " + bad.string() + " --threshold 0.9 --allow-bad-input -q"), 3);
+  EXPECT_TRUE(fs::exists(bad));
+  EXPECT_EQ(run_tool(in + " -o " + out + " --method sculpt -q"), 1);
   EXPECT_EQ(run_tool(in + " -o " + in + " -q"), 1);  // refuses to overwrite its input
   EXPECT_EQ(run_tool((dir / "missing.vtu").string() + " -o " + out + " -q"), 2);
   // A grid without the material array: bad input.

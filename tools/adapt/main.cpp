@@ -16,7 +16,10 @@ using cli::Json;
 
 struct Args {
   std::string input;
-  std::string method = "base";
+  std::string method = "guaranteed";
+  bool allow_bad_input = false;
+  int max_loops = 20;
+  int cavity_range = 3;
   std::vector<std::string> fractions;
   std::string void_material;
   double threshold = 0.3;
@@ -37,6 +40,30 @@ Json result_json(const AdaptResult<M>& r, index_t input_cells) {
   j["min_quality"] = r.min_quality;
   j["cells_below_threshold"] = r.n_below_threshold;
   j["cells_inverted"] = r.n_inverted;
+  j["dist_ratio"] = r.dist_init > 0 ? r.dist_final / r.dist_init : 0.0;
+  j["input_min_quality"] = r.input_min_quality;
+  j["input_cells_below_threshold"] = r.bad_input_cells.size();
+  j["move_smooth_loops"] = r.loops;
+  j["blocked_nodes"] = r.n_blocked;
+  j["cavities_tried"] = r.cavities.size();
+  j["cavities_published"] = r.n_cavities_published;
+  j["cells_added_by_pillowing"] = r.n_cells_added;
+  Json cavities = Json::array();
+  for (const auto& a : r.cavities) {
+    Json seeds = Json::array();
+    for (NodeId s : a.seeds) seeds.push_back(s.value());
+    cavities.push_back({{"material", a.material},
+                        {"seeds", seeds},
+                        {"range", a.range},
+                        {"cells", a.cells},
+                        {"published", a.published},
+                        {"min_quality", a.min_quality}});
+  }
+  j["cavities"] = cavities;
+  Json blocking = Json::array();
+  for (const auto& [c, q] : r.blocking_cells)
+    blocking.push_back({{"cell", c.value()}, {"quality", q}});
+  j["blocking_cells"] = blocking;
   Json steps = Json::array();
   for (const auto& s : r.steps)
     steps.push_back({{"name", s.name},
@@ -47,6 +74,25 @@ Json result_json(const AdaptResult<M>& r, index_t input_cells) {
   return j;
 }
 
+// The guaranteed method does not start from cells already below the threshold: name them.
+int refuse_bad_input(const cli::CommonOptions& common, Json& report, const PhaseTimes& times,
+                     const std::vector<CellId>& bad, double threshold) {
+  std::string list;
+  for (std::size_t i = 0; i < bad.size() && i < 10; ++i)
+    list += (i ? ", " : "") + std::to_string(bad[i].value());
+  if (bad.size() > 10) list += ", ...";
+  log_warning(std::to_string(bad.size()) + " input cells have a scaled Jacobian below " +
+              std::to_string(threshold) + " (cells " + list +
+              "); nothing written (--allow-bad-input runs anyway, without the guarantee)");
+  Json cells = Json::array();
+  for (CellId c : bad) cells.push_back(c.value());
+  report["bad_input_cells"] = cells;
+  report["threshold_met"] = false;
+  report["times"] = cli::phase_times_json(times);
+  cli::write_report(common, report);
+  return cli::target_missed;
+}
+
 int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& common) {
   cli::refuse_overwrite(common.output, {args.input});
   AdaptOptions options;
@@ -55,6 +101,9 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   options.steps = args.steps;
   options.smooth.iterations = args.smooth_iterations;
   options.progress = cli::terminal_progress(common);
+  options.allow_bad_input = args.allow_bad_input;
+  options.max_loops = args.max_loops;
+  options.cavity_range = args.cavity_range;
 
   Timer clock;
   PhaseTimes times;
@@ -78,9 +127,13 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   report["materials"] = fractions.names();
   io::MeshData out;
   index_t below = 0;
+  std::vector<CellId> bad_input;
+  bool stopped = false;
   std::visit(
       [&](const auto& mesh) {
         const auto r = adapt(mesh, fractions, material, options);
+        bad_input = r.bad_input_cells;
+        stopped = r.stopped_bad_input;
         for (const auto& s : r.steps) times.emplace_back(s.name, s.seconds);
         report["result"] = result_json(r, mesh.n_cells());
         below = r.n_below_threshold;
@@ -88,6 +141,7 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
       },
       grid);
   clock.restart();
+  if (stopped) return refuse_bad_input(common, report, times, bad_input, options.threshold);
   for (auto& kv : cli::provenance(app)) out.metadata.push_back(kv);
   io::write_mesh(out, common.output);
   times.emplace_back("write", clock.seconds());
@@ -109,14 +163,18 @@ int main(int argc, char** argv) {
   CLI::App app{
       "Adapts an assigned grid (material + vf_* cell arrays, from hexadapt-assign) into a\n"
       "conformal mesh whose cells each hold one material, with point arrays 'target' and\n"
-      "'distance'. Exit code 3 when output cells end below --threshold.",
+      "'distance', 'blocked' (1: the node stopped short of its target because of the quality of\n"
+      "the cells around it; 2: and no cavity around it could be pillowed). Exit code 3 when\n"
+      "output cells end below --threshold, or when input cells are below it (guaranteed\n"
+      "method, nothing written).",
       "hexadapt-adapt"};
   Args args;
   cli::CommonOptions common;
   app.add_option("input", args.input, "Assigned grid (.vtu, .vtk, ...)")->required();
   app.add_option("--method", args.method,
-                 "base: direct move, global pillowing, smoothing (Fig. 10-a); guaranteed: "
-                 "not available yet")
+                 "guaranteed: controlled move and move-smooth loop keeping every cell >= "
+                 "--threshold (Fig. 10-b); base: direct "
+                 "move, global pillowing, smoothing (Fig. 10-a), no guarantee")
       ->check(CLI::IsMember({"base", "guaranteed"}))
       ->capture_default_str();
   app.add_option("--threshold", args.threshold, "Minimum scaled Jacobian S_q")
@@ -126,6 +184,16 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   app.add_option("--smooth-iterations", args.smooth_iterations, "Smoothing sweeps")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_flag("--allow-bad-input", args.allow_bad_input,
+               "guaranteed: run even when input cells are below --threshold (exit 3 otherwise)");
+  app.add_option("--max-loops", args.max_loops, "guaranteed: move-smooth rounds at most")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--cavity-range", args.cavity_range,
+                 "guaranteed: vertex distance of the cavities pillowed around blocked nodes "
+                 "(0: no cavity pillowing)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   app.add_option("--fractions", args.fractions, "Fraction arrays to use, in order")->delimiter(',');

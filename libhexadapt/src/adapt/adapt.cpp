@@ -3,6 +3,7 @@
 #include <string>
 
 #include "base_pipeline.h"
+#include "guaranteed_pipeline.h"
 #include "hexadapt/core/error.h"
 
 namespace hexadapt {
@@ -23,8 +24,12 @@ void check_options(const AdaptOptions& o) {
   if (!(o.threshold > -1 && o.threshold <= 1))
     throw OptionError("threshold must be in (-1, 1], got " + std::to_string(o.threshold));
   if (o.steps < 1) throw OptionError("steps must be at least 1, got " + std::to_string(o.steps));
-  if (o.method == AdaptMethod::guaranteed)
-    throw OptionError("the guaranteed method is not implemented yet; use --method base");
+  if (o.max_loops < 0)
+    throw OptionError("max_loops must be >= 0, got " + std::to_string(o.max_loops));
+  if (o.cavity_range < 0)
+    throw OptionError("cavity_range must be >= 0, got " + std::to_string(o.cavity_range));
+  if (!(o.loop_tolerance >= 0))
+    throw OptionError("loop_tolerance must be >= 0, got " + std::to_string(o.loop_tolerance));
 }
 
 }  // namespace
@@ -37,7 +42,7 @@ AdaptResult<M> adapt(const M& grid, const Fractions& fractions,
     case AdaptMethod::base:
       return detail::run_base_pipeline(grid, fractions, material, options);
     case AdaptMethod::guaranteed:
-      break;
+      return detail::run_guaranteed_pipeline(grid, fractions, material, options);
   }
   throw InternalError("unhandled adaptation method");
 }

@@ -44,6 +44,11 @@ io::MeshData adapt_mesh_data(const AdaptResult<M>& result,
   }
   data.set_point_array(std::move(target));
   data.set_point_array(std::move(distance));
+  // Why a node is short of its target (BlockReason: 0 none, 1 quality of the cells around).
+  io::DataArray blocked{"blocked", 1, io::ScalarType::int32, {}};
+  for (NodeId v : id_range<NodeId>(result.mesh.n_nodes()))
+    blocked.values.push_back(result.blocked.empty() ? 0 : result.blocked[v]);
+  data.set_point_array(std::move(blocked));
   std::string names;
   for (const auto& n : material_names) names += (names.empty() ? "" : ",") + n;
   data.metadata.emplace_back("materials", names);

@@ -26,6 +26,7 @@ void finish_result(AdaptResult<M>& r, const IdVector<NodeId, Vec3>& target,
   r.target = target;
   r.has_target = has;
   r.distance.assign(static_cast<std::size_t>(mesh.n_nodes()), 0.0);
+  r.blocked.assign(static_cast<std::size_t>(mesh.n_nodes()), 0);
   r.dist_final = 0;
   r.n_reached = 0;
   for (NodeId v : id_range<NodeId>(mesh.n_nodes())) {

@@ -5,13 +5,19 @@
 // `base` (Fig. 10-a, Sculpt-like): targets, direct move of the interface nodes onto them,
 // global pillowing of every material, global quality-preserving smoothing; no guarantee on
 // the output quality (the comparison point of the paper's Table 1). `guaranteed` (Fig. 10-b:
-// controlled move, cavity pillowing, move-smooth loop) reuses the same steps and is not
-// available yet: asking for it throws OptionError.
+// controlled move, then the move-smooth loop) reuses the same steps and keeps every cell at
+// or above the threshold S_q when the input cells all are; an input cell below S_q stops it
+// (the result lists them in bad_input_cells, sets stopped_bad_input and holds the input grid
+// unchanged) unless allow_bad_input. Between the first controlled move and the move-smooth
+// loop, cavity pillowing (sec. 5.2, Alg. 5, cavity_pillow.h) gives the nodes left short of
+// their targets new cells to move into; those still short at the end are reported in
+// `blocked`. The 3D target correction of sec. 5.3 is not implemented.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "hexadapt/adapt/cavity_pillow.h"
 #include "hexadapt/adapt/controlled_move.h"
 #include "hexadapt/adapt/global_pillow.h"
 #include "hexadapt/adapt/node_constraint.h"
@@ -29,14 +35,27 @@ AdaptMethod parse_adapt_method(const std::string& name);
 std::string to_string(AdaptMethod method);
 
 struct AdaptOptions {
-  AdaptMethod method = AdaptMethod::base;  ///< which pipeline runs
-  double threshold = 0.3;                  ///< S_q, the quality the guaranteed method keeps
-  int steps = 16;                          ///< steps of the controlled move
-  BoundaryOptions boundary;                ///< feature detection on the domain boundary
-  TargetOptions targets;                   ///< target computation
-  PillowOptions pillow;                    ///< where pillow nodes start
-  SmoothOptions smooth;                    ///< smoothing sweeps
-  Progress progress;                       ///< phase progress, nullptr = silent
+  AdaptMethod method = AdaptMethod::guaranteed;  ///< which pipeline runs
+  double threshold = 0.3;                        ///< S_q, the quality the guaranteed method keeps
+  int steps = 16;                                ///< steps of the controlled move
+  BoundaryOptions boundary;                      ///< feature detection on the domain boundary
+  TargetOptions targets;                         ///< target computation
+  PillowOptions pillow;                          ///< where pillow nodes start
+  SmoothOptions smooth;                          ///< smoothing sweeps
+  Progress progress;                             ///< phase progress, nullptr = silent
+  /// guaranteed: run even when input cells are below the threshold (no guarantee then).
+  bool allow_bad_input = false;
+  int max_loops = 20;    ///< guaranteed: move-smooth rounds at most
+  int cavity_range = 3;  ///< guaranteed: starting vertex distance of a cavity; 0 = no cavities
+  /// guaranteed: the loop stops when a round lowers dist by no more than this share of it.
+  double loop_tolerance = 1e-3;
+};
+
+/// Why a node with a target did not reach it (the `blocked` point array).
+enum class BlockReason : char {
+  none = 0,
+  quality = 1,  ///< a further step would put a cell around it below the threshold
+  cavity = 2,   ///< and a cavity around it (for one of its materials) failed at every range
 };
 
 /// One step of a pipeline, in the order it ran.
@@ -62,6 +81,18 @@ struct AdaptResult {
   double min_quality = 1;         ///< of the output
   index_t n_below_threshold = 0;  ///< output cells with scaled Jacobian < threshold
   index_t n_inverted = 0;         ///< output cells with scaled Jacobian <= 0
+  // Guaranteed method only.
+  std::vector<CellId> bad_input_cells;  ///< input cells below the threshold
+  bool stopped_bad_input = false;       ///< true: nothing was done (see bad_input_cells)
+  double input_min_quality = 1;         ///< of the input grid
+  IdVector<NodeId, char> blocked;       ///< BlockReason per node (all none for base)
+  index_t n_blocked = 0;                ///< nodes left short of their target
+  /// The worst cells next to blocked nodes, lowest quality first (at most 10).
+  std::vector<std::pair<CellId, double>> blocking_cells;
+  int loops = 0;                        ///< move-smooth rounds run
+  std::vector<CavityAttempt> cavities;  ///< every cavity tried, in order
+  index_t n_cavities_published = 0;
+  index_t n_cells_added = 0;  ///< layer cells of the published cavities
 };
 
 /// Runs the chosen pipeline. `material` holds one index into `fractions`' materials per

@@ -1,0 +1,60 @@
+// Cavity pillowing (paper sec. 5.2, Alg. 5): around the nodes the controlled move left short
+// of their targets, a cavity of one material is pillowed so that those nodes get a layer of
+// new cells to move into.
+//
+// For each material m and each seed node touching m, the cavity is the cells of m within
+// vertex distance `range` of the seed (distance 1: the cells around the seed; k: cells of m
+// sharing a node with a cell at distance k - 1). Cavities of the same material that share a
+// cell are merged. A cavity is pillowed (pillow_cells), the nodes that only its cells and
+// the new layer use are smoothed, and the result is published into the mesh only when every
+// cell of the cavity and of its layer reaches the threshold; otherwise each seed whose
+// cavity holds a bad cell retries with its range decreased by one, and a seed at range 1
+// that still fails is given up (the mesh stays as it was). Greedy: published cavities change
+// the mesh the next ones are built in. The cells outside a cavity never change, so no cell
+// of the mesh goes below the threshold. Input nodes keep their ids: a seed on the border of
+// its cavity stays with the outside cells and keeps its target; its copy inside the cavity
+// is a new node without a target.
+#pragma once
+
+#include <vector>
+
+#include "hexadapt/adapt/pillow.h"
+#include "hexadapt/adapt/smoothing.h"
+
+namespace hexadapt {
+
+struct CavityOptions {
+  int range = 3;           ///< vertex distance a cavity starts with
+  double threshold = 0.3;  ///< S_q: every cavity cell must reach it to be published
+  PillowOptions pillow;    ///< where the copies start
+  SmoothOptions smooth;    ///< smoothing of the cavity's nodes
+  BoundaryOptions boundary;
+};
+
+/// One pillowing attempt.
+struct CavityAttempt {
+  int material = 0;
+  std::vector<NodeId> seeds;  ///< input node ids
+  int range = 0;              ///< the largest range of its seeds
+  index_t cells = 0;          ///< cells of the cavity
+  bool published = false;
+  double min_quality = 0;  ///< of the cavity and its layer after smoothing
+};
+
+template <class M>
+struct CavityResult {
+  M mesh;
+  IdVector<CellId, int> material;
+  IdVector<NodeId, NodeId> node_origin;  ///< the input node each node is (a copy of)
+  std::vector<CavityAttempt> attempts;
+  std::vector<NodeId> failed_seeds;  ///< seeds no range could serve, increasing
+  index_t n_published = 0;
+  index_t n_cells_added = 0;
+};
+
+/// `seeds`: node ids of `mesh`. Throws OptionError for range < 1.
+template <class M>
+CavityResult<M> cavity_pillow(const M& mesh, const IdVector<CellId, int>& material, int n_materials,
+                              const std::vector<NodeId>& seeds, const CavityOptions& options = {});
+
+}  // namespace hexadapt

@@ -1,0 +1,15 @@
+// The guaranteed-quality pipeline (paper Fig. 10-b), internal: adapt() dispatches to it.
+#pragma once
+
+#include "hexadapt/adapt/adapt.h"
+
+namespace hexadapt::detail {
+
+/// Input check, targets, controlled move, move-smooth loop; every output cell >= threshold
+/// when every input cell is.
+template <class M>
+AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions,
+                                       const IdVector<CellId, int>& material,
+                                       const AdaptOptions& options);
+
+}  // namespace hexadapt::detail
