@@ -20,8 +20,7 @@ struct Args {
   bool allow_bad_input = false;
   int max_loops = 20;
   int cavity_range = 3;
-  std::vector<std::string> fractions;
-  std::string void_material;
+  cli::InputOptions in;
   double threshold = 0.3;
   int steps = 16;
   int smooth_iterations = 20;
@@ -107,11 +106,8 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
 
   Timer clock;
   PhaseTimes times;
-  io::MeshData in = io::read_mesh(args.input);
-  FractionOptions fo;
-  fo.arrays = args.fractions;
-  fo.void_material = args.void_material;
-  const Fractions fractions = extract_fractions(in, fo, nullptr, args.input);
+  io::MeshData in = io::read_mesh(args.input, args.in.read_options());
+  const Fractions fractions = extract_fractions(in, args.in.fractions, nullptr, args.input);
   const IdVector<CellId, int> material =
       read_material_array(in, fractions.n_materials(), args.input);
   const AnyMesh grid = io::to_mesh(in);
@@ -196,9 +192,7 @@ int main(int argc, char** argv) {
                  "(0: no cavity pillowing)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  app.add_option("--fractions", args.fractions, "Fraction arrays to use, in order")->delimiter(',');
-  app.add_option("--void", args.void_material,
-                 "Name a material that receives 1 - sum of the given fractions");
+  cli::add_input_options(app, args.in);
   cli::add_common_options(app, common);
   return cli::run(app, argc, argv, common, [&] { return run_adapt(app, args, common); });
 }
