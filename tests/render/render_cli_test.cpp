@@ -106,7 +106,7 @@ io::MeshData two_materials_2d() {
   io::MeshData d = io::from_mesh(make_quad_grid(4, 2));
   std::vector<double> m, left, right;
   for (index_t c = 0; c < d.n_cells(); ++c) {
-    const double x = d.points[static_cast<std::size_t>(d.cells[static_cast<std::size_t>(4 * c)])].x();
+    const double x = d.points[d.cells[static_cast<std::size_t>(4 * c)].idx()].x();
     const bool is_left = x < 1.5;
     m.push_back(is_left ? 0 : 1);
     left.push_back(is_left ? 1 : 0);
@@ -143,7 +143,7 @@ TEST_F(RenderCli, SliceOf3DPicksTheLayer) {
   io::MeshData d = io::from_mesh(make_hex_grid(2, 2, 2));
   std::vector<double> m;
   for (index_t c = 0; c < d.n_cells(); ++c) {
-    const double z = d.points[static_cast<std::size_t>(d.cells[static_cast<std::size_t>(8 * c)])].z();
+    const double z = d.points[d.cells[static_cast<std::size_t>(8 * c)].idx()].z();
     m.push_back(z < 0.5 ? 0 : 1);
   }
   d.set_cell_array(cell_array("material", m));

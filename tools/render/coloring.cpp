@@ -32,8 +32,38 @@ CellColors continuous(const std::vector<double>& values, const std::string& titl
     c.bar_min = *lo;
     c.bar_max = *hi;
   }
+  return c;
+}
+
+void fill_continuous(CellColors& c, const std::vector<double>& values) {
   const double span = c.bar_max - c.bar_min;
   for (double v : values) c.cell.push_back(colormap(span > 0 ? (v - c.bar_min) / span : 0.5));
+}
+
+// Each cell mixes the materials' colours in proportion to its fractions.
+CellColors blended(const io::MeshData& data) {
+  CellColors c;
+  const std::vector<std::string> names = material_names(data);
+  std::vector<const io::DataArray*> arrays;
+  for (const auto& n : names)
+    if (const io::DataArray* a = data.find_cell_array("vf_" + n)) {
+      c.legend.push_back({n, palette_color(static_cast<int>(arrays.size()))});
+      arrays.push_back(a);
+    }
+  if (arrays.empty()) throw OptionError("--color fractions: the file has no vf_<name> arrays");
+  const auto n = static_cast<std::size_t>(data.n_cells());
+  for (std::size_t i = 0; i < n; ++i) {
+    Rgb mix{0, 0, 0};
+    double total = 0;
+    for (std::size_t m = 0; m < arrays.size(); ++m) {
+      const double f = std::clamp(arrays[m]->values[i], 0.0, 1.0);
+      const Rgb p = c.legend[m].color;
+      for (int k = 0; k < 3; ++k) mix[static_cast<std::size_t>(k)] += f * p[static_cast<std::size_t>(k)];
+      total += f;
+    }
+    for (double& x : mix) x = total > 0 ? x / total : 1.0;
+    c.cell.push_back(mix);
+  }
   return c;
 }
 
@@ -59,7 +89,7 @@ CellColors categorical(const io::MeshData& data, const io::DataArray& material) 
 }
 
 std::string available_arrays(const io::MeshData& data) {
-  std::string s = "material, quality, none";
+  std::string s = "material, fractions, quality, none";
   for (const auto& a : data.cell_data) s += ", " + a.name;
   return s;
 }
@@ -100,7 +130,16 @@ CellColors color_cells(const io::MeshData& data, const std::string& field) {
     c.cell.assign(n, Rgb{1, 1, 1});
     return c;
   }
-  if (field == "quality") return continuous(cell_qualities(data).scaled_jacobian, "scaled Jacobian");
+  if (field == "fractions") return blended(data);
+  if (field == "quality") {
+    // A fixed top of 1 (the ideal cell) keeps pictures of different meshes comparable.
+    const std::vector<double> q = cell_qualities(data).scaled_jacobian;
+    CellColors c = continuous(q, "scaled Jacobian");
+    c.bar_min = std::min(c.bar_min, 0.0);
+    c.bar_max = 1.0;
+    fill_continuous(c, q);
+    return c;
+  }
   const io::DataArray* a = data.find_cell_array(field);
   if (!a)
     throw OptionError("--color: no cell array '" + field + "' (available: " +
@@ -113,7 +152,9 @@ CellColors color_cells(const io::MeshData& data, const std::string& field) {
     for (std::size_t k = 0; k < nc; ++k) s += a->values[c * nc + k] * a->values[c * nc + k];
     values[c] = nc == 1 ? a->values[c] : std::sqrt(s);
   }
-  return continuous(values, field);
+  CellColors c = continuous(values, field);
+  fill_continuous(c, values);
+  return c;
 }
 
 }  // namespace hexadapt::render

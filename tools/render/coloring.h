@@ -35,8 +35,9 @@ Rgb colormap(double t);
 /// comma-separated) or, failing that, from the vf_<name> cell arrays in file order.
 std::vector<std::string> material_names(const io::MeshData& data);
 
-/// Colours by `field`: "material" (categorical), "quality" (scaled Jacobian computed here),
-/// "none" (white), or any cell array (continuous; the magnitude of vector arrays). Throws
+/// Colours by `field`: "material" (categorical), "fractions" (each cell mixes the material
+/// colours by its vf_ fractions), "quality" (scaled Jacobian computed here, bar from
+/// min(0, lowest) to 1), "none" (white), or any cell array (continuous; the magnitude of vector arrays). Throws
 /// OptionError naming the available arrays when `field` is not there.
 CellColors color_cells(const io::MeshData& data, const std::string& field);
 

@@ -21,19 +21,22 @@ struct Args {
   std::string input, overlay, color = "auto", size = "800x600", title;
   std::vector<double> window;
   double z = 0;
-  bool z_given = false, edges = true, targets = false;
+  bool z_given = false, edges = false, no_edges = false, targets = false;
   io::Plane plane = io::Plane::automatic;
 };
 
 void add_options(CLI::App& app, Args& a) {
   app.add_option("mesh", a.input, "Mesh file to draw (.vtu .vtk .vti .vtr .vts .txt)")->required();
   app.add_option("--color", a.color,
-                 "Cell colouring: material (legend of material names), quality (scaled "
-                 "Jacobian, computed), none, or any cell array (colour bar); auto: material "
-                 "when the file has it, else its first vf_ array, else none")
+                 "Cell colouring: material (legend of material names), fractions (material "
+                 "colours mixed by the vf_ arrays), quality (scaled Jacobian, computed), none, "
+                 "or any cell array (colour bar); auto: material when the file has it, else "
+                 "fractions when it has vf_ arrays, else none")
       ->capture_default_str();
   app.add_option("--z", a.z, "The cutting plane z = value of 3D meshes (default: mid-height)");
-  app.add_flag("--edges,!--no-edges", a.edges, "Draw the cells' edges (default on)");
+  app.add_flag("--edges", a.edges,
+               "Always draw the cells' edges (default: when cells are at least 5 pixels wide)");
+  app.add_flag("--no-edges", a.no_edges, "Never draw the cells' edges")->excludes("--edges");
   app.add_option("--overlay", a.overlay, "Another mesh whose edges are drawn over, in red");
   app.add_flag("--targets", a.targets, "Draw the `target` point array as arrows from the nodes");
   app.add_option("--size", a.size, "Picture size in pixels, WxH")->capture_default_str();
@@ -66,15 +69,15 @@ render::PictureOptions picture_options(const Args& a) {
       throw OptionError("--window: expected x0 < x1 and y0 < y1");
     o.window = w;
   }
-  o.edges = a.edges;
+  o.edges = a.edges ? render::Edges::on : a.no_edges ? render::Edges::off : render::Edges::automatic;
   return o;
 }
 
-// material when there is one, else the first volume fraction, else nothing.
+// material when there is one, else the blend of the volume fractions, else nothing.
 std::string auto_field(const io::MeshData& d) {
   if (d.find_cell_array("material")) return "material";
   for (const auto& a : d.cell_data)
-    if (a.name.rfind("vf_", 0) == 0) return a.name;
+    if (a.name.rfind("vf_", 0) == 0) return "fractions";
   return "none";
 }
 

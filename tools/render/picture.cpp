@@ -51,8 +51,24 @@ bool visible(const Polygon& p, const Window& w) {
 
 void set_rgb(cairo_t* cr, const Rgb& c) { cairo_set_source_rgb(cr, c[0], c[1], c[2]); }
 
+// Mean width in pixels of the visible cells (square root of their mean bounding-box area).
+double mean_cell_pixels(const View& v, const Window& w, const Picture& pic) {
+  double area = 0;
+  int n = 0;
+  for (const Polygon& p : pic.polygons) {
+    if (!visible(p, w)) continue;
+    double x0 = p.points[0][0], x1 = x0, y0 = p.points[0][1], y1 = y0;
+    for (const auto& q : p.points) {
+      x0 = std::min(x0, q[0]), x1 = std::max(x1, q[0]);
+      y0 = std::min(y0, q[1]), y1 = std::max(y1, q[1]);
+    }
+    area += (x1 - x0) * (y1 - y0);
+    ++n;
+  }
+  return n ? v.scale * std::sqrt(area / n) : 0;
+}
+
 void draw_cells(cairo_t* cr, const View& v, const Window& w, const Picture& pic, bool edges) {
-  // Cells of a few pixels only: their edges would hide the colours.
   const double edge_width = 0.6;
   for (const Polygon& p : pic.polygons) {
     if (!visible(p, w)) continue;
@@ -131,13 +147,16 @@ void draw_legend(cairo_t* cr, double left, double top, const CellColors& c) {
 
 void draw_bar(cairo_t* cr, double left, double top, double height, const CellColors& c) {
   text(cr, left, top, c.bar_title);
-  const double bar_top = top + 12, bar_h = height - 24, steps = 100;
-  for (int i = 0; i < static_cast<int>(steps); ++i) {
-    const double t = (i + 0.5) / steps;
-    set_rgb(cr, colormap(t));
-    cairo_rectangle(cr, left, bar_top + bar_h * (1 - (i + 1) / steps), 22, bar_h / steps + 0.5);
-    cairo_fill(cr);
+  const double bar_top = top + 12, bar_h = height - 24;
+  cairo_pattern_t* gradient = cairo_pattern_create_linear(0, bar_top + bar_h, 0, bar_top);
+  for (int i = 0; i <= 16; ++i) {
+    const Rgb col = colormap(i / 16.0);
+    cairo_pattern_add_color_stop_rgb(gradient, i / 16.0, col[0], col[1], col[2]);
   }
+  cairo_rectangle(cr, left, bar_top, 22, bar_h);
+  cairo_set_source(cr, gradient);
+  cairo_fill(cr);
+  cairo_pattern_destroy(gradient);
   cairo_rectangle(cr, left, bar_top, 22, bar_h);
   cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
   cairo_set_line_width(cr, 0.8);
@@ -186,7 +205,10 @@ void write_png(const Picture& pic, const PictureOptions& options, const std::str
   cairo_save(cr);
   cairo_rectangle(cr, margin, top, std::max(plot_w, 1.0), std::max(plot_h, 1.0));
   cairo_clip(cr);
-  draw_cells(cr, v, w, pic, options.edges);
+  // Cells of a few pixels only: their edges would hide the colours.
+  const bool edges = options.edges == Edges::on ||
+                     (options.edges == Edges::automatic && mean_cell_pixels(v, w, pic) >= 5);
+  draw_cells(cr, v, w, pic, edges);
   draw_overlay(cr, v, w, pic);
   draw_arrows(cr, v, pic);
   cairo_restore(cr);

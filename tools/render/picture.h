@@ -17,10 +17,12 @@ struct Window {
   double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  ///< the part of the plane shown
 };
 
+enum class Edges { automatic, on, off };  ///< automatic: when cells are >= 5 pixels wide
+
 struct PictureOptions {
   int width = 800, height = 600;  ///< pixels of the PNG
   std::optional<Window> window;   ///< nullopt: the bounding box of the polygons
-  bool edges = true;              ///< draw the cells' edges
+  Edges edges = Edges::automatic;  ///< draw the cells' edges
   std::string title;              ///< one line above the picture (empty: none)
 };
 

@@ -10,7 +10,7 @@ namespace {
 const Vec3& node(const io::MeshData& d, index_t cell, int k) {
   const auto i = static_cast<std::size_t>(cell) * static_cast<std::size_t>(d.nodes_per_cell()) +
                  static_cast<std::size_t>(k);
-  return d.points[static_cast<std::size_t>(d.cells[i])];
+  return d.points[d.cells[i].idx()];
 }
 
 // Orders the points of a convex cut by angle around their mean.
@@ -105,9 +105,10 @@ std::vector<Arrow> target_arrows(const io::MeshData& data, const std::vector<Pol
       half_height = 0.5 * (hi - lo);
     }
     for (int k = 0; k < npc; ++k) {
-      const auto v = static_cast<std::size_t>(
+      const std::size_t v =
           data.cells[static_cast<std::size_t>(poly.cell) * static_cast<std::size_t>(npc) +
-                     static_cast<std::size_t>(k)]);
+                     static_cast<std::size_t>(k)]
+              .idx();
       if (drawn[v]) continue;
       const Vec3& p = data.points[v];
       if (data.dim == 3 && std::abs(p.z() - options.z) > half_height) continue;
