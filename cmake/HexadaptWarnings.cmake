@@ -17,3 +17,12 @@ if(HEXADAPT_SANITIZE)
     -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
   target_link_options(hexadapt_warnings INTERFACE -fsanitize=address,undefined)
 endif()
+if(HEXADAPT_FUZZ)
+  # Coverage instrumentation for libFuzzer in every target (the fuzz executables add
+  # -fsanitize=fuzzer, which brings libFuzzer's main), plus the sanitizers that turn silent
+  # memory errors into crashes.
+  target_compile_options(hexadapt_warnings INTERFACE
+    -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all
+    -fno-omit-frame-pointer)
+  target_link_options(hexadapt_warnings INTERFACE -fsanitize=address,undefined)
+endif()

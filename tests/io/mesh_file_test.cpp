@@ -1,10 +1,13 @@
 #include "hexadapt/io/mesh_file.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 #include <string>
+#include <thread>
 
 #include "hexadapt/core/error.h"
 #include "hexadapt/mesh/structured.h"
@@ -43,6 +46,31 @@ TEST(MeshFile, WritesAndReadsEachWritableFormat) {
     EXPECT_EQ(r.find_cell_array("vf_a")->values, d.find_cell_array("vf_a")->values) << ext;
     std::remove(path.c_str());
   }
+}
+
+// A file larger than one read chunk, from disk (size known) and from a pipe (size unknown).
+TEST(MeshFile, ReadsLargeFilesAndPipes) {
+  const MeshData d = from_mesh(make_hex_grid(16, 16, 16));
+  const std::string path = temp_path("large.vtk");
+  write_mesh(d, path);
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream copy;
+  copy << in.rdbuf();
+  const std::string bytes = copy.str();
+  ASSERT_GT(bytes.size(), std::size_t(1) << 17);
+  EXPECT_EQ(ids(read_mesh(path)), ids(d));
+
+  const std::string fifo = temp_path("pipe.vtk");
+  std::remove(fifo.c_str());
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  std::thread writer([&] { std::ofstream(fifo, std::ios::binary) << bytes; });
+  MeshData r;
+  EXPECT_NO_THROW(r = read_mesh(fifo));
+  writer.join();
+  EXPECT_EQ(ids(r), ids(d));
+  EXPECT_EQ(r.points, d.points);
+  std::remove(path.c_str());
+  std::remove(fifo.c_str());
 }
 
 TEST(MeshFile, TextCasesByExtension) {

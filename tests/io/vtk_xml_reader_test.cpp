@@ -56,6 +56,54 @@ TEST(VtkXmlReader, HexahedronComesInBinaryOrderWithItsArrays) {
   EXPECT_EQ(d.metadata[0], std::make_pair(std::string("tool"), std::string("hi")));
 }
 
+std::string with(std::string text, const std::string& find, const std::string& insert_after) {
+  const std::size_t at = text.find(find);
+  EXPECT_NE(at, std::string::npos) << find;
+  return text.insert(at + find.size(), insert_after);
+}
+
+using Entries = std::vector<std::pair<std::string, std::string>>;
+
+TEST(VtkXmlReader, MetadataCommentComesBeforeStringFieldData) {
+  const std::string text = with(one_hex, "<?xml version=\"1.0\"?>\n",
+                                "<!-- a comment of someone else -->\n"
+                                "<!-- hexadapt metadata\n"
+                                "command: run -\\x2Dx a\\x3Cb & c\n"
+                                "lines: one\\ntwo\\\\n\\x2D\n"
+                                "a\\x3Ab: : \n"
+                                "-->\n");
+  const MeshData d = read_vtk_xml(text, "c.vtu");
+  EXPECT_EQ(d.metadata, (Entries{{"command", "run --x a<b & c"},
+                                 {"lines", "one\ntwo\\n-"},
+                                 {"a:b", ": "},
+                                 {"tool", "hi"}}));
+}
+
+TEST(VtkXmlReader, MetadataCommentInsideVtkFileIsRead) {
+  const std::string text =
+      with(one_hex, "version=\"0.1\">", "\n  <!--hexadapt metadata  \r\nk: v\n\n-->");
+  const MeshData d = read_vtk_xml(text, "c.vtu");
+  EXPECT_EQ(d.metadata, (Entries{{"k", "v"}, {"tool", "hi"}}));
+}
+
+TEST(VtkXmlReader, CommentsThatAreNotOursAreIgnored) {
+  for (const char* comment :
+       {"<!-- hexadapt metadata -->",  // no entry lines: no newline
+        "<!-- other title\nk: v\n-->", "<!-- hexadapt metadata\nno separator\n-->",
+        "<!-- hexadapt metadata\nk: bad \\q escape\n-->",
+        "<!-- hexadapt metadata\nk: short \\x4\n-->"}) {
+    const MeshData d = read_vtk_xml(with(one_hex, "<?xml version=\"1.0\"?>\n", comment), "c.vtu");
+    EXPECT_EQ(d.metadata, (Entries{{"tool", "hi"}})) << comment;
+  }
+}
+
+TEST(VtkXmlReader, CommentInsideAsciiArrayIsSkipped) {
+  const std::string text = with(one_hex, "Name=\"material\" format=\"ascii\">", "<!-- c -->");
+  const MeshData d = read_vtk_xml(text, "c.vtu");
+  ASSERT_EQ(d.cell_data.size(), 1u);
+  EXPECT_EQ(d.cell_data[0].values, std::vector<double>{-7});
+}
+
 TEST(VtkXmlReader, ImageDataAppliesOriginSpacingAndDirection) {
   const char* vti = R"(<VTKFile type="ImageData" version="1.0" byte_order="LittleEndian">
   <ImageData WholeExtent="1 3 0 1 0 0" Origin="10 20 30" Spacing="2 3 1" Direction="0 -1 0 1 0 0 0 0 1">

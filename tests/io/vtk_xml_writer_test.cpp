@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <pugixml.hpp>
+
 #include "hexadapt/core/error.h"
 #include "hexadapt/core/parallel.h"
 #include "hexadapt/io/vtk_xml.h"
@@ -37,6 +39,78 @@ MeshData write_and_read(const MeshData& d, bool vts, const WriteOptions& options
   MeshData back = read_vtk_xml(test::read_text(path), path);
   std::filesystem::remove(path);
   return back;
+}
+
+// Keys and values that an XML comment cannot hold as they are.
+MeshData awkward_metadata_mesh() {
+  MeshData d = test::sample_mesh(2, true);
+  d.metadata = {{"tool", "hexadapt-test"},
+                {"command", "hexadapt-overlay in.vtu -o out.vtu --threads 2 --"},
+                {"lines", "first\nsecond\r\nthird\n"},
+                {"markup", "a<b & c>d <AppendedData encoding=\"raw\"> ]]> <!-- x -->"},
+                {"dashes", "-"},
+                {"", "---"},
+                {"key: with colon", "value: with colon"},
+                {"back\\slash \\n", std::string("nul\0, bell\a, tab\t, \xC3\xA9, \xFF", 24)},
+                {"empty", ""}};
+  return d;
+}
+
+// The text of the comments before <VTKFile>, parsed by pugixml.
+std::vector<std::string> leading_comments(const std::string& file_text) {
+  const std::string prolog = file_text.substr(0, file_text.find("<VTKFile")) + "<VTKFile/>";
+  pugi::xml_document doc;
+  const pugi::xml_parse_result ok =
+      doc.load_string(prolog.c_str(), pugi::parse_default | pugi::parse_comments);
+  EXPECT_TRUE(ok) << ok.description() << " at " << ok.offset;
+  std::vector<std::string> out;
+  for (const pugi::xml_node c : doc.children())
+    if (c.type() == pugi::node_comment) out.emplace_back(c.value());
+  return out;
+}
+
+TEST(VtkXmlWriter, MetadataWithAwkwardCharactersRoundTrips) {
+  const MeshData d = awkward_metadata_mesh();
+  for (bool vts : {false, true}) {
+    const MeshData back = write_and_read(d, vts, {});
+    EXPECT_EQ(back.metadata, d.metadata) << (vts ? "vts" : "vtu");
+  }
+}
+
+TEST(VtkXmlWriter, MetadataIsOneValidCommentAndNoStringArray) {
+  const MeshData d = awkward_metadata_mesh();
+  const std::string path = test::temp_path("meta.vtu");
+  write_vtu(d, path);
+  const std::string text = test::read_text(path);
+  std::filesystem::remove(path);
+  EXPECT_EQ(text.find("type=\"String\""), std::string::npos);
+  EXPECT_EQ(text.find("<FieldData"), std::string::npos);
+  EXPECT_EQ(text.find("<AppendedData"), text.rfind("<AppendedData"));
+  const std::vector<std::string> comments = leading_comments(text);
+  ASSERT_EQ(comments.size(), 1u);
+  const std::string& c = comments[0];
+  EXPECT_EQ(c.find("--"), std::string::npos);
+  EXPECT_NE(c.back(), '-');
+  // Readable by a person: plain entries stay plain, one line per entry.
+  EXPECT_NE(c.find("\ntool: hexadapt-test\n"), std::string::npos) << c;
+  EXPECT_NE(c.find("\nlines: first\\nsecond\\x0D\\nthird\\n\n"), std::string::npos) << c;
+  EXPECT_NE(c.find("a\\x3Cb & c>d"), std::string::npos) << c;
+  EXPECT_NE(c.find("\xC3\xA9"), std::string::npos) << c;  // valid UTF-8 is kept
+  EXPECT_NE(c.find("\\xFF"), std::string::npos) << c;     // a stray byte is escaped
+  std::size_t lines = 0;
+  for (char ch : c) lines += ch == '\n';
+  EXPECT_EQ(lines, 1 + d.metadata.size());
+}
+
+TEST(VtkXmlWriter, NoMetadataNoComment) {
+  MeshData d = test::sample_mesh(2, false);
+  d.metadata.clear();
+  const std::string path = test::temp_path("nometa.vtu");
+  write_vtu(d, path);
+  const std::string text = test::read_text(path);
+  EXPECT_EQ(text.find("<!--"), std::string::npos);
+  EXPECT_TRUE(read_vtk_xml(text, path).metadata.empty());
+  std::filesystem::remove(path);
 }
 
 TEST(VtkXmlWriter, VtuRoundTripsHexesAndQuadsCompressedOrNot) {

@@ -27,6 +27,14 @@ std::string extension_of(const std::string& path) {
   return ext;
 }
 
+// The size of a regular file, or -1 when it has none (a pipe, a terminal).
+long file_size(std::FILE* f) {
+  if (std::fseek(f, 0, SEEK_END) != 0) return -1;
+  const long size = std::ftell(f);
+  if (std::fseek(f, 0, SEEK_SET) != 0) return -1;
+  return size;
+}
+
 std::string read_whole_file(const std::string& path) {
   struct Closer {
     void operator()(std::FILE* f) const { std::fclose(f); }
@@ -34,6 +42,12 @@ std::string read_whole_file(const std::string& path) {
   const std::unique_ptr<std::FILE, Closer> f(std::fopen(path.c_str(), "rb"));
   if (!f) throw IoError(path + ": cannot open: " + std::strerror(errno));
   std::string content;
+  const long size = file_size(f.get());
+  if (size > 0) {
+    // One allocation and one read; the chunked loop below still catches a file that grew.
+    content.resize(static_cast<std::size_t>(size));
+    content.resize(std::fread(content.data(), 1, content.size(), f.get()));
+  }
   char buffer[1 << 16];
   std::size_t n;
   while ((n = std::fread(buffer, 1, sizeof buffer, f.get())) > 0) content.append(buffer, n);

@@ -56,11 +56,9 @@ void fill_structured(MeshData& data, std::array<std::int64_t, 3> dims, std::vect
                                          "no quads or hexes");
   data.points = std::move(points);
   if (flat == 0) {
-    const auto cells = structured_hexes(static_cast<int>(dims[0] - 1), static_cast<int>(dims[1] - 1),
-                                        static_cast<int>(dims[2] - 1));
     data.dim = 3;
-    data.cells.reserve(cells.size() * 8);
-    for (const auto& c : cells) data.cells.insert(data.cells.end(), c.begin(), c.end());
+    append_structured_cells(static_cast<int>(dims[0] - 1), static_cast<int>(dims[1] - 1),
+                            static_cast<int>(dims[2] - 1), data.cells);
     data.structured_cells = {static_cast<int>(dims[0] - 1), static_cast<int>(dims[1] - 1),
                              static_cast<int>(dims[2] - 1)};
     return;
@@ -77,10 +75,8 @@ void fill_structured(MeshData& data, std::array<std::int64_t, 3> dims, std::vect
   map_plane(data.points, ax[0], ax[1]);
   const int nx = static_cast<int>(dims[static_cast<std::size_t>(ax[0])] - 1);
   const int ny = static_cast<int>(dims[static_cast<std::size_t>(ax[1])] - 1);
-  const auto cells = structured_quads(nx, ny);
   data.dim = 2;
-  data.cells.reserve(cells.size() * 4);
-  for (const auto& c : cells) data.cells.insert(data.cells.end(), c.begin(), c.end());
+  append_structured_cells(nx, ny, 0, data.cells);
   data.structured_cells = {nx, ny, 0};
 }
 

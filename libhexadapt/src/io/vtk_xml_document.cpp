@@ -62,7 +62,9 @@ void load_vtk_xml(VtkXmlDocument& doc, std::string_view content, const std::stri
   std::string cut;
   const bool appended = cut_appended(doc, content, cut);
   const std::string_view text = appended ? std::string_view(cut) : content;
-  const pugi::xml_parse_result ok = doc.xml.load_buffer(text.data(), text.size());
+  // Comments are kept: our metadata is one (see vtk_xml_comment.h).
+  const pugi::xml_parse_result ok =
+      doc.xml.load_buffer(text.data(), text.size(), pugi::parse_default | pugi::parse_comments);
   if (!ok)
     throw InputError(file, "byte " + std::to_string(ok.offset),
                      std::string("malformed XML: ") + ok.description());

@@ -4,6 +4,7 @@
 #include "hexadapt/core/log.h"
 #include "hexadapt/io/vtk_xml.h"
 #include "vtk_xml_array.h"
+#include "vtk_xml_comment.h"
 
 namespace hexadapt::io {
 
@@ -51,6 +52,17 @@ void read_field_data(const VtkXmlDocument& doc, const pugi::xml_node& field, Mes
   }
 }
 
+// Our metadata comment, before <VTKFile> or among its children (the first one found).
+void read_metadata_comment(const VtkXmlDocument& doc, MeshData& data) {
+  for (const pugi::xml_node parent : {doc.xml.root(), doc.root})
+    for (const pugi::xml_node c : parent.children())
+      if (c.type() == pugi::node_comment)
+        if (auto entries = parse_metadata_comment(c.value())) {
+          for (auto& entry : *entries) data.metadata.push_back(std::move(entry));
+          return;
+        }
+}
+
 }  // namespace
 
 void read_attributes(const VtkXmlDocument& doc, const pugi::xml_node& dataset,
@@ -58,6 +70,7 @@ void read_attributes(const VtkXmlDocument& doc, const pugi::xml_node& dataset,
                      MeshData& data) {
   read_arrays(doc, piece.child("PointData"), n_points, data.point_data);
   read_arrays(doc, piece.child("CellData"), n_cells, data.cell_data);
+  read_metadata_comment(doc, data);
   read_field_data(doc, dataset.child("FieldData"), data);
 }
 

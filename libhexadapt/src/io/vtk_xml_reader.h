@@ -12,8 +12,9 @@ namespace hexadapt::io::detail {
 /// the element is missing, has no Piece, or has several (multi-piece files are not read).
 pugi::xml_node single_piece(const VtkXmlDocument& doc, const pugi::xml_node& dataset);
 
-/// Reads <PointData>, <CellData> of the piece and the String arrays of <FieldData> of the
-/// data set into data (needs n_points / n_cells as the file declares them).
+/// Reads <PointData>, <CellData> of the piece, then as metadata our metadata comment and the
+/// String arrays of <FieldData> of the data set, into data (needs n_points / n_cells as the
+/// file declares them).
 void read_attributes(const VtkXmlDocument& doc, const pugi::xml_node& dataset,
                      const pugi::xml_node& piece, std::size_t n_points, std::size_t n_cells,
                      MeshData& data);

@@ -8,6 +8,7 @@
 #include "hexadapt/io/atomic_file.h"
 #include "hexadapt/io/vtk_xml.h"
 #include "hexadapt/mesh/structured.h"
+#include "vtk_xml_comment.h"
 #include "vtk_xml_encode.h"
 #include "vtk_xml_scalar.h"
 
@@ -102,20 +103,11 @@ class XmlFile {
     }
   }
 
-  // Metadata as string arrays: one string (NUL-terminated character codes) per key.
+  // Metadata as one comment before <VTKFile>: meshio 5 rejects String field data.
   void add_metadata(const MeshData& d) {
     if (d.metadata.empty()) return;
-    pugi::xml_node field = dataset_.prepend_child("FieldData");
-    for (const auto& [key, value] : d.metadata) {
-      pugi::xml_node e = field.append_child("DataArray");
-      e.append_attribute("type") = "String";
-      e.append_attribute("Name") = key.c_str();
-      e.append_attribute("NumberOfTuples") = 1;
-      e.append_attribute("format") = "ascii";
-      std::string codes;
-      for (char c : value) codes += std::to_string(static_cast<unsigned char>(c)) + " ";
-      e.append_child(pugi::node_pcdata).set_value((codes + "0").c_str());
-    }
+    doc_.insert_child_before(pugi::node_comment, root_)
+        .set_value(detail::metadata_comment(d.metadata).c_str());
   }
 
   void write(const std::string& path) {
@@ -204,12 +196,7 @@ bool is_structured(const MeshData& d) {
   const std::size_t np = std::size_t(n[0] + 1) * std::size_t(n[1] + 1) * std::size_t(n[2] + 1);
   if (d.points.size() != np) return false;
   std::vector<NodeId> expected;
-  if (d.dim == 3)
-    for (const auto& c : structured_hexes(n[0], n[1], n[2]))
-      expected.insert(expected.end(), c.begin(), c.end());
-  else
-    for (const auto& c : structured_quads(n[0], n[1]))
-      expected.insert(expected.end(), c.begin(), c.end());
+  append_structured_cells(n[0], n[1], d.dim == 3 ? n[2] : 0, expected);
   return expected == d.cells;
 }
 

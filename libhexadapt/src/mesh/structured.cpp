@@ -1,5 +1,6 @@
 #include "hexadapt/mesh/structured.h"
 
+#include <algorithm>
 #include <string>
 
 #include "hexadapt/core/error.h"
@@ -30,38 +31,55 @@ std::vector<double> regular_axis(int n, double origin, double spacing) {
 
 NodeId node_id(int i, int j, int k, int nx, int ny) {
   return NodeId(static_cast<std::int64_t>(i) +
-                static_cast<std::int64_t>(nx + 1) *
-                    (j + static_cast<std::int64_t>(ny + 1) * k));
+                static_cast<std::int64_t>(nx + 1) * (j + static_cast<std::int64_t>(ny + 1) * k));
+}
+
+}  // namespace
+
+void append_structured_cells(int nx, int ny, int nz, std::vector<NodeId>& out) {
+  if (nz == 0) {
+    check_counts({nx, ny});
+    out.reserve(out.size() + 4 * static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny));
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+        out.insert(out.end(), {node_id(i, j, 0, nx, ny), node_id(i + 1, j, 0, nx, ny),
+                               node_id(i + 1, j + 1, 0, nx, ny), node_id(i, j + 1, 0, nx, ny)});
+    return;
+  }
+  check_counts({nx, ny, nz});
+  out.reserve(out.size() + 8 * static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny) *
+                               static_cast<std::size_t>(nz));
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+        for (int v = 0; v < 8; ++v)
+          out.push_back(node_id(i + (v & 1), j + ((v >> 1) & 1), k + ((v >> 2) & 1), nx, ny));
+}
+
+namespace {
+
+template <std::size_t N>
+std::vector<std::array<NodeId, N>> grouped(const std::vector<NodeId>& flat) {
+  std::vector<std::array<NodeId, N>> cells(flat.size() / N);
+  for (std::size_t c = 0; c < cells.size(); ++c)
+    std::copy(flat.begin() + static_cast<std::ptrdiff_t>(N * c),
+              flat.begin() + static_cast<std::ptrdiff_t>(N * (c + 1)), cells[c].begin());
+  return cells;
 }
 
 }  // namespace
 
 std::vector<std::array<NodeId, 4>> structured_quads(int nx, int ny) {
-  check_counts({nx, ny});
-  std::vector<std::array<NodeId, 4>> cells;
-  cells.reserve(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny));
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i)
-      cells.push_back({node_id(i, j, 0, nx, ny), node_id(i + 1, j, 0, nx, ny),
-                       node_id(i + 1, j + 1, 0, nx, ny), node_id(i, j + 1, 0, nx, ny)});
-  return cells;
+  std::vector<NodeId> flat;
+  append_structured_cells(nx, ny, 0, flat);
+  return grouped<4>(flat);
 }
 
 std::vector<std::array<NodeId, 8>> structured_hexes(int nx, int ny, int nz) {
-  check_counts({nx, ny, nz});
-  std::vector<std::array<NodeId, 8>> cells;
-  cells.reserve(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny) *
-                static_cast<std::size_t>(nz));
-  for (int k = 0; k < nz; ++k)
-    for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i) {
-        std::array<NodeId, 8> c;
-        for (int v = 0; v < 8; ++v)
-          c[static_cast<std::size_t>(v)] =
-              node_id(i + (v & 1), j + ((v >> 1) & 1), k + ((v >> 2) & 1), nx, ny);
-        cells.push_back(c);
-      }
-  return cells;
+  check_counts({nx, ny, nz});  // nz == 0 would ask append_structured_cells for quads
+  std::vector<NodeId> flat;
+  append_structured_cells(nx, ny, nz, flat);
+  return grouped<8>(flat);
 }
 
 QuadMesh make_quad_grid(int nx, int ny, const Vec3& origin, const Vec3& spacing) {

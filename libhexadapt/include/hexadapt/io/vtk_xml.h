@@ -15,18 +15,39 @@
 
 namespace hexadapt::io {
 
+// Metadata comment. MeshData::metadata is written as one XML comment between the XML
+// declaration and <VTKFile> (String field data would stop meshio 5 from reading the file):
+//
+//   <!-- hexadapt metadata
+//   tool: hexadapt-overlay
+//   command: hexadapt-overlay in.vtu -\x2Dthreads 2
+//   -->
+//
+// The first line is the title "hexadapt metadata", then one "key: value" line per entry, in
+// order; the key ends at the first ": " of the line. Keys and values are escaped so the
+// comment is valid XML and the lines split back exactly:
+//   \\    a backslash
+//   \n    a line break (LF)
+//   \xHH  the byte with hexadecimal value HH, used for: a '-' that follows another '-' or
+//         ends the key or value ("--" and a final '-' are not allowed in a comment); '<'
+//         (so that text searches for "<AppendedData", as meshio's, never match inside the
+//         comment); control characters but tab (CR included) and DEL; bytes that are not
+//         valid UTF-8; ':' in keys.
+// Everything else, '&' and '>' included, is written as it is. The reader accepts the comment
+// before <VTKFile> or as a child of it.
+
 /// Parses a whole XML VTK file held in memory; `file` names it in error messages. The data
 /// set type is taken from the VTKFile element; a file must hold one Piece. Cells: quads,
 /// pixels, hexahedra, voxels (see mesh_data.h for the order). Arrays keep their name, type
-/// and component count; String arrays of FieldData become metadata (several strings of one
-/// array joined by newlines). Throws InputError naming the file, the place (element, byte
-/// offset, cell) and what was expected.
+/// and component count. Metadata: the entries of our metadata comment (see below), then the
+/// String arrays of FieldData (several strings of one array joined by newlines). Throws InputError
+/// naming the file, the place (element, byte offset, cell) and what was expected.
 MeshData read_vtk_xml(std::string_view content, const std::string& file,
                       const ReadOptions& options = {});
 
 /// Writes an UnstructuredGrid (.vtu): raw appended data with UInt64 headers; points as
 /// Float64, connectivity and offsets as Int64 in VTK's node order (VTK_HEXAHEDRON or
-/// VTK_QUAD), arrays with their own type, metadata as String field data. Compression: the
+/// VTK_QUAD), arrays with their own type, metadata as a comment (see below). Compression: the
 /// file is zlib-compressed when options.compress is set and some array is larger than
 /// options.compress_above bytes; VTK's format compresses all arrays of a file or none, so
 /// the smaller arrays of such a file are stored in zlib blocks at level 0 (not compressed).

@@ -26,8 +26,12 @@ HexMesh make_hex_grid(const std::vector<double>& xs, const std::vector<double>& 
                       const std::vector<double>& zs);
 HexMesh make_hex_grid(int nx, int ny, int nz, std::vector<Vec3> points);
 
-/// The cells of a structured block with n[0] x n[1] (x n[2]) cells, node ids as above:
-/// counter-clockwise quads when n[2] == 0, binary-order hexes otherwise.
+/// The cells of a structured block with nx x ny (x nz) cells, node ids as above:
+/// counter-clockwise quads when nz == 0, binary-order hexes otherwise; cell after cell,
+/// 4 or 8 ids each, appended to `out` (the one source of this numbering).
+void append_structured_cells(int nx, int ny, int nz, std::vector<NodeId>& out);
+
+/// The same cells as arrays of node ids.
 std::vector<std::array<NodeId, 4>> structured_quads(int nx, int ny);
 std::vector<std::array<NodeId, 8>> structured_hexes(int nx, int ny, int nz);
 

@@ -1,0 +1,40 @@
+// Quality-controlled node movement (paper sec. 5.1) and the uncontrolled direct move of the
+// base algorithm (Fig. 10-a).
+//
+// Each node with a target moves toward it in `steps` equal steps (k / steps of the way from
+// where it started); a step is taken only if every cell around the node keeps a scaled
+// Jacobian >= threshold (a cell already below the threshold may not get worse). A node that
+// is refused stays where it is and tries again on the next round, so a neighbour moving away
+// can unblock it; rounds stop when no node advances. Nodes that share no cell move in
+// parallel (independent_node_sets), in a fixed order: the result is the same whatever the
+// thread count.
+#pragma once
+
+#include "hexadapt/adapt/targets.h"
+#include "hexadapt/core/ids.h"
+
+namespace hexadapt {
+
+struct MoveOptions {
+  double threshold = 0.3;  ///< S_q: the smallest scaled Jacobian a step may leave
+  int steps = 16;          ///< a node moves 1/steps of its way at a time
+  int max_rounds = 0;      ///< rounds over all nodes; 0 = 4 * steps
+};
+
+struct MoveResult {
+  IdVector<NodeId, char> reached;  ///< 1: the node got to its target (or had none)
+  index_t n_moving = 0;            ///< nodes that had somewhere to go
+  index_t n_reached = 0;           ///< of those, how many got all the way
+  int rounds = 0;
+  double dist = 0;  ///< sum over target nodes of |position - target| after
+};
+
+/// Moves the nodes with targets.has set. Throws OptionError for steps < 1.
+template <class M>
+MoveResult controlled_move(M& mesh, const Targets& targets, const MoveOptions& options = {});
+
+/// Puts every node with a target on it, whatever happens to the cells (base algorithm).
+template <class M>
+MoveResult direct_move(M& mesh, const Targets& targets);
+
+}  // namespace hexadapt

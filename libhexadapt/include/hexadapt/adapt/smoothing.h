@@ -1,0 +1,40 @@
+// Quality-preserving smoothing (paper sec. 5.1: "it must not decrease the quality and nodes
+// that have reached the geometrical interfaces are fixed").
+//
+// Each movable node is pulled toward the mean of its edge neighbours, the displacement
+// restricted by its constraint (boundary plane or edge, interface plane or curve: the node
+// slides along them), and shortened by halves until the smallest scaled Jacobian of the cells
+// around the node does not go down; a move that cannot keep it is not made. A node whose
+// cells stay poor then tries a pattern search along the axes (within its constraint) that
+// only accepts a higher local minimum: it untangles what the Laplacian pull cannot. Nodes sharing
+// no cell are moved in parallel in a fixed order, so the result does not depend on the thread
+// count.
+#pragma once
+
+#include "hexadapt/adapt/node_constraint.h"
+#include "hexadapt/core/ids.h"
+
+namespace hexadapt {
+
+struct SmoothOptions {
+  int iterations = 20;  ///< sweeps over all movable nodes
+  int halvings = 4;     ///< how many times a refused displacement is halved and retried
+  /// A sweep that improves no node's local minimum by more than this stops the smoothing.
+  double min_gain = 1e-6;
+  /// Nodes whose local minimum stays below this also try the pattern search.
+  double optimise_below = 0.5;
+  int search_levels = 4;  ///< pattern-search step halvings (first step: 1/4 edge length)
+};
+
+struct SmoothResult {
+  int iterations = 0;  ///< sweeps done
+  index_t moves = 0;   ///< node moves made over all sweeps
+};
+
+/// Smooths the nodes with movable[n] != 0, keeping each within constraint[n].
+template <class M>
+SmoothResult smooth(M& mesh, const IdVector<NodeId, char>& movable,
+                    const IdVector<NodeId, NodeConstraint>& constraint,
+                    const SmoothOptions& options = {});
+
+}  // namespace hexadapt

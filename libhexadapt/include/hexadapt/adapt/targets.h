@@ -1,0 +1,73 @@
+// Ideal positions of the interface nodes (paper sec. 5, DESIGN 4.3; Sculpt-like, as in the
+// reference code).
+//
+// Interface nodes are the nodes whose cells carry more than one material. For every cell
+// next to an interface face, each material's volume-fraction gradient is fitted by weighted
+// least squares over the node-neighbour cells (w = 1 / (d^2 + eps), eps = mean(d^2) / 100,
+// d the distance between cell centres). On the face between c0 (material m0) and c1 (m1) the
+// two fractions cross at t = (f_m1(c0) - f_m0(c0)) / d along the segment of the cell centres,
+// with d = f_m0(c1) - f_m0(c0) - f_m1(c1) + f_m1(c0) (t = 1/2 when |d| is tiny, clamped to
+// [0, 1]); the interface plane there has the normal g_m0(t) - g_m1(t) of the interpolated
+// gradients. A node's target is the mean of its projections onto the planes (2D: lines) of
+// its interface faces, then projected onto the domain boundary when the node is on it.
+#pragma once
+
+#include <vector>
+
+#include "hexadapt/adapt/node_constraint.h"
+#include "hexadapt/core/ids.h"
+#include "hexadapt/mesh/cell_complex.h"
+#include "hexadapt/mesh/fractions.h"
+
+namespace hexadapt {
+
+struct TargetOptions {
+  double eps_factor = 0.01;        ///< eps = eps_factor * mean(d^2) in the gradient weights
+  double tiny_denominator = 1e-5;  ///< |d| below this: the crossing is the face's middle, t = 1/2
+  /// An interface normal direction counts for the node's sliding constraint when its weight
+  /// is above this share of the strongest one (2D triple points and 3D triple curves).
+  double normal_share = 0.2;
+};
+
+/// The interface plane found on one face between two materials.
+struct InterfaceFace {
+  CellId c0, c1;  ///< c0 < c1
+  int lf = 0;     ///< local face of c0
+  Vec3 point;     ///< crossing point X
+  Vec3 normal;    ///< unit normal n
+};
+
+struct Targets {
+  IdVector<NodeId, char> has;       ///< 1 for the interface nodes
+  IdVector<NodeId, Vec3> position;  ///< the target (a node's own position when has == 0)
+  /// The interface directions a node must keep to when smoothing slides it along the
+  /// interface (empty for non-interface nodes).
+  IdVector<NodeId, NodeConstraint> interface;
+  std::vector<InterfaceFace> faces;  ///< every interface face, in (c0, lf) order
+  index_t n_interface_nodes = 0;
+};
+
+/// `material` holds one material index per cell (the assignment); `fractions` the volume
+/// fractions. `boundary` is the boundary constraint of every node (boundary_constraints()).
+/// Throws InputError when sizes disagree or a material index is out of range.
+template <class M>
+Targets compute_targets(const M& mesh, const Fractions& fractions,
+                        const IdVector<CellId, int>& material,
+                        const IdVector<NodeId, NodeConstraint>& boundary,
+                        const TargetOptions& options = {});
+
+/// Least-squares gradient of every material's fraction in cell c (one per material).
+template <class M>
+std::vector<Vec3> fraction_gradients(const M& mesh, const Fractions& fractions, CellId c,
+                                     double eps_factor);
+
+/// Each node's boundary constraint plus its interface directions: what smoothing keeps an
+/// interface node to, so that it slides along its interface (and the boundary).
+IdVector<NodeId, NodeConstraint> sliding_constraints(
+    const IdVector<NodeId, NodeConstraint>& boundary, const Targets& targets);
+
+/// Sum over the nodes with a target of |position - target|.
+template <class M>
+double target_distance(const M& mesh, const Targets& targets);
+
+}  // namespace hexadapt

@@ -1,0 +1,58 @@
+#include "hexadapt/adapt/adapt_io.h"
+
+#include <cmath>
+#include <string>
+
+#include "hexadapt/core/error.h"
+
+namespace hexadapt {
+
+IdVector<CellId, int> read_material_array(const io::MeshData& data, int n_materials,
+                                          const std::string& file, const std::string& array) {
+  const io::DataArray* a = data.find_cell_array(array);
+  if (a == nullptr)
+    throw InputError(file, "cell data",
+                     "no '" + array + "' cell array: run hexadapt-assign on the grid first");
+  if (a->n_components != 1 || a->n_tuples() != static_cast<std::size_t>(data.n_cells()))
+    throw InputError(file, "cell array '" + array + "'",
+                     "expected one value per cell (" + std::to_string(data.n_cells()) + ")");
+  IdVector<CellId, int> out(static_cast<std::size_t>(data.n_cells()));
+  for (CellId c : id_range<CellId>(data.n_cells())) {
+    const double v = a->values[c.idx()];
+    if (!(v >= 0 && v < n_materials && v == std::floor(v)))
+      throw InputError(file, "cell " + std::to_string(c.value()),
+                       "'" + array + "' is " + std::to_string(v) +
+                           ", expected a material index in [0, " + std::to_string(n_materials) +
+                           ")");
+    out[c] = static_cast<int>(v);
+  }
+  return out;
+}
+
+template <class M>
+io::MeshData adapt_mesh_data(const AdaptResult<M>& result,
+                             const std::vector<std::string>& material_names) {
+  io::MeshData data = io::from_mesh(result.mesh);
+  io::DataArray material{"material", 1, io::ScalarType::int32, {}};
+  for (int m : result.material) material.values.push_back(m);
+  data.set_cell_array(std::move(material));
+  io::DataArray target{"target", 3, io::ScalarType::float64, {}};
+  io::DataArray distance{"distance", 1, io::ScalarType::float64, {}};
+  for (NodeId v : id_range<NodeId>(result.mesh.n_nodes())) {
+    for (int k = 0; k < 3; ++k) target.values.push_back(result.target[v][k]);
+    distance.values.push_back(result.distance[v]);
+  }
+  data.set_point_array(std::move(target));
+  data.set_point_array(std::move(distance));
+  std::string names;
+  for (const auto& n : material_names) names += (names.empty() ? "" : ",") + n;
+  data.metadata.emplace_back("materials", names);
+  return data;
+}
+
+template io::MeshData adapt_mesh_data<QuadMesh>(const AdaptResult<QuadMesh>&,
+                                                const std::vector<std::string>&);
+template io::MeshData adapt_mesh_data<HexMesh>(const AdaptResult<HexMesh>&,
+                                               const std::vector<std::string>&);
+
+}  // namespace hexadapt

@@ -1,0 +1,179 @@
+#include "hexadapt/adapt/pillow.h"
+
+#include <algorithm>
+#include <vector>
+
+#include "hexadapt/adapt/local_topology.h"
+#include "hexadapt/core/error.h"
+
+namespace hexadapt {
+
+template <>
+QuadMesh::CellNodes layer_cell<QuadMesh>(const QuadMesh::FaceNodes& f,
+                                         const QuadMesh::FaceNodes& g) {
+  // The set cell lies left of f0 -> f1 (counter-clockwise), the copies on that side.
+  return {f[0], f[1], g[1], g[0]};
+}
+
+template <>
+HexMesh::CellNodes layer_cell<HexMesh>(const HexMesh::FaceNodes& f, const HexMesh::FaceNodes& g) {
+  // f's normal points away from the set cell: copies at the bottom (z-), originals on top,
+  // in binary order (0, 1, 3, 2 counter-clockwise seen from above).
+  return {g[0], g[1], g[3], g[2], f[0], f[1], f[3], f[2]};
+}
+
+namespace {
+
+template <class M>
+bool face_has_node(const M& mesh, CellId c, int lf, NodeId n) {
+  for (NodeId v : mesh.face_nodes(c, lf))
+    if (v == n) return true;
+  return false;
+}
+
+// Labels the set's cells around n by face-connected fan (cells joined through a face that
+// holds n); returns the label of each cell of `cells`, labels 0, 1, ... by first cell.
+template <class M>
+std::vector<int> fans_around(const M& mesh, NodeId n, const std::vector<CellId>& cells) {
+  std::vector<int> label(cells.size(), -1);
+  int next = 0;
+  for (std::size_t s = 0; s < cells.size(); ++s) {
+    if (label[s] >= 0) continue;
+    label[s] = next;
+    std::vector<std::size_t> stack{s};
+    while (!stack.empty()) {
+      const CellId c = cells[stack.back()];
+      stack.pop_back();
+      for (int lf = 0; lf < M::faces_per_cell; ++lf) {
+        if (!face_has_node(mesh, c, lf, n)) continue;
+        const auto it = std::find(cells.begin(), cells.end(), mesh.neighbour(c, lf));
+        if (it == cells.end()) continue;
+        const auto k = static_cast<std::size_t>(it - cells.begin());
+        if (label[k] < 0) {
+          label[k] = next;
+          stack.push_back(k);
+        }
+      }
+    }
+    ++next;
+  }
+  return label;
+}
+
+// Where a copy goes, before scaling by the offset option: along the fan's inward normal
+// (kept on the boundary), as far as the fan's cells' centres are from the node on average
+// (not as deep as their mean centre: around a concave corner that lies at the node itself).
+// Toward the mean centre when the normals cancel out.
+Vec3 copy_offset(const NodeConstraint& boundary, const Vec3& inward, const Vec3& to_centre,
+                 double reach) {
+  const Vec3 d = boundary.project(inward);
+  const double len = d.norm();
+  if (len > 1e-9) return reach * d / len;
+  return boundary.project(to_centre);
+}
+
+}  // namespace
+
+template <class M>
+PillowResult<M> pillow_cells(const M& mesh, const IdVector<CellId, char>& in_set,
+                             const IdVector<NodeId, NodeConstraint>& boundary,
+                             const PillowOptions& options) {
+  if (in_set.size() != static_cast<std::size_t>(mesh.n_cells()) ||
+      boundary.size() != static_cast<std::size_t>(mesh.n_nodes()))
+    throw InternalError("pillow: cell set or constraints do not match the mesh");
+  if (!(options.offset > 0 && options.offset < 1))
+    throw OptionError("pillow offset must be in (0, 1), got " + std::to_string(options.offset));
+  std::vector<std::pair<CellId, int>> faces;
+  IdVector<NodeId, char> split(static_cast<std::size_t>(mesh.n_nodes()), 0);
+  for (CellId c : id_range<CellId>(mesh.n_cells())) {
+    if (!in_set[c]) continue;
+    for (int lf = 0; lf < M::faces_per_cell; ++lf) {
+      const CellId o = mesh.neighbour(c, lf);
+      if (!o.valid() || in_set[o]) continue;
+      faces.emplace_back(c, lf);
+      for (NodeId v : mesh.face_nodes(c, lf)) split[v] = 1;
+    }
+  }
+
+  std::vector<Vec3> points(mesh.n_nodes());
+  std::vector<typename M::CellNodes> cells(static_cast<std::size_t>(mesh.n_cells()));
+  for (NodeId v : id_range<NodeId>(mesh.n_nodes())) points[v.idx()] = mesh.point(v);
+  for (CellId c : id_range<CellId>(mesh.n_cells())) cells[c.idx()] = mesh.cell_nodes(c);
+  PillowResult<M> out;
+  out.node_origin = IdVector<NodeId, NodeId>(std::vector<NodeId>());
+  for (NodeId v : id_range<NodeId>(mesh.n_nodes())) out.node_origin.push_back(v);
+
+  // Fans of the set's cells around every split node, and the inward normal of each fan's
+  // pillowed faces: the copy leaves its original across the interface, never along it.
+  const auto nn = static_cast<std::size_t>(mesh.n_nodes());
+  IdVector<NodeId, std::vector<CellId>> around(nn);
+  IdVector<NodeId, std::vector<int>> fan(nn);
+  IdVector<NodeId, std::vector<Vec3>> inward(nn);
+  for (NodeId n : id_range<NodeId>(mesh.n_nodes())) {
+    if (!split[n]) continue;
+    for (CellId c : mesh.node_cells(n))
+      if (in_set[c]) around[n].push_back(c);
+    fan[n] = fans_around(mesh, n, around[n]);
+    int n_fans = 0;
+    for (int f : fan[n]) n_fans = std::max(n_fans, f + 1);
+    inward[n].assign(static_cast<std::size_t>(n_fans), Vec3::Zero());
+  }
+  for (const auto& [c, lf] : faces) {
+    const Vec3 normal = face_normal(mesh, c, lf);
+    for (NodeId v : mesh.face_nodes(c, lf)) {
+      const auto k = static_cast<std::size_t>(std::find(around[v].begin(), around[v].end(), c) -
+                                              around[v].begin());
+      inward[v][static_cast<std::size_t>(fan[v][k])] -= normal;
+    }
+  }
+  for (NodeId n : id_range<NodeId>(mesh.n_nodes())) {
+    if (!split[n]) continue;
+    const Vec3 p = mesh.point(n);
+    for (std::size_t f = 0; f < inward[n].size(); ++f) {
+      const NodeId copy(static_cast<index_t>(points.size()));
+      Vec3 centre = Vec3::Zero();
+      double reach = 0;
+      int count = 0;
+      for (std::size_t k = 0; k < around[n].size(); ++k) {
+        if (static_cast<std::size_t>(fan[n][k]) != f) continue;
+        const CellId c = around[n][k];
+        const Vec3 x = cell_centroid(mesh, c);
+        centre += x;
+        reach += (x - p).norm();
+        ++count;
+        cells[c.idx()][static_cast<std::size_t>(corner_of(mesh, c, n))] = copy;
+      }
+      centre /= count;
+      reach /= count;
+      points.push_back(p + options.offset *
+                               copy_offset(boundary[n], inward[n][f], centre - p, reach));
+      out.node_origin.push_back(n);
+    }
+  }
+
+  std::vector<CellId> origin(static_cast<std::size_t>(mesh.n_cells()));
+  for (CellId c : id_range<CellId>(mesh.n_cells())) origin[c.idx()] = c;
+  for (const auto& [c, lf] : faces) {
+    const auto f = mesh.face_nodes(c, lf);
+    auto g = f;
+    for (std::size_t i = 0; i < g.size(); ++i)
+      g[i] = cells[c.idx()][static_cast<std::size_t>(corner_of(mesh, c, f[i]))];
+    cells.push_back(layer_cell<M>(f, g));
+    origin.push_back(c);
+  }
+  out.n_new_nodes = static_cast<index_t>(points.size()) - mesh.n_nodes();
+  out.n_new_cells = static_cast<index_t>(faces.size());
+  out.cell_origin = IdVector<CellId, CellId>(std::move(origin));
+  out.mesh = M(std::move(points), std::move(cells));
+  return out;
+}
+
+template PillowResult<QuadMesh> pillow_cells<QuadMesh>(const QuadMesh&,
+                                                       const IdVector<CellId, char>&,
+                                                       const IdVector<NodeId, NodeConstraint>&,
+                                                       const PillowOptions&);
+template PillowResult<HexMesh> pillow_cells<HexMesh>(const HexMesh&, const IdVector<CellId, char>&,
+                                                     const IdVector<NodeId, NodeConstraint>&,
+                                                     const PillowOptions&);
+
+}  // namespace hexadapt

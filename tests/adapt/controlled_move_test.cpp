@@ -1,0 +1,143 @@
+#include "hexadapt/adapt/controlled_move.h"
+
+#include <gtest/gtest.h>
+
+#include "adapt/adapt_cases.h"
+#include "hexadapt/core/parallel.h"
+
+namespace hexadapt {
+namespace {
+
+using test::majority;
+using test::sample_fractions;
+
+template <class M>
+Targets targets_of(const M& mesh, const test::Shape& shape, int n_materials, int s = 8) {
+  const Fractions f = sample_fractions(mesh, shape, n_materials, s);
+  return compute_targets(mesh, f, majority(f), boundary_constraints(mesh));
+}
+
+test::Shape disk(const Vec3& centre, double r) {
+  return [=](const Vec3& p) {
+    Vec3 d = p - centre;
+    d.z() = 0;
+    return d.norm() < r ? 1 : 0;
+  };
+}
+
+// Three regions meeting at a point, with a bump: a triple-point-like layout.
+test::Shape three_regions(double xs, double ys) {
+  return [=](const Vec3& p) {
+    if (p.x() < xs + 0.6 * std::sin(p.y())) return 0;
+    return p.y() < ys + 0.3 * (p.x() - xs) * (p.x() - xs) / xs ? 1 : 2;
+  };
+}
+
+template <class M>
+void expect_move_keeps_threshold(M mesh, const Targets& t, double threshold) {
+  ASSERT_GE(min_quality(mesh), threshold);
+  MoveOptions o;
+  o.threshold = threshold;
+  const MoveResult r = controlled_move(mesh, t, o);
+  EXPECT_GE(min_quality(mesh), threshold);
+  EXPECT_GT(r.n_moving, 0);
+  EXPECT_NEAR(r.dist, target_distance(mesh, t), 1e-12);
+  for (NodeId n : id_range<NodeId>(mesh.n_nodes()))
+    if (r.reached[n]) {
+      EXPECT_EQ(mesh.point(n), t.position[n]);
+    }
+}
+
+TEST(ControlledMove, MovesEveryNodeAllTheWayWhenNothingBlocks) {
+  QuadMesh mesh = make_quad_grid(10, 6);
+  const Targets t = targets_of(
+      mesh, [](const Vec3& p) { return p.x() < 4.3; }, 2);
+  const MoveResult r = controlled_move(mesh, t);
+  EXPECT_EQ(r.n_moving, 7);
+  EXPECT_EQ(r.n_reached, r.n_moving);
+  EXPECT_EQ(r.dist, 0.0);
+  for (NodeId n : id_range<NodeId>(mesh.n_nodes()))
+    if (t.has[n]) {
+      EXPECT_EQ(mesh.point(n), t.position[n]);
+    }
+}
+
+TEST(ControlledMove, MovesEveryNodeAllTheWayWhenNothingBlocks3D) {
+  HexMesh mesh = make_hex_grid(6, 4, 3);
+  const Targets t = targets_of(
+      mesh, [](const Vec3& p) { return p.z() < 1.6; }, 2, 6);
+  const MoveResult r = controlled_move(mesh, t);
+  EXPECT_EQ(r.n_moving, 7 * 5);
+  EXPECT_EQ(r.n_reached, r.n_moving);
+  EXPECT_EQ(r.dist, 0.0);
+}
+
+TEST(ControlledMove, StopsANodeBeforeItsCellsGoBelowTheThreshold) {
+  QuadMesh mesh = make_quad_grid(4, 4);
+  Targets t;
+  t.has.assign(25, 0);
+  t.position.resize(25);
+  for (NodeId n : id_range<NodeId>(25)) t.position[n] = mesh.point(n);
+  const NodeId centre(12);
+  t.has[centre] = 1;
+  t.position[centre] = Vec3(2.9, 2.9, 0);  // far into a corner: the cells would fold
+  const MoveResult r = controlled_move(mesh, t);
+  EXPECT_EQ(r.n_reached, 0);
+  EXPECT_FALSE(r.reached[centre]);
+  EXPECT_GE(min_quality(mesh), 0.3);
+  EXPECT_GT(mesh.point(centre).x(), 2.0);  // it moved part of the way
+  EXPECT_NEAR(r.dist, (mesh.point(centre) - t.position[centre]).norm(), 1e-12);
+}
+
+TEST(ControlledMove, NeverGoesBelowTheThresholdOnCurvedInterfaces) {
+  for (double threshold : {0.3, 0.6, 0.9}) {
+    const QuadMesh q = make_quad_grid(14, 10);
+    expect_move_keeps_threshold(q, targets_of(q, three_regions(5.0, 5.0), 3), threshold);
+    const HexMesh extruded = make_hex_grid(14, 10, 3);
+    expect_move_keeps_threshold(extruded, targets_of(extruded, three_regions(5.0, 5.0), 3, 4),
+                                threshold);
+    const HexMesh h = make_hex_grid(7, 7, 7);
+    const auto ball = [](const Vec3& p) { return (p - Vec3(3.4, 3.6, 3.5)).norm() < 2.3; };
+    expect_move_keeps_threshold(h, targets_of(h, ball, 2, 6), threshold);
+  }
+}
+
+TEST(ControlledMove, NeverGoesBelowTheThresholdOnJitteredGrids) {
+  const QuadMesh q = make_quad_grid(12, 12, test::jittered_points(12, 12, 0, 0.2, 7));
+  expect_move_keeps_threshold(q, targets_of(q, disk(Vec3(6.2, 5.8, 0), 3.9), 2), 0.3);
+  const HexMesh h = make_hex_grid(8, 8, 4, test::jittered_points(8, 8, 4, 0.15, 3));
+  expect_move_keeps_threshold(h, targets_of(h, disk(Vec3(4.2, 3.8, 0), 2.9), 2, 4), 0.3);
+}
+
+TEST(ControlledMove, GivesTheSamePositionsWhateverTheThreadCount) {
+  // Wavy stripes: enough interface nodes that the colour classes run on several threads.
+  const HexMesh start = make_hex_grid(60, 40, 3);
+  const auto stripes = [](const Vec3& p) {
+    return static_cast<int>(std::floor((p.x() + 0.8 * std::sin(0.5 * p.y())) / 4.7)) % 3;
+  };
+  const Targets t = targets_of(start, stripes, 3, 3);
+  MoveOptions o;
+  o.threshold = 0.7;
+  o.steps = 4;  // few rounds: each parallel region is slow on a loaded machine
+  set_threads(1);
+  HexMesh a = start;
+  const MoveResult ra = controlled_move(a, t, o);
+  set_threads(2);
+  HexMesh b = start;
+  const MoveResult rb = controlled_move(b, t, o);
+  set_threads(0);
+  EXPECT_EQ(a.points(), b.points());
+  EXPECT_EQ(ra.dist, rb.dist);
+  EXPECT_LT(ra.n_reached, ra.n_moving);  // the threshold does block some nodes here
+}
+
+TEST(DirectMove, PutsEveryNodeOnItsTarget) {
+  QuadMesh mesh = make_quad_grid(8, 8);
+  const Targets t = targets_of(mesh, disk(Vec3(4.1, 3.9, 0), 2.7), 2);
+  const MoveResult r = direct_move(mesh, t);
+  EXPECT_EQ(r.n_reached, t.n_interface_nodes);
+  EXPECT_EQ(r.dist, 0.0);
+}
+
+}  // namespace
+}  // namespace hexadapt
