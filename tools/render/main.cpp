@@ -3,6 +3,7 @@
 // edges, optionally another grid (e.g. the input grid) and the `target` arrows drawn over.
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <regex>
 #include <string>
@@ -90,7 +91,7 @@ double mid_height(const io::MeshData& d) {
 
 std::string default_title(const Args& a, const io::MeshData& d, const std::string& field,
                           double z) {
-  std::string t = a.input + "  (" + field + ")";
+  std::string t = std::filesystem::path(a.input).filename().string() + "  (" + field + ")";
   if (d.dim == 3) {
     char buf[48];
     std::snprintf(buf, sizeof buf, "  z = %.4g", z);

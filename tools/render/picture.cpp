@@ -201,15 +201,18 @@ void write_png(const Picture& pic, const PictureOptions& options, const std::str
   const double plot_h = options.height - top - margin;
   const Window w = options.window ? *options.window : bounding_window(pic);
   const View v = fit(w, margin, top, std::max(plot_w, 1.0), std::max(plot_h, 1.0));
+  // The plot area seen in the plane: wider or taller than `w` when the aspects differ.
+  const Window shown{(margin - v.ox) / v.scale, (v.oy - top - plot_h) / v.scale,
+                     (margin + plot_w - v.ox) / v.scale, (v.oy - top) / v.scale};
 
   cairo_save(cr);
   cairo_rectangle(cr, margin, top, std::max(plot_w, 1.0), std::max(plot_h, 1.0));
   cairo_clip(cr);
   // Cells of a few pixels only: their edges would hide the colours.
   const bool edges = options.edges == Edges::on ||
-                     (options.edges == Edges::automatic && mean_cell_pixels(v, w, pic) >= 5);
-  draw_cells(cr, v, w, pic, edges);
-  draw_overlay(cr, v, w, pic);
+                     (options.edges == Edges::automatic && mean_cell_pixels(v, shown, pic) >= 5);
+  draw_cells(cr, v, shown, pic, edges);
+  draw_overlay(cr, v, shown, pic);
   draw_arrows(cr, v, pic);
   cairo_restore(cr);
 
