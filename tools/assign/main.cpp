@@ -16,8 +16,7 @@ struct Options {
   cli::CommonOptions common;
   std::string input;
   std::string partial;
-  std::string plane = "auto";
-  FractionOptions fractions;
+  cli::InputOptions in;
   assign::CorrectionOptions correction;
   bool paper_order = false;
 };
@@ -26,22 +25,7 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("input", o.input, "Grid with volume fractions (.vtu .vtk .vti .vtr .vts .txt)")
       ->required();
   cli::add_common_options(app, o.common);
-  app.add_option("--fractions", o.fractions.arrays,
-                 "Fraction cell arrays, in material order (default: every vf_<material>)")
-      ->delimiter(',');
-  app.add_option("--void", o.fractions.void_material,
-                 "Name a material that receives 1 - sum of the others");
-  app.add_option("--value-tolerance", o.fractions.value_tolerance,
-                 "How far outside [0,1] a fraction may be and still be clipped")
-      ->capture_default_str();
-  app.add_option("--sum-tolerance", o.fractions.sum_tolerance,
-                 "How far from 1 a cell's sum may be and still be rescaled")
-      ->capture_default_str();
-  app.add_option("--zero-below", o.fractions.zero_below, "Fractions below this are traces (0)")
-      ->capture_default_str();
-  app.add_option("--plane", o.plane, "Plane of 2D data: auto, xy, yz, xz")
-      ->check(CLI::IsMember({"auto", "xy", "yz", "xz"}))
-      ->capture_default_str();
+  cli::add_input_options(app, o.in);
   app.add_option("--keep", o.correction.keep, "Manifold configurations stored per node")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
@@ -58,13 +42,6 @@ void add_options(CLI::App& app, Options& o) {
                "neighbouring nodes manifold)");
   app.add_option("--partial", o.partial,
                  "When the correction fails, write the assignment reached so far here");
-}
-
-io::Plane plane_of(const std::string& name) {
-  if (name == "xy") return io::Plane::xy;
-  if (name == "yz") return io::Plane::yz;
-  if (name == "xz") return io::Plane::xz;
-  return io::Plane::automatic;
 }
 
 io::DataArray int_array(const std::string& name, const assign::Labels& labels) {
@@ -145,13 +122,11 @@ int run_assign(const CLI::App& app, Options& o) {
   o.correction.progress = cli::terminal_progress(o.common);
   PhaseTimes times;
   Timer t;
-  io::ReadOptions ro;
-  ro.plane = plane_of(o.plane);
-  io::MeshData data = io::read_mesh(o.input, ro);
+  io::MeshData data = io::read_mesh(o.input, o.in.read_options());
   times.emplace_back("read", t.seconds());
   t.restart();
   FractionReport fr;
-  const Fractions fractions = extract_fractions(data, o.fractions, &fr, o.input);
+  const Fractions fractions = extract_fractions(data, o.in.fractions, &fr, o.input);
   const AnyMesh mesh = io::to_mesh(data);
   times.emplace_back("fractions", t.seconds());
   const assign::AssignResult r = std::visit(

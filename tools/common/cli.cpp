@@ -25,6 +25,34 @@ void add_common_options(CLI::App& app, CommonOptions& options, bool with_output)
       ->check(CLI::NonNegativeNumber);
 }
 
+void add_input_options(CLI::App& app, InputOptions& options) {
+  FractionOptions& f = options.fractions;
+  app.add_option("--fractions", f.arrays,
+                 "Fraction cell arrays, in material order (default: every vf_<material>)")
+      ->delimiter(',');
+  app.add_option("--void", f.void_material, "Name a material that receives 1 - sum of the others");
+  app.add_option("--value-tolerance", f.value_tolerance,
+                 "How far outside [0,1] a fraction may be and still be clipped")
+      ->capture_default_str();
+  app.add_option("--sum-tolerance", f.sum_tolerance,
+                 "How far from 1 a cell's sum may be and still be rescaled")
+      ->capture_default_str();
+  app.add_option("--zero-below", f.zero_below, "Fractions below this are traces (set to 0)")
+      ->capture_default_str();
+  app.add_option("--plane", options.plane, "Plane of 2D data: auto, xy, yz, xz")
+      ->check(CLI::IsMember({"auto", "xy", "yz", "xz"}))
+      ->capture_default_str();
+}
+
+io::ReadOptions InputOptions::read_options() const {
+  io::ReadOptions r;
+  r.plane = plane == "xy"   ? io::Plane::xy
+            : plane == "yz" ? io::Plane::yz
+            : plane == "xz" ? io::Plane::xz
+                            : io::Plane::automatic;
+  return r;
+}
+
 int run(CLI::App& app, int argc, char** argv, CommonOptions& options,
         const std::function<int()>& body) {
   g_args.assign(argv, argv + argc);

@@ -12,6 +12,8 @@
 
 #include "hexadapt/core/log.h"
 #include "hexadapt/core/timer.h"
+#include "hexadapt/io/mesh_file.h"
+#include "hexadapt/mesh/fractions.h"
 
 namespace hexadapt::cli {
 
@@ -37,6 +39,16 @@ struct CommonOptions {
 
 /// Adds -o (when `with_output`), --json, -q, -v and --threads to `app`.
 void add_common_options(CLI::App& app, CommonOptions& options, bool with_output = true);
+
+/// How a stage reads its input grid and fractions, with the same flags and meaning in every
+/// tool: --fractions, --void, --value-tolerance, --sum-tolerance, --zero-below, --plane.
+struct InputOptions {
+  FractionOptions fractions;
+  std::string plane = "auto";  ///< auto, xy, yz or xz
+  io::ReadOptions read_options() const;
+};
+
+void add_input_options(CLI::App& app, InputOptions& options);
 
 /// Parses the command line, applies -q/-v/--threads, runs `body` and maps exceptions to exit
 /// codes with a one-line message on stderr. `body` returns the exit code.

@@ -20,8 +20,7 @@ using reconstruct::Method;
 
 struct Options {
   std::string input, model, method = "greedy", max_memory = "8G", model_format = "om";
-  std::vector<std::string> fractions;
-  std::string void_material;
+  cli::InputOptions in;
   bool majority = false;
   reconstruct::ReconstructOptions lib;
 };
@@ -205,9 +204,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--max-memory", o.max_memory, "Refuse to build pixels beyond this (e.g. 8G)")
       ->capture_default_str();
-  app.add_option("--fractions", o.fractions, "Fraction arrays to read (default: every vf_*)")
-      ->delimiter(',');
-  app.add_option("--void", o.void_material, "Name a material that receives 1 - sum of the others");
+  cli::add_input_options(app, o.in);
   app.add_flag("--majority", o.majority, "Use the majority material instead of a `material` array");
   app.add_option("--iterations", lib.annealing.iterations,
                  "Annealing: swap attempts (0: 200 per free pixel)")
@@ -227,11 +224,8 @@ int main(int argc, char** argv) {
     lib.mip.seed = lib.annealing.seed;
     if (!o.model.empty()) cli::refuse_overwrite(model_stem(o.model) + ".vtk", {o.input});
     cli::refuse_overwrite(common.output, {o.input});
-    io::MeshData data = io::read_mesh(o.input);
-    FractionOptions fo;
-    fo.arrays = o.fractions;
-    fo.void_material = o.void_material;
-    const Fractions f = extract_fractions(data, fo, nullptr, o.input);
+    io::MeshData data = io::read_mesh(o.input, o.in.read_options());
+    const Fractions f = extract_fractions(data, o.in.fractions, nullptr, o.input);
     const std::vector<int> assignment = read_assignment(data, f, o);
     const AnyMesh mesh = io::to_mesh(data);
     return std::visit([&](const auto& m) { return run(m, f, assignment, o, common, app); },
