@@ -1,0 +1,160 @@
+#include "coloring.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "hexadapt/core/error.h"
+#include "hexadapt/measure/quality_report.h"
+
+namespace hexadapt::render {
+namespace {
+
+Rgb hex_color(unsigned v) {
+  return {static_cast<double>((v >> 16) & 0xffu) / 255.0,
+          static_cast<double>((v >> 8) & 0xffu) / 255.0, static_cast<double>(v & 0xffu) / 255.0};
+}
+
+std::vector<std::string> split_commas(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  std::string item;
+  while (std::getline(in, item, ',')) out.push_back(item);
+  return out;
+}
+
+CellColors continuous(const std::vector<double>& values, const std::string& title) {
+  CellColors c;
+  c.has_bar = true;
+  c.bar_title = title;
+  if (!values.empty()) {
+    const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+    c.bar_min = *lo;
+    c.bar_max = *hi;
+  }
+  return c;
+}
+
+void fill_continuous(CellColors& c, const std::vector<double>& values) {
+  const double span = c.bar_max - c.bar_min;
+  for (double v : values) c.cell.push_back(colormap(span > 0 ? (v - c.bar_min) / span : 0.5));
+}
+
+// Each cell mixes the materials' colours in proportion to its fractions.
+CellColors blended(const io::MeshData& data) {
+  CellColors c;
+  const std::vector<std::string> names = material_names(data);
+  std::vector<const io::DataArray*> arrays;
+  for (const auto& n : names)
+    if (const io::DataArray* a = data.find_cell_array("vf_" + n)) {
+      c.legend.push_back({n, palette_color(static_cast<int>(arrays.size()))});
+      arrays.push_back(a);
+    }
+  if (arrays.empty()) throw OptionError("--color fractions: the file has no vf_<name> arrays");
+  const auto n = static_cast<std::size_t>(data.n_cells());
+  for (std::size_t i = 0; i < n; ++i) {
+    Rgb mix{0, 0, 0};
+    double total = 0;
+    for (std::size_t m = 0; m < arrays.size(); ++m) {
+      const double f = std::clamp(arrays[m]->values[i], 0.0, 1.0);
+      const Rgb p = c.legend[m].color;
+      for (int k = 0; k < 3; ++k) mix[static_cast<std::size_t>(k)] += f * p[static_cast<std::size_t>(k)];
+      total += f;
+    }
+    for (double& x : mix) x = total > 0 ? x / total : 1.0;
+    c.cell.push_back(mix);
+  }
+  return c;
+}
+
+CellColors categorical(const io::MeshData& data, const io::DataArray& material) {
+  CellColors c;
+  const std::vector<std::string> names = material_names(data);
+  int largest = static_cast<int>(names.size()) - 1;
+  for (double v : material.values) largest = std::max(largest, static_cast<int>(v));
+  const Rgb unassigned{0.6, 0.6, 0.6};
+  bool any_unassigned = false;
+  for (double v : material.values) {
+    const bool valid = v >= 0 && v == std::floor(v);
+    any_unassigned = any_unassigned || !valid;
+    c.cell.push_back(valid ? palette_color(static_cast<int>(v)) : unassigned);
+  }
+  for (int m = 0; m <= largest; ++m) {
+    const auto k = static_cast<std::size_t>(m);
+    c.legend.push_back({k < names.size() ? names[k] : "material " + std::to_string(m),
+                        palette_color(m)});
+  }
+  if (any_unassigned) c.legend.push_back({"none", unassigned});
+  return c;
+}
+
+std::string available_arrays(const io::MeshData& data) {
+  std::string s = "material, fractions, quality, none";
+  for (const auto& a : data.cell_data) s += ", " + a.name;
+  return s;
+}
+
+}  // namespace
+
+Rgb palette_color(int k) {
+  // Ten well-separated hues (the usual "category10" set).
+  static const unsigned colors[] = {0x1f77b4, 0xff7f0e, 0x2ca02c, 0xd62728, 0x9467bd,
+                                    0x8c564b, 0xe377c2, 0x7f7f7f, 0xbcbd22, 0x17becf};
+  return hex_color(colors[static_cast<unsigned>(k) % 10u]);
+}
+
+Rgb colormap(double t) {
+  // Piecewise-linear through five stops of a perceptually ordered blue-green-yellow map.
+  static const unsigned stops[] = {0x440154, 0x3b528b, 0x21918c, 0x5ec962, 0xfde725};
+  t = std::clamp(t, 0.0, 1.0) * 4.0;
+  const int i = std::min(3, static_cast<int>(t));
+  const double f = t - i;
+  const Rgb a = hex_color(stops[i]), b = hex_color(stops[i + 1]);
+  return {a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1]), a[2] + f * (b[2] - a[2])};
+}
+
+std::vector<std::string> material_names(const io::MeshData& data) {
+  for (const char* key : {"material_names", "hexadapt_materials", "materials"})
+    for (const auto& [k, v] : data.metadata)
+      if (k == key && !v.empty()) return split_commas(v);
+  std::vector<std::string> names;
+  for (const auto& a : data.cell_data)
+    if (a.name.rfind("vf_", 0) == 0) names.push_back(a.name.substr(3));
+  return names;
+}
+
+CellColors color_cells(const io::MeshData& data, const std::string& field) {
+  const auto n = static_cast<std::size_t>(data.n_cells());
+  if (field == "none") {
+    CellColors c;
+    c.cell.assign(n, Rgb{1, 1, 1});
+    return c;
+  }
+  if (field == "fractions") return blended(data);
+  if (field == "quality") {
+    // A fixed top of 1 (the ideal cell) keeps pictures of different meshes comparable.
+    const std::vector<double> q = cell_qualities(data).scaled_jacobian;
+    CellColors c = continuous(q, "scaled Jacobian");
+    c.bar_min = std::min(c.bar_min, 0.0);
+    c.bar_max = 1.0;
+    fill_continuous(c, q);
+    return c;
+  }
+  const io::DataArray* a = data.find_cell_array(field);
+  if (!a)
+    throw OptionError("--color: no cell array '" + field + "' (available: " +
+                      available_arrays(data) + ")");
+  if (field == "material" && a->n_components == 1) return categorical(data, *a);
+  std::vector<double> values(n, 0.0);
+  const auto nc = static_cast<std::size_t>(a->n_components);
+  for (std::size_t c = 0; c < n; ++c) {
+    double s = 0;
+    for (std::size_t k = 0; k < nc; ++k) s += a->values[c * nc + k] * a->values[c * nc + k];
+    values[c] = nc == 1 ? a->values[c] : std::sqrt(s);
+  }
+  CellColors c = continuous(values, field);
+  fill_continuous(c, values);
+  return c;
+}
+
+}  // namespace hexadapt::render
