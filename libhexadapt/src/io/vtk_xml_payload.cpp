@@ -13,16 +13,6 @@ namespace hexadapt::io::detail {
 
 namespace {
 
-// Threads only pay off for a few blocks or more (a parallel region costs more than one block).
-template <class F>
-void for_blocks(std::int64_t n, F&& f) {
-  if (n < 8) {
-    for (std::int64_t b = 0; b < n; ++b) f(b);
-  } else {
-    parallel_for(n, f);
-  }
-}
-
 // zlib cannot expand data more than about 1032 times: a larger claimed size is a lie.
 constexpr std::uint64_t max_zlib_ratio = 1032;
 

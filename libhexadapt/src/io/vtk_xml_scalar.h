@@ -7,6 +7,7 @@
 #include <optional>
 #include <string_view>
 
+#include "hexadapt/core/parallel.h"
 #include "hexadapt/io/mesh_data.h"
 
 namespace hexadapt::io::detail {
@@ -27,6 +28,17 @@ void unpack(const unsigned char* src, ScalarType t, bool swap, std::size_t n, do
 /// not fit (an UInt64 above INT64_MAX or a non-integral float), or n when all fit.
 std::size_t unpack(const unsigned char* src, ScalarType t, bool swap, std::size_t n,
                    std::int64_t* out);
+
+/// Runs f(b) for the n zlib blocks of an array, on threads only when there are a few blocks
+/// or more (a parallel region costs more than one block).
+template <class F>
+void for_blocks(std::int64_t n, F&& f) {
+  if (n < 8) {
+    for (std::int64_t b = 0; b < n; ++b) f(b);
+  } else {
+    parallel_for(n, f);
+  }
+}
 
 /// Packs n doubles as type t in native byte order; integer types are rounded to nearest and
 /// clamped to the type's range (NaN becomes 0).
