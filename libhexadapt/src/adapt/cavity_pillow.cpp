@@ -1,6 +1,7 @@
 #include "hexadapt/adapt/cavity_pillow.h"
 
 #include <algorithm>
+#include <optional>
 #include <map>
 #include <string>
 
@@ -116,12 +117,19 @@ CavityResult<M> cavity_pillow(const M& mesh, const IdVector<CellId, int>& materi
         a.range = std::max(a.range, pending[i].range);
       }
       for (char x : set) a.cells += x != 0;
-      auto [p, worst] = try_cavity(r.mesh, set, options);
-      a.min_quality = worst;
-      a.published = worst >= options.threshold && p.n_new_cells > 0;
+      std::optional<std::pair<PillowResult<M>, double>> tried;
+      try {
+        tried.emplace(try_cavity(r.mesh, set, options));
+      } catch (const MeshError&) {
+        // The set touches itself along an edge, so its layer would give a face three cells:
+        // it cannot be published, and every seed in it shrinks as for a poor cavity.
+      }
+      a.min_quality = tried ? tried->second : -1.0;
+      a.published = tried && tried->second >= options.threshold && tried->first.n_new_cells > 0;
       r.attempts.push_back(a);
       std::vector<char> drop(pending.size(), 0);
       if (a.published) {
+        PillowResult<M>& p = tried->first;
         for (NodeId v : id_range<NodeId>(p.mesh.n_nodes()))
           if (v.value() >= r.mesh.n_nodes())
             r.node_origin.push_back(r.node_origin[p.node_origin[v]]);
@@ -133,7 +141,9 @@ CavityResult<M> cavity_pillow(const M& mesh, const IdVector<CellId, int>& materi
       } else {
         // The seeds whose cavity holds a cell below the threshold shrink it.
         std::vector<char> bad(static_cast<std::size_t>(r.mesh.n_cells()), 0);
-        for (CellId c : id_range<CellId>(p.mesh.n_cells())) {
+        if (!tried) bad.assign(set.begin(), set.end());
+        for (CellId c : id_range<CellId>(tried ? tried->first.mesh.n_cells() : 0)) {
+          const PillowResult<M>& p = tried->first;
           const CellId origin = p.cell_origin[c];
           if ((c.value() >= r.mesh.n_cells() || set[c]) &&
               p.mesh.cell_quality(c) < options.threshold)
