@@ -52,7 +52,7 @@ std::vector<double> distance_to_fixed(const PixelMesh& px, int material) {
 class Expansion {
  public:
   Expansion(PixelMesh& px, const Fractions& f, const GraphCutOptions& o)
-      : px_(px), f_(f), o_(o), nm_(f.n_materials()) {
+      : px_(px), o_(o), nm_(f.n_materials()) {
     for (std::int64_t p = 0; p < px.n_pixels(); ++p)
       if (px.pixel_free(p)) free_.push_back(p);
     data_.assign(free_.size() * static_cast<std::size_t>(nm_), inf);
@@ -143,7 +143,6 @@ class Expansion {
   }
 
   PixelMesh& px_;
-  const Fractions& f_;
   const GraphCutOptions& o_;
   int nm_;
   std::vector<std::int64_t> free_;
