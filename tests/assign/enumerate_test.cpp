@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <random>
 
+#include "assign_test_cases.h"
 #include "brute_force_manifold.h"
 #include "hexadapt/assign/cost.h"
 #include "hexadapt/core/error.h"
@@ -13,24 +14,7 @@
 namespace hexadapt::assign {
 namespace {
 
-/// Random fractions: each cell mixes a random subset of at most `mix` materials.
-Fractions random_fractions(index_t n_cells, int n_materials, int mix, unsigned seed) {
-  std::vector<std::string> names;
-  for (int m = 0; m < n_materials; ++m) names.push_back("m" + std::to_string(m));
-  Fractions f(n_cells, names);
-  std::mt19937 rng(seed);
-  std::uniform_int_distribution<int> pick(0, n_materials - 1), count(1, mix);
-  std::uniform_real_distribution<double> w(0.05, 1.0);
-  for (CellId c : id_range<CellId>(n_cells)) {
-    const int k = count(rng);
-    double sum = 0;
-    std::vector<std::pair<int, double>> parts;
-    for (int i = 0; i < k; ++i) parts.emplace_back(pick(rng), w(rng));
-    for (auto& p : parts) sum += p.second;
-    for (auto& p : parts) f(c, p.first) += p.second / sum;
-  }
-  return f;
-}
+using test::random_fractions;
 
 /// Every assignment of the ball's cells over the candidates, in the test's own loop, sorted
 /// by cost; the `keep` cheapest that the independent checker finds manifold, their costs.
