@@ -64,14 +64,20 @@ TEST_P(GeneratedCases, KeepTheThresholdAndGetCloser) {
 
 INSTANTIATE_TEST_SUITE_P(
     Small, GeneratedCases,
-    ::testing::Values(test::GeneratedCase{"triple-point", {28, 12}, 0.5},
-                      test::GeneratedCase{"triple-point", {28, 12}, 1.5},
-                      test::GeneratedCase{"triple-point", {42, 18}, 1.5},
-                      test::GeneratedCase{"stir", {16, 16}, 0.5}, test::GeneratedCase{"stir", {24, 24}, 1.0},
-                      test::GeneratedCase{"triple-point", {21, 9}, 1.0, 3},
-                      test::GeneratedCase{"vortex", {24, 24}}, test::GeneratedCase{"venn", {20, 20}},
-                      test::GeneratedCase{"slotted-disk", {24, 24}}, test::GeneratedCase{"asteroid", {6, 6, 6}},
-                      test::GeneratedCase{"venn", {20, 20}, -1, 0, 0.2}),
+    ::testing::Values(
+        test::GeneratedCase{"triple-point", {28, 12}, 0.5},
+        test::GeneratedCase{"triple-point", {28, 12}, 1.5},
+        test::GeneratedCase{"triple-point", {42, 18}, 1.5},
+        test::GeneratedCase{"triple-point", {42, 18}, 2.0},
+        test::GeneratedCase{"stir", {30, 15}, 0.5}, test::GeneratedCase{"stir", {30, 15}, 2.0},
+        test::GeneratedCase{"stir", {40, 20}, 1.0}, test::GeneratedCase{"stir", {24, 24}, 1.0},
+        test::GeneratedCase{"triple-point", {21, 9}, 1.0, 3},
+        test::GeneratedCase{"stir", {24, 12}, 1.0, 3}, test::GeneratedCase{"vortex", {24, 24}},
+        test::GeneratedCase{"venn", {20, 20}}, test::GeneratedCase{"slotted-disk", {24, 24}},
+        test::GeneratedCase{"balldrop", {20, 20}}, test::GeneratedCase{"asteroid", {6, 6, 6}},
+        test::GeneratedCase{"balldrop", {6, 6, 6}}, test::GeneratedCase{"venn", {20, 20}, -1, 0, 0.2},
+        test::GeneratedCase{"triple-point", {28, 12}, 1.0, 0, 0.2},
+        test::GeneratedCase{"stir", {20, 10}, 1.0, 3, 0.2}),
     [](const ::testing::TestParamInfo<test::GeneratedCase>& i) { return test::label(i.param); });
 
 // Where the base method of Fig. 10-a inverts cells (adapt_test.cpp: the extruded triple
