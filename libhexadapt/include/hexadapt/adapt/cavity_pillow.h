@@ -11,7 +11,10 @@
 // cavity holds a bad cell retries with its range decreased by one, and a seed at range 1
 // that still fails is given up (the mesh stays as it was). Greedy: published cavities change
 // the mesh the next ones are built in. The cells outside a cavity never change, so no cell
-// of the mesh goes below the threshold. Input nodes keep their ids: a seed on the border of
+// of the mesh goes below the threshold. Each attempt works in a patch (the cavity and the
+// cells sharing a node with it) and only a published cavity is spliced into the mesh, so an
+// attempt costs time in the size of its cavity; the result is the same as pillowing the
+// whole mesh. Input nodes keep their ids: a seed on the border of
 // its cavity stays with the outside cells and keeps its target; its copy inside the cavity
 // is a new node without a target.
 #pragma once
@@ -29,6 +32,9 @@ struct CavityOptions {
   PillowOptions pillow;    ///< where the copies start
   SmoothOptions smooth;    ///< smoothing of the cavity's nodes
   BoundaryOptions boundary;
+  /// Pillow and smooth each cavity in a copy of the whole mesh instead of in the cavity and
+  /// the ring of cells around it: slow, the reference the local patches must reproduce.
+  bool whole_mesh = false;
 };
 
 /// One pillowing attempt.
