@@ -212,13 +212,22 @@ CavityResult<M> cavity_pillow(const M& mesh, const IdVector<CellId, int>& materi
       std::sort(set.begin(), set.end());
       set.erase(std::unique(set.begin(), set.end()), set.end());
       a.cells = static_cast<index_t>(set.size());
-      const CavityPatch<M> patch = patch_of(work, set, options.whole_mesh);
+      CavityPatch<M> patch = patch_of(work, set, options.whole_mesh);
       std::optional<std::pair<PillowResult<M>, double>> tried;
-      try {
-        tried.emplace(try_cavity(patch, options));
-      } catch (const MeshError&) {
-        // The set touches itself along an edge in a way its layer cannot follow (a face of
-        // three cells): it cannot be published, and every seed in it shrinks.
+      for (bool whole = options.whole_mesh;; whole = true) {
+        try {
+          tried.emplace(try_cavity(patch, options));
+        } catch (const MeshError&) {
+          // The set touches itself along an edge in a way its layer cannot follow (a face of
+          // three cells): it cannot be published, and every seed in it shrinks. Confirmed in
+          // the whole mesh, so that a kernel's refusal of the patch's own outline (a 2D ring
+          // pinched at a node) never decides.
+          if (!whole && patch.cells.size() < static_cast<std::size_t>(work.n_cells())) {
+            patch = work.patch(set, true);
+            continue;
+          }
+        }
+        break;
       }
       a.min_quality = tried ? tried->second : -1.0;
       a.published = tried && tried->second >= options.threshold && tried->first.n_new_cells > 0;
