@@ -129,8 +129,7 @@ std::vector<NodeId> interface_nodes(const M& mesh, const IdVector<CellId, int>& 
 // gives: same attempts, same published mesh to the last bit.
 template <class M>
 void expect_same_as_whole_mesh(const M& mesh, const IdVector<CellId, int>& material,
-                               int n_materials, const std::vector<NodeId>& seeds,
-                               CavityOptions o) {
+                               int n_materials, const std::vector<NodeId>& seeds, CavityOptions o) {
   const auto local = cavity_pillow(mesh, material, n_materials, seeds, o);
   o.whole_mesh = true;
   const auto whole = cavity_pillow(mesh, material, n_materials, seeds, o);

@@ -1,8 +1,9 @@
+#include "hexadapt/adapt/pillow.h"
+
 #include <gtest/gtest.h>
 
 #include "adapt/adapt_cases.h"
 #include "hexadapt/adapt/global_pillow.h"
-#include "hexadapt/adapt/pillow.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/mesh/mesh_check.h"
 
@@ -151,13 +152,14 @@ IdVector<CellId, char> edge_touching_set(const HexMesh& grid, bool above, bool b
 
 TEST(PillowCells, SetTouchingItselfAlongAnEdgeOnly3D) {
   const HexMesh grid = make_hex_grid(5, 5, 5);
-  const auto r = pillow_cells(grid, edge_touching_set(grid, false, false), boundary_constraints(grid));
+  const auto r =
+      pillow_cells(grid, edge_touching_set(grid, false, false), boundary_constraints(grid));
   EXPECT_EQ(r.n_new_cells, 12);  // six faces of each cell
   // Each end of the shared edge gets one copy per cell: the cells stay apart.
   EXPECT_EQ(r.n_new_nodes, 16);
   const MeshCheckResult check = check_mesh(r.mesh);
-  EXPECT_TRUE(check.ok()) << check.nonmanifold_nodes << " non-manifold, "
-                          << check.inverted_cells << " inverted";
+  EXPECT_TRUE(check.ok()) << check.nonmanifold_nodes << " non-manifold, " << check.inverted_cells
+                          << " inverted";
   test::check_conformal_ball(r.mesh);
 }
 
@@ -165,7 +167,8 @@ TEST(PillowCells, SetTouchingItselfAlongAnEdgeOnly3D) {
 // node; the layer is conformal and manifold (its start may be tangled: smoothing's job).
 TEST(PillowCells, SetTouchingAlongAnEdgeJoinedAtOneEnd3D) {
   const HexMesh grid = make_hex_grid(5, 5, 5);
-  const auto r = pillow_cells(grid, edge_touching_set(grid, true, false), boundary_constraints(grid));
+  const auto r =
+      pillow_cells(grid, edge_touching_set(grid, true, false), boundary_constraints(grid));
   const MeshCheckResult check = check_mesh(r.mesh);
   EXPECT_EQ(check.nonmanifold_nodes, 0);
   EXPECT_EQ(check.hanging_nodes, 0);

@@ -77,8 +77,7 @@ CavityPatch<M> EditableMesh<M>::patch(const std::vector<CellId>& set, bool whole
 }
 
 template <class M>
-std::vector<NodeId> EditableMesh<M>::splice(const CavityPatch<M>& patch,
-                                            const PillowResult<M>& p) {
+std::vector<NodeId> EditableMesh<M>::splice(const CavityPatch<M>& patch, const PillowResult<M>& p) {
   const std::size_t n_local = patch.nodes.size();
   std::vector<NodeId> global(static_cast<std::size_t>(p.mesh.n_nodes()));
   for (NodeId v : id_range<NodeId>(p.mesh.n_nodes())) {

@@ -24,8 +24,8 @@ namespace hexadapt::detail {
 template <class M>
 struct CavityPatch {
   M mesh;
-  std::vector<CellId> cells;       ///< global id of each local cell, increasing
-  std::vector<NodeId> nodes;       ///< global id of each local node, increasing
+  std::vector<CellId> cells;      ///< global id of each local cell, increasing
+  std::vector<NodeId> nodes;      ///< global id of each local node, increasing
   IdVector<CellId, char> in_set;  ///< local cells of the cavity
 };
 

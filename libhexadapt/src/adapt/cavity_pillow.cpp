@@ -126,8 +126,7 @@ class SeedSet {
 // The patch of the set; the whole mesh when asked, or when the ring around the set cannot
 // be a mesh of its own (a 2D ring pinched at a node).
 template <class M>
-CavityPatch<M> patch_of(const EditableMesh<M>& mesh, const std::vector<CellId>& set,
-                        bool whole) {
+CavityPatch<M> patch_of(const EditableMesh<M>& mesh, const std::vector<CellId>& set, bool whole) {
   if (!whole) {
     try {
       return mesh.patch(set, false);
@@ -140,8 +139,7 @@ CavityPatch<M> patch_of(const EditableMesh<M>& mesh, const std::vector<CellId>& 
 // Pillows the patch's set and smooths the nodes only the cavity and its layer use. Returns
 // the pillowed patch and the smallest quality among those cells.
 template <class M>
-std::pair<PillowResult<M>, double> try_cavity(const CavityPatch<M>& patch,
-                                              const CavityOptions& o) {
+std::pair<PillowResult<M>, double> try_cavity(const CavityPatch<M>& patch, const CavityOptions& o) {
   const M& mesh = patch.mesh;
   const IdVector<CellId, char>& set = patch.in_set;
   PillowResult<M> p = pillow_cells(mesh, set, boundary_constraints(mesh, o.boundary), o.pillow);

@@ -11,12 +11,14 @@
 // cavity holds a bad cell retries with its range decreased by one, and a seed at range 1
 // that still fails is given up (the mesh stays as it was). Greedy: published cavities change
 // the mesh the next ones are built in. The cells outside a cavity never change, so no cell
-// of the mesh goes below the threshold. Each attempt works in a patch (the cavity and the
-// cells sharing a node with it) and only a published cavity is spliced into the mesh, so an
-// attempt costs time in the size of its cavity; the result is the same as pillowing the
-// whole mesh. Input nodes keep their ids: a seed on the border of
+// of the mesh goes below the threshold. Input nodes keep their ids: a seed on the border of
 // its cavity stays with the outside cells and keeps its target; its copy inside the cavity
-// is a new node without a target.
+// is a new node without a target. A cavity whose layer cannot be a mesh (cells touching
+// along an edge only, joined around both its ends: see pillow.h) is rejected like a poor one.
+//
+// Each attempt works in a patch, the cavity and the cells sharing a node with it, and only a
+// published cavity is spliced into the mesh: an attempt costs time in the size of its cavity,
+// not of the mesh, and the result is the one pillowing the whole mesh gives (whole_mesh).
 #pragma once
 
 #include <vector>
