@@ -2,36 +2,40 @@
 
 #include <algorithm>
 #include <optional>
-#include <map>
 #include <string>
 
+#include "cavity_patch.h"
 #include "hexadapt/core/error.h"
 
 namespace hexadapt {
 
 namespace {
 
-// Cells of material m within vertex distance `range` of seed.
+using detail::CavityPatch;
+using detail::EditableMesh;
+
+// Cells of material m within vertex distance `range` of seed. `mark`: one zero per cell,
+// left zero.
 template <class M>
-std::vector<CellId> cavity_cells(const M& mesh, const IdVector<CellId, int>& material, int m,
-                                 NodeId seed, int range) {
-  std::vector<char> in(static_cast<std::size_t>(mesh.n_cells()), 0);
+std::vector<CellId> cavity_cells(const EditableMesh<M>& mesh, const IdVector<CellId, int>& material,
+                                 int m, NodeId seed, int range, std::vector<char>& mark) {
   std::vector<CellId> out, front;
   for (CellId c : mesh.node_cells(seed))
     if (material[c] == m) front.push_back(c);
   for (int level = 1; level <= range && !front.empty(); ++level) {
     std::vector<CellId> next;
     for (CellId c : front) {
-      if (in[c.idx()]) continue;
-      in[c.idx()] = 1;
+      if (mark[c.idx()]) continue;
+      mark[c.idx()] = 1;
       out.push_back(c);
       if (level == range) continue;
       for (NodeId n : mesh.cell_nodes(c))
         for (CellId o : mesh.node_cells(n))
-          if (material[o] == m && !in[o.idx()]) next.push_back(o);
+          if (material[o] == m && !mark[o.idx()]) next.push_back(o);
     }
     front = std::move(next);
   }
+  for (CellId c : out) mark[c.idx()] = 0;
   std::sort(out.begin(), out.end());
   return out;
 }
@@ -39,37 +43,105 @@ std::vector<CellId> cavity_cells(const M& mesh, const IdVector<CellId, int>& mat
 struct Seed {
   NodeId node;
   int range;
-  std::vector<CellId> cells;
+  std::vector<CellId> cells;  ///< the cavity, valid unless dirty
+  bool dirty = true;
+  bool alive = true;
 };
 
-// The seeds whose cavities share cells with the first pending seed's, transitively.
-std::vector<std::size_t> merged_group(const std::vector<Seed>& pending, index_t n_cells) {
-  std::vector<char> in_group(pending.size(), 0), cell_in(static_cast<std::size_t>(n_cells), 0);
-  in_group[0] = 1;
-  for (CellId c : pending[0].cells) cell_in[c.idx()] = 1;
-  for (bool grew = true; grew;) {
-    grew = false;
-    for (std::size_t i = 1; i < pending.size(); ++i) {
-      if (in_group[i]) continue;
-      const bool overlaps = std::any_of(pending[i].cells.begin(), pending[i].cells.end(),
-                                        [&](CellId c) { return cell_in[c.idx()] != 0; });
-      if (!overlaps) continue;
-      in_group[i] = 1;
-      grew = true;
-      for (CellId c : pending[i].cells) cell_in[c.idx()] = 1;
+// The seeds of one material, their cavities and which seeds hold each cell. A cavity is
+// recomputed only when its seed's range changed or a publication touched a cell of it or
+// next to it (the only cells whose nodes or node -> cells lists a publication changes).
+class SeedSet {
+ public:
+  explicit SeedSet(std::vector<Seed> seeds) : seeds_(std::move(seeds)) {}
+  Seed& operator[](std::size_t i) { return seeds_[i]; }
+  /// The first live seed, or none.
+  std::optional<std::size_t> first() const {
+    for (std::size_t i = first_; i < seeds_.size(); ++i)
+      if (seeds_[i].alive) return i;
+    return std::nullopt;
+  }
+  template <class M>
+  void refresh(const EditableMesh<M>& mesh, const IdVector<CellId, int>& material, int m) {
+    holders_.resize(static_cast<std::size_t>(mesh.n_cells()));
+    mark_.resize(static_cast<std::size_t>(mesh.n_cells()), 0);
+    for (std::size_t i = 0; i < seeds_.size(); ++i) {
+      Seed& s = seeds_[i];
+      if (!s.alive || !s.dirty) continue;
+      forget(i);
+      s.cells = cavity_cells(mesh, material, m, s.node, s.range, mark_);
+      for (CellId c : s.cells) holders_[c.idx()].push_back(i);
+      s.dirty = false;
     }
   }
-  std::vector<std::size_t> group;
-  for (std::size_t i = 0; i < pending.size(); ++i)
-    if (in_group[i]) group.push_back(i);
-  return group;
+  /// The live seeds whose cavities share cells with the first one's, transitively.
+  std::vector<std::size_t> group(std::size_t first) const {
+    std::vector<char> in(seeds_.size(), 0);
+    std::vector<std::size_t> out{first}, stack{first};
+    in[first] = 1;
+    while (!stack.empty()) {
+      const std::size_t i = stack.back();
+      stack.pop_back();
+      for (CellId c : seeds_[i].cells)
+        for (std::size_t j : holders_[c.idx()])
+          if (!in[j]) {
+            in[j] = 1;
+            out.push_back(j);
+            stack.push_back(j);
+          }
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+  void drop(std::size_t i) {
+    forget(i);
+    seeds_[i].alive = false;
+    while (first_ < seeds_.size() && !seeds_[first_].alive) ++first_;
+  }
+  /// Marks dirty every seed whose cavity holds one of `cells` (all when `all`).
+  void touch(const std::vector<CellId>& cells, bool all) {
+    if (all) {
+      for (Seed& s : seeds_) s.dirty = true;
+      return;
+    }
+    for (CellId c : cells)
+      if (c.idx() < holders_.size())
+        for (std::size_t j : holders_[c.idx()]) seeds_[j].dirty = true;
+  }
+
+ private:
+  void forget(std::size_t i) {
+    for (CellId c : seeds_[i].cells) {
+      auto& h = holders_[c.idx()];
+      h.erase(std::remove(h.begin(), h.end(), i), h.end());
+    }
+    seeds_[i].cells.clear();
+  }
+  std::vector<Seed> seeds_;
+  std::vector<std::vector<std::size_t>> holders_;
+  std::vector<char> mark_;
+  std::size_t first_ = 0;
+};
+
+// The patch of the set; the whole mesh when asked, or when the ring around the set cannot
+// be a mesh of its own (a 2D ring pinched at a node).
+template <class M>
+CavityPatch<M> patch_of(const EditableMesh<M>& mesh, const std::vector<CellId>& set, bool whole) {
+  if (!whole) {
+    try {
+      return mesh.patch(set, false);
+    } catch (const MeshError&) {
+    }
+  }
+  return mesh.patch(set, true);
 }
 
-// Pillows the set and smooths the nodes only the cavity and its layer use. Returns the
-// pillowed mesh and the smallest quality among those cells.
+// Pillows the patch's set and smooths the nodes only the cavity and its layer use. Returns
+// the pillowed patch and the smallest quality among those cells.
 template <class M>
-std::pair<PillowResult<M>, double> try_cavity(const M& mesh, const IdVector<CellId, char>& set,
-                                              const CavityOptions& o) {
+std::pair<PillowResult<M>, double> try_cavity(const CavityPatch<M>& patch, const CavityOptions& o) {
+  const M& mesh = patch.mesh;
+  const IdVector<CellId, char>& set = patch.in_set;
   PillowResult<M> p = pillow_cells(mesh, set, boundary_constraints(mesh, o.boundary), o.pillow);
   const M& pm = p.mesh;
   auto in_cavity = [&](CellId c) { return c.value() >= mesh.n_cells() || set[c] != 0; };
@@ -85,6 +157,24 @@ std::pair<PillowResult<M>, double> try_cavity(const M& mesh, const IdVector<Cell
   return {std::move(p), worst};
 }
 
+// The global ids of the set's cells that end below the threshold (all of them when the
+// set could not be pillowed), increasing.
+template <class M>
+std::vector<CellId> bad_cells(const CavityPatch<M>& patch, const std::vector<CellId>& set,
+                              const std::optional<std::pair<PillowResult<M>, double>>& tried,
+                              double threshold) {
+  if (!tried) return set;
+  const PillowResult<M>& p = tried->first;
+  const auto n = static_cast<index_t>(patch.cells.size());
+  std::vector<CellId> bad;
+  for (CellId c : id_range<CellId>(p.mesh.n_cells()))
+    if ((c.value() >= n || patch.in_set[c]) && p.mesh.cell_quality(c) < threshold)
+      bad.push_back(patch.cells[p.cell_origin[c].idx()]);
+  std::sort(bad.begin(), bad.end());
+  bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
+  return bad;
+}
+
 }  // namespace
 
 template <class M>
@@ -93,80 +183,84 @@ CavityResult<M> cavity_pillow(const M& mesh, const IdVector<CellId, int>& materi
   if (options.range < 1)
     throw OptionError("cavity range must be at least 1, got " + std::to_string(options.range));
   CavityResult<M> r;
-  r.mesh = mesh;
   r.material = material;
   for (NodeId v : id_range<NodeId>(mesh.n_nodes())) r.node_origin.push_back(v);
+  EditableMesh<M> work(mesh);
   std::vector<NodeId> failed;
   for (int m = 0; m < n_materials; ++m) {
-    std::vector<Seed> pending;
+    std::vector<Seed> list;
     for (NodeId s : seeds)
-      for (CellId c : r.mesh.node_cells(s))
+      for (CellId c : work.node_cells(s))
         if (r.material[c] == m) {
-          pending.push_back({s, options.range, {}});
+          list.push_back({s, options.range, {}});
           break;
         }
-    while (!pending.empty()) {
-      for (Seed& s : pending) s.cells = cavity_cells(r.mesh, r.material, m, s.node, s.range);
-      const std::vector<std::size_t> group = merged_group(pending, r.mesh.n_cells());
-      IdVector<CellId, char> set(static_cast<std::size_t>(r.mesh.n_cells()), 0);
+    SeedSet pending(std::move(list));
+    for (auto first = pending.first(); first; first = pending.first()) {
+      pending.refresh(work, r.material, m);
+      const std::vector<std::size_t> group = pending.group(*first);
+      std::vector<CellId> set;
       CavityAttempt a;
       a.material = m;
       for (std::size_t i : group) {
-        for (CellId c : pending[i].cells) set[c] = 1;
+        set.insert(set.end(), pending[i].cells.begin(), pending[i].cells.end());
         a.seeds.push_back(pending[i].node);
         a.range = std::max(a.range, pending[i].range);
       }
-      for (char x : set) a.cells += x != 0;
+      std::sort(set.begin(), set.end());
+      set.erase(std::unique(set.begin(), set.end()), set.end());
+      a.cells = static_cast<index_t>(set.size());
+      CavityPatch<M> patch = patch_of(work, set, options.whole_mesh);
       std::optional<std::pair<PillowResult<M>, double>> tried;
-      try {
-        tried.emplace(try_cavity(r.mesh, set, options));
-      } catch (const MeshError&) {
-        // The set touches itself along an edge, so its layer would give a face three cells:
-        // it cannot be published, and every seed in it shrinks as for a poor cavity.
+      for (bool whole = options.whole_mesh;; whole = true) {
+        try {
+          tried.emplace(try_cavity(patch, options));
+        } catch (const MeshError&) {
+          // The set touches itself along an edge in a way its layer cannot follow (a face of
+          // three cells): it cannot be published, and every seed in it shrinks. Confirmed in
+          // the whole mesh, so that a kernel's refusal of the patch's own outline (a 2D ring
+          // pinched at a node) never decides.
+          if (!whole && patch.cells.size() < static_cast<std::size_t>(work.n_cells())) {
+            patch = work.patch(set, true);
+            continue;
+          }
+        }
+        break;
       }
       a.min_quality = tried ? tried->second : -1.0;
       a.published = tried && tried->second >= options.threshold && tried->first.n_new_cells > 0;
       r.attempts.push_back(a);
-      std::vector<char> drop(pending.size(), 0);
       if (a.published) {
-        PillowResult<M>& p = tried->first;
+        const PillowResult<M>& p = tried->first;
+        const std::vector<NodeId> global = work.splice(patch, p);
         for (NodeId v : id_range<NodeId>(p.mesh.n_nodes()))
-          if (v.value() >= r.mesh.n_nodes())
-            r.node_origin.push_back(r.node_origin[p.node_origin[v]]);
+          if (v.idx() >= patch.nodes.size())
+            r.node_origin.push_back(r.node_origin[global[p.node_origin[v].idx()]]);
         for (index_t k = 0; k < p.n_new_cells; ++k) r.material.push_back(m);
         r.n_cells_added += p.n_new_cells;
         ++r.n_published;
-        r.mesh = std::move(p.mesh);
-        for (std::size_t i : group) drop[i] = 1;
-      } else {
-        // The seeds whose cavity holds a cell below the threshold shrink it.
-        std::vector<char> bad(static_cast<std::size_t>(r.mesh.n_cells()), 0);
-        if (!tried) bad.assign(set.begin(), set.end());
-        for (CellId c : id_range<CellId>(tried ? tried->first.mesh.n_cells() : 0)) {
-          const PillowResult<M>& p = tried->first;
-          const CellId origin = p.cell_origin[c];
-          if ((c.value() >= r.mesh.n_cells() || set[c]) &&
-              p.mesh.cell_quality(c) < options.threshold)
-            bad[origin.idx()] = 1;
-        }
-        bool any = false;
-        for (std::size_t i : group) {
-          Seed& s = pending[i];
-          const bool blamed = std::any_of(s.cells.begin(), s.cells.end(),
-                                          [&](CellId c) { return bad[c.idx()] != 0; });
-          if (!blamed) continue;
-          any = true;
-          if (--s.range < 1) drop[i] = 1, failed.push_back(s.node);
-        }
-        if (!any)  // nothing to blame (an empty layer): give the group up
-          for (std::size_t i : group) drop[i] = 1, failed.push_back(pending[i].node);
+        for (std::size_t i : group) pending.drop(i);
+        pending.touch(patch.cells, options.whole_mesh);
+        continue;
       }
-      std::vector<Seed> keep;
-      for (std::size_t i = 0; i < pending.size(); ++i)
-        if (!drop[i]) keep.push_back(std::move(pending[i]));
-      pending = std::move(keep);
+      // The seeds whose cavity holds a cell below the threshold shrink it.
+      const std::vector<CellId> bad = bad_cells(patch, set, tried, options.threshold);
+      bool any = false;
+      for (std::size_t i : group) {
+        Seed& s = pending[i];
+        const bool blamed = std::any_of(s.cells.begin(), s.cells.end(), [&](CellId c) {
+          return std::binary_search(bad.begin(), bad.end(), c);
+        });
+        if (!blamed) continue;
+        any = true;
+        s.dirty = true;
+        if (--s.range < 1) pending.drop(i), failed.push_back(s.node);
+      }
+      if (!any)  // nothing to blame (an empty layer): give the group up
+        for (std::size_t i : group) pending.drop(i), failed.push_back(pending[i].node);
     }
   }
+  r.mesh = r.n_published > 0 ? work.build() : mesh;
   std::sort(failed.begin(), failed.end());
   failed.erase(std::unique(failed.begin(), failed.end()), failed.end());
   r.failed_seeds = std::move(failed);

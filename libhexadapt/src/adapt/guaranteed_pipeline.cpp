@@ -1,7 +1,8 @@
 // The guaranteed-quality pipeline (paper Fig. 10-b, sec. 5.1 and 5.3): every step only makes
 // moves that keep the cells around a node at or above the threshold S_q, so the output holds
-// the threshold the user gave whenever the input does. Cavity pillowing (sec. 5.2) is not
-// part of it yet: the nodes left short of their targets are reported as blocked.
+// the threshold the user gave whenever the input does. Between the first controlled move and
+// the move-smooth loop, cavities are pillowed around the nodes the move left short of their
+// targets (sec. 5.2, cavity_pillow.h); those still short at the end are reported as blocked.
 #include "guaranteed_pipeline.h"
 
 #include <algorithm>

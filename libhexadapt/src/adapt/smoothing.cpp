@@ -11,21 +11,25 @@ namespace hexadapt {
 namespace {
 
 // One node: the largest halving of the Laplacian displacement that does not lower the local
-// minimum quality. Returns the gain in local minimum (0 when the node did not move).
+// minimum quality. Returns the gain in local minimum (0 when the node did not move). `q`: the
+// local minimum, on entry and on return (each evaluation costs the cells around the node).
 template <class M>
 double laplacian_step(M& mesh, NodeId n, const std::vector<NodeId>& around,
-                      const NodeConstraint& constraint, int halvings) {
+                      const NodeConstraint& constraint, int halvings, double& q) {
   Vec3 mean = Vec3::Zero();
   for (NodeId o : around) mean += mesh.point(o);
   mean /= static_cast<double>(around.size());
   const Vec3 p = mesh.point(n);
   Vec3 d = constraint.project(mean - p);
   if (!(d.norm() > 0)) return 0;
-  const double before = min_quality_around(mesh, n);
+  const double before = q;
   for (int h = 0; h <= halvings; ++h, d *= 0.5) {
     mesh.set_point(n, p + d);
     const double after = min_quality_around(mesh, n);
-    if (after >= before) return after - before;
+    if (after >= before) {
+      q = after;
+      return after - before;
+    }
   }
   mesh.set_point(n, p);
   return -1;
@@ -35,11 +39,11 @@ double laplacian_step(M& mesh, NodeId n, const std::vector<NodeId>& around,
 // constraint, keeping the best strict improvement, halving the step when none improves.
 template <class M>
 double pattern_search(M& mesh, NodeId n, const std::vector<NodeId>& around,
-                      const NodeConstraint& constraint, int levels) {
+                      const NodeConstraint& constraint, int levels, double& q) {
   double len = 0;
   for (NodeId o : around) len += (mesh.point(o) - mesh.point(n)).norm();
   double h = 0.25 * len / static_cast<double>(around.size());
-  const double start = min_quality_around(mesh, n);
+  const double start = q;
   double best = start;
   for (int level = 0; level < levels; ++level, h *= 0.5) {
     bool improved = true;
@@ -52,9 +56,9 @@ double pattern_search(M& mesh, NodeId n, const std::vector<NodeId>& around,
           const Vec3 d = constraint.project(sign * h * Vec3::Unit(axis));
           if (!(d.norm() > 1e-3 * h)) continue;
           mesh.set_point(n, p + d);
-          const double q = min_quality_around(mesh, n);
-          if (q > best + 1e-9) {
-            best = q;
+          const double trial = min_quality_around(mesh, n);
+          if (trial > best + 1e-9) {
+            best = trial;
             best_p = p + d;
             improved = true;
           }
@@ -62,6 +66,7 @@ double pattern_search(M& mesh, NodeId n, const std::vector<NodeId>& around,
       mesh.set_point(n, best_p);
     }
   }
+  q = best;
   return best - start;
 }
 
@@ -70,9 +75,10 @@ double smooth_node(M& mesh, NodeId n, const NodeConstraint& constraint,
                    const SmoothOptions& options) {
   const std::vector<NodeId> around = edge_neighbours(mesh, n);
   if (around.empty()) return 0;
-  double gain = laplacian_step(mesh, n, around, constraint, options.halvings);
-  if (min_quality_around(mesh, n) < options.optimise_below) {
-    const double more = pattern_search(mesh, n, around, constraint, options.search_levels);
+  double q = min_quality_around(mesh, n);
+  double gain = laplacian_step(mesh, n, around, constraint, options.halvings, q);
+  if (q < options.optimise_below) {
+    const double more = pattern_search(mesh, n, around, constraint, options.search_levels, q);
     if (more > 0) gain = std::max(gain, 0.0) + more;
   }
   return gain;

@@ -13,7 +13,12 @@
 // the mesh the next ones are built in. The cells outside a cavity never change, so no cell
 // of the mesh goes below the threshold. Input nodes keep their ids: a seed on the border of
 // its cavity stays with the outside cells and keeps its target; its copy inside the cavity
-// is a new node without a target.
+// is a new node without a target. A cavity whose layer cannot be a mesh (cells touching
+// along an edge only, joined around both its ends: see pillow.h) is rejected like a poor one.
+//
+// Each attempt works in a patch, the cavity and the cells sharing a node with it, and only a
+// published cavity is spliced into the mesh: an attempt costs time in the size of its cavity,
+// not of the mesh, and the result is the one pillowing the whole mesh gives (whole_mesh).
 #pragma once
 
 #include <vector>
@@ -29,6 +34,9 @@ struct CavityOptions {
   PillowOptions pillow;    ///< where the copies start
   SmoothOptions smooth;    ///< smoothing of the cavity's nodes
   BoundaryOptions boundary;
+  /// Pillow and smooth each cavity in a copy of the whole mesh instead of in the cavity and
+  /// the ring of cells around it: slow, the reference the local patches must reproduce.
+  bool whole_mesh = false;
 };
 
 /// One pillowing attempt.

@@ -6,11 +6,15 @@
 // other cells keep the originals, and each pillowed face becomes a new cell joining the two.
 // Where the set touches itself only along an edge or at a node (a non-manifold region) each
 // face-connected fan of the set's cells around a node gets its own copy, so the result stays
-// conformal. Faces on the domain boundary are not pillowed. A new node starts a fraction of
-// the way from its original toward the centre of the fan's cells (kept on the domain boundary
-// when the original is on it); smoothing is the caller's next step. Used for the global
-// pillowing of the base algorithm (each material in turn) and, in the guaranteed pipeline,
-// for cavities (sec. 5.2). The mesh is rebuilt, never edited in place.
+// conformal. That fails where two cells touching along an edge only are also joined through
+// other set cells around both ends of the edge: both must then take the same copies of the
+// edge's nodes, so the four layer cells at the edge would share one face, which no layer of
+// cells avoids; the kernel throws MeshError. Faces on the domain boundary are not pillowed.
+// A new node starts a fraction of the way from its original toward the centre of the fan's
+// cells (kept on the domain boundary when the original is on it); smoothing is the caller's
+// next step. Used for the global pillowing of the base algorithm (each material in turn)
+// and, in the guaranteed pipeline, for cavities (sec. 5.2). The mesh is rebuilt, never
+// edited in place.
 #pragma once
 
 #include "hexadapt/adapt/node_constraint.h"
