@@ -110,6 +110,7 @@ TEST(TargetCorrection, NoisyPlaneTargetsLandOnThePlaneAsGoodQuads) {
   EXPECT_EQ(r.n_surface_nodes, 25);  // the 5 x 5 inner nodes; the border ones are curve nodes
   EXPECT_EQ(r.n_curve_nodes, 24);
   EXPECT_EQ(r.n_unprojected, 0);
+  EXPECT_EQ(r.n_off_model, 0);
   for (NodeId v : id_range<NodeId>(c.mesh.n_nodes())) {
     if (!c.targets.has[v]) continue;
     const Vec3& t = c.targets.position[v];
@@ -233,12 +234,18 @@ TEST(TargetCorrection, SphereTargetsLieOnTheReconstructedModel) {
     } else {
       EXPECT_GE(r.min_quality_after, r.min_quality_before - 1e-12);
     }
+    // Off the model: only the few nodes the result names (a projection would have made
+    // one of their quads poor), none without noise.
+    index_t off = 0, n = 0;
     for (NodeId v : id_range<NodeId>(s.in.mesh.n_nodes())) {
       if (!t.has[v]) continue;
-      EXPECT_LT(distance_to_model(s.rec.model, t.position[v]), 1e-9) << v.value();
+      ++n;
+      off += distance_to_model(s.rec.model, t.position[v]) > 1e-9;
       // The pixelated model is within about a pixel diagonal of the sphere.
       EXPECT_NEAR((t.position[v] - s.centre).norm(), s.radius, 0.5) << v.value();
     }
+    EXPECT_EQ(off, r.n_off_model);
+    EXPECT_LE(off, noise > 0 ? n / 20 : 0);
   }
 }
 

@@ -22,6 +22,7 @@ struct Args {
   std::string method = "guaranteed";
   std::string model;
   bool no_correction = false;
+  TargetCorrectionOptions correction;
   bool allow_bad_input = false;
   int max_loops = 20;
   int cavity_range = 3;
@@ -86,6 +87,7 @@ Json result_json(const AdaptResult<M>& r, index_t input_cells) {
     correction["curve_nodes"] = c.n_curve_nodes;
     correction["fixed_nodes"] = c.n_fixed_nodes;
     correction["unprojected_nodes"] = c.n_unprojected;
+    correction["off_model_nodes"] = c.n_off_model;
     correction["min_quad_quality_before"] = c.min_quality_before;
     correction["min_quad_quality_projected"] = c.min_quality_projected;
     correction["min_quad_quality_after"] = c.min_quality_after;
@@ -145,6 +147,7 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   options.allow_bad_input = args.allow_bad_input;
   options.max_loops = args.max_loops;
   options.cavity_range = args.cavity_range;
+  options.correction = args.correction;
   options.correction.enabled = !args.no_correction;
 
   Timer clock;
@@ -245,6 +248,22 @@ int main(int argc, char** argv) {
                  "correction is skipped");
   app.add_flag("--no-correction", args.no_correction,
                "guaranteed: do not correct the targets even when --model is given");
+  app.add_option("--correction-iterations", args.correction.iterations,
+                 "Target correction: smoothing sweeps")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--correction-relaxation", args.correction.relaxation,
+                 "Target correction: share of the way to the smoothed position per sweep")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  app.add_option("--correction-radius", args.correction.search_radius,
+                 "Target correction: model search radius, in mean interface edge lengths")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--correction-max-shift", args.correction.max_shift,
+                 "Target correction: farthest a target moves by smoothing, in mean edge lengths")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   cli::add_input_options(app, args.in);
   cli::add_common_options(app, common);
   return cli::run(app, argc, argv, common, [&] { return run_adapt(app, args, common); });

@@ -180,6 +180,9 @@ void check_options(const TargetCorrectionOptions& o) {
     throw OptionError("correction relaxation must be in (0, 1], got " + std::to_string(o.relaxation));
   if (!(o.search_radius > 0 && std::isfinite(o.search_radius)))
     throw OptionError("correction search radius must be > 0, got " + std::to_string(o.search_radius));
+  if (!(o.min_projected_quality >= -1 && o.min_projected_quality <= 1))
+    throw OptionError("correction min projected quality must be in [-1, 1], got " +
+                      std::to_string(o.min_projected_quality));
   if (!(o.max_shift > 0))
     throw OptionError("correction max shift must be > 0, got " + std::to_string(o.max_shift));
 }
@@ -207,14 +210,22 @@ TargetCorrectionResult correct_targets(const HexMesh& mesh, const IdVector<CellI
   IdVector<NodeId, Vec3>& t = targets.position;
   r.min_quality_before = min_quality_all(s, t, &r.n_poor_before);
 
+  IdVector<NodeId, char> on(static_cast<std::size_t>(mesh.n_nodes()), 0);
   for (NodeId v : id_range<NodeId>(mesh.n_nodes())) {
     if (s.role[v] != Role::surface && s.role[v] != Role::curve) continue;
-    if (const auto y = on_model(s, projection, boundary, v, t[v], radius)) {
-      t[v] = *y;
-    } else {
+    const auto y = on_model(s, projection, boundary, v, t[v], radius);
+    if (!y) {
       s.role[v] = Role::fixed;
       ++r.n_unprojected;
+      continue;
     }
+    const Vec3 old = t[v];
+    const double before = min_face_quality(s, t, s.node_faces[v]);
+    t[v] = *y;
+    if (min_face_quality(s, t, s.node_faces[v]) < std::min(before, o.min_projected_quality))
+      t[v] = old;  // the sweeps bring it onto the model
+    else
+      on[v] = 1;
   }
   index_t ignored = 0;
   r.min_quality_projected = min_quality_all(s, t, &ignored);
@@ -236,6 +247,7 @@ TargetCorrectionResult correct_targets(const HexMesh& mesh, const IdVector<CellI
         t[v] = old;
         continue;
       }
+      on[v] = 1;
       ++moved;
     }
     r.sweeps = sweep + 1;
@@ -248,6 +260,7 @@ TargetCorrectionResult correct_targets(const HexMesh& mesh, const IdVector<CellI
     r.n_surface_nodes += s.role[v] == Role::surface;
     r.n_curve_nodes += s.role[v] == Role::curve;
     r.n_fixed_nodes += s.role[v] == Role::fixed;
+    r.n_off_model += (s.role[v] == Role::surface || s.role[v] == Role::curve) && !on[v];
     if (!targets.has[v]) continue;
     const double d = (t[v] - computed[v]).norm();
     r.mean_displacement += d;

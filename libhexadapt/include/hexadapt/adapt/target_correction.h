@@ -13,10 +13,12 @@
 // feature edges are curve nodes: they move to the mean of their two curve neighbours, then
 // onto the model's feature curves (and stay on the domain boundary when they are on it).
 // Other nodes (curve ends and junctions, nodes fixed on the domain boundary) keep their
-// target. Every target is first projected onto the model; then in each sweep (nodes in id
-// order, Gauss-Seidel) a move is kept only when the worst quality of the node's target
-// quads does not go down, so the surface's minimum quality after the projection never
-// decreases. A node whose model is farther than `search_radius` keeps its target.
+// target. Every target is first projected onto the model, unless that would make one of its
+// quads poor (below `min_projected_quality` and worse than before); then in each sweep (nodes
+// in id order, Gauss-Seidel) a smoothed and projected move is kept only when the worst
+// quality of the node's target quads does not go down, so the surface's minimum quality
+// after the first projection never decreases. A node whose model is farther than
+// `search_radius` keeps its target.
 #pragma once
 
 #include <array>
@@ -38,6 +40,9 @@ struct TargetCorrectionOptions {
   /// A target never moves farther than this from its computed position (in mean edge
   /// lengths): it keeps near the volume fractions' interface.
   double max_shift = 1.0;
+  /// The first projection onto the model is refused where it would put a target quad below
+  /// this (and below its quality before); such nodes reach the model in the guarded sweeps.
+  double min_projected_quality = 0.1;
 };
 
 struct TargetCorrectionResult {
@@ -45,7 +50,8 @@ struct TargetCorrectionResult {
   std::string skipped;      ///< why it did not run ("" when it ran)
   index_t n_faces = 0;      ///< quads of the target surface
   index_t n_surface_nodes = 0, n_curve_nodes = 0, n_fixed_nodes = 0;
-  index_t n_unprojected = 0;  ///< nodes with no model within the search radius
+  index_t n_unprojected = 0;  ///< nodes with no model within the search radius (kept fixed)
+  index_t n_off_model = 0;    ///< movable nodes whose every projection was refused
   double min_quality_before = 1;  ///< worst target-surface quad, computed targets
   double min_quality_projected = 1;  ///< after the first projection onto the model
   double min_quality_after = 1;   ///< after the correction
