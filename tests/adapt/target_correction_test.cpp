@@ -252,6 +252,8 @@ TEST(TargetCorrection, SphereTargetsLieOnTheReconstructedModel) {
 TEST(TargetCorrection, GuaranteedPipelineRunsItWithAModelOnly) {
   const SphereCase s = sphere_case(7, 2.2);
   AdaptOptions o;
+  o.cavity_range = 0;  // the wiring is under test here, not the later steps
+  o.max_loops = 2;
   const auto with = adapt(s.in.mesh, s.in.fractions, s.material, o, &s.rec.model);
   EXPECT_TRUE(with.correction.ran);
   bool step = false;

@@ -171,6 +171,102 @@ void check_inputs(const HexMesh& mesh, const IdVector<CellId, int>& material,
   if (model.dim != 3) throw InputError("", "target correction", "the model is not 3D");
 }
 
+// The sweeps over the target surface, the targets as computed, and which nodes reached the
+// model.
+class Corrector {
+ public:
+  Corrector(TargetSurface& s, const reconstruct::InterfaceModel& model,
+            const IdVector<NodeId, NodeConstraint>& boundary, Targets& targets,
+            const TargetCorrectionOptions& o)
+      : s_(s),
+        boundary_(boundary),
+        targets_(targets),
+        t_(targets.position),
+        o_(o),
+        projection_(model, 0.5 * s.mean_edge),
+        computed_(targets.position),
+        on_(targets.position.size(), 0),
+        radius_(o.search_radius * s.mean_edge),
+        max_shift_(o.max_shift * s.mean_edge) {}
+
+  // Every movable target onto the model; returns the nodes with no model in reach, which
+  // become fixed.
+  index_t project_all() {
+    index_t missing = 0;
+    for (NodeId v : id_range<NodeId>(static_cast<index_t>(t_.size()))) {
+      if (!movable(v)) continue;
+      const auto y = on_model(s_, projection_, boundary_, v, t_[v], radius_);
+      if (!y) {
+        s_.role[v] = Role::fixed;
+        ++missing;
+        continue;
+      }
+      // A refused node gets onto the model in the sweeps.
+      const double before = min_face_quality(s_, t_, s_.node_faces[v]);
+      try_move(v, *y, std::min(before, o_.min_projected_quality));
+    }
+    return missing;
+  }
+
+  // One Gauss-Seidel sweep of smoothing and projection; returns the nodes moved.
+  index_t sweep() {
+    index_t moved = 0;
+    for (NodeId v : id_range<NodeId>(static_cast<index_t>(t_.size()))) {
+      if (!movable(v)) continue;
+      const auto goal = smoothed(s_, t_, v);
+      if (!goal) continue;
+      const Vec3 x = t_[v] + o_.relaxation * (*goal - t_[v]);
+      const auto y = on_model(s_, projection_, boundary_, v, x, radius_);
+      if (!y || (*y - t_[v]).norm() <= 1e-12 * s_.mean_edge) continue;
+      const double shift = (*y - computed_[v]).norm();
+      if (shift > max_shift_ && shift > (t_[v] - computed_[v]).norm()) continue;
+      moved += try_move(v, *y, min_face_quality(s_, t_, s_.node_faces[v]));
+    }
+    return moved;
+  }
+
+  void statistics(TargetCorrectionResult& r) const {
+    index_t n = 0;
+    for (NodeId v : id_range<NodeId>(static_cast<index_t>(t_.size()))) {
+      r.n_surface_nodes += s_.role[v] == Role::surface;
+      r.n_curve_nodes += s_.role[v] == Role::curve;
+      r.n_fixed_nodes += s_.role[v] == Role::fixed;
+      r.n_off_model += movable(v) && !on_[v];
+      if (!targets_.has[v]) continue;
+      const double d = (t_[v] - computed_[v]).norm();
+      r.mean_displacement += d;
+      r.max_displacement = std::max(r.max_displacement, d);
+      ++n;
+    }
+    if (n) r.mean_displacement /= static_cast<double>(n);
+  }
+
+ private:
+  bool movable(NodeId v) const { return s_.role[v] == Role::surface || s_.role[v] == Role::curve; }
+
+  // Moves v to y (a point of the model) unless one of its quads would fall below `floor`.
+  bool try_move(NodeId v, const Vec3& y, double floor) {
+    const Vec3 old = t_[v];
+    t_[v] = y;
+    if (min_face_quality(s_, t_, s_.node_faces[v]) < floor) {
+      t_[v] = old;
+      return false;
+    }
+    on_[v] = 1;
+    return true;
+  }
+
+  TargetSurface& s_;
+  const IdVector<NodeId, NodeConstraint>& boundary_;
+  const Targets& targets_;
+  IdVector<NodeId, Vec3>& t_;
+  const TargetCorrectionOptions& o_;
+  const ModelProjection projection_;
+  const IdVector<NodeId, Vec3> computed_;
+  IdVector<NodeId, char> on_;
+  double radius_, max_shift_;
+};
+
 }  // namespace
 
 void check_options(const TargetCorrectionOptions& o) {
@@ -203,71 +299,17 @@ TargetCorrectionResult correct_targets(const HexMesh& mesh, const IdVector<CellI
   }
   r.ran = true;
   classify_nodes(mesh, boundary, s);
-  const double radius = o.search_radius * s.mean_edge;
-  const double max_shift = o.max_shift * s.mean_edge;
-  const ModelProjection projection(model, 0.5 * s.mean_edge);
-  const IdVector<NodeId, Vec3> computed = targets.position;
-  IdVector<NodeId, Vec3>& t = targets.position;
-  r.min_quality_before = min_quality_all(s, t, &r.n_poor_before);
-
-  IdVector<NodeId, char> on(static_cast<std::size_t>(mesh.n_nodes()), 0);
-  for (NodeId v : id_range<NodeId>(mesh.n_nodes())) {
-    if (s.role[v] != Role::surface && s.role[v] != Role::curve) continue;
-    const auto y = on_model(s, projection, boundary, v, t[v], radius);
-    if (!y) {
-      s.role[v] = Role::fixed;
-      ++r.n_unprojected;
-      continue;
-    }
-    const Vec3 old = t[v];
-    const double before = min_face_quality(s, t, s.node_faces[v]);
-    t[v] = *y;
-    if (min_face_quality(s, t, s.node_faces[v]) < std::min(before, o.min_projected_quality))
-      t[v] = old;  // the sweeps bring it onto the model
-    else
-      on[v] = 1;
-  }
+  Corrector c(s, model, boundary, targets, o);
+  r.min_quality_before = min_quality_all(s, targets.position, &r.n_poor_before);
+  r.n_unprojected = c.project_all();
   index_t ignored = 0;
-  r.min_quality_projected = min_quality_all(s, t, &ignored);
-
-  for (int sweep = 0; sweep < o.iterations; ++sweep) {
-    index_t moved = 0;
-    for (NodeId v : id_range<NodeId>(mesh.n_nodes())) {
-      if (s.role[v] != Role::surface && s.role[v] != Role::curve) continue;
-      const auto goal = smoothed(s, t, v);
-      if (!goal) continue;
-      const auto y = on_model(s, projection, boundary, v, t[v] + o.relaxation * (*goal - t[v]), radius);
-      if (!y || (*y - t[v]).norm() <= 1e-12 * s.mean_edge) continue;
-      const double shift = (*y - computed[v]).norm();
-      if (shift > max_shift && shift > (t[v] - computed[v]).norm()) continue;
-      const Vec3 old = t[v];
-      const double before = min_face_quality(s, t, s.node_faces[v]);
-      t[v] = *y;
-      if (min_face_quality(s, t, s.node_faces[v]) < before) {
-        t[v] = old;
-        continue;
-      }
-      on[v] = 1;
-      ++moved;
-    }
-    r.sweeps = sweep + 1;
-    if (moved == 0) break;
+  r.min_quality_projected = min_quality_all(s, targets.position, &ignored);
+  while (r.sweeps < o.iterations) {
+    ++r.sweeps;
+    if (c.sweep() == 0) break;
   }
-
-  r.min_quality_after = min_quality_all(s, t, &r.n_poor_after);
-  index_t n = 0;
-  for (NodeId v : id_range<NodeId>(mesh.n_nodes())) {
-    r.n_surface_nodes += s.role[v] == Role::surface;
-    r.n_curve_nodes += s.role[v] == Role::curve;
-    r.n_fixed_nodes += s.role[v] == Role::fixed;
-    r.n_off_model += (s.role[v] == Role::surface || s.role[v] == Role::curve) && !on[v];
-    if (!targets.has[v]) continue;
-    const double d = (t[v] - computed[v]).norm();
-    r.mean_displacement += d;
-    r.max_displacement = std::max(r.max_displacement, d);
-    ++n;
-  }
-  if (n) r.mean_displacement /= static_cast<double>(n);
+  r.min_quality_after = min_quality_all(s, targets.position, &r.n_poor_after);
+  c.statistics(r);
   return r;
 }
 
