@@ -66,5 +66,63 @@ TEST(ModelIo, OpenMeshPatchesRoundTrip) {
   EXPECT_EQ(boundary, 0u);
 }
 
+void expect_same_model(const InterfaceModel& a, const InterfaceModel& b) {
+  EXPECT_EQ(a.dim, b.dim);
+  EXPECT_EQ(a.points, b.points);  // 17 digits: exact
+  EXPECT_EQ(a.facets, b.facets);
+  EXPECT_EQ(a.facet_materials, b.facet_materials);
+  EXPECT_EQ(a.curves, b.curves);
+  EXPECT_EQ(a.corners, b.corners);
+}
+
+TEST(ModelIo, VtkReadsBackWhatItWrote) {
+  const auto c2 = testcase::five_by_five();
+  const auto r2 = reconstruct(c2.mesh, c2.fractions, c2.majority, ReconstructOptions{});
+  const fs::path dir = temp_dir("read");
+  write_model_vtk(r2.model, {"a", "b", "c"}, (dir / "2d.vtk").string());
+  const ModelFile f2 = read_model_vtk((dir / "2d.vtk").string());
+  EXPECT_EQ(f2.materials, (std::vector<std::string>{"a", "b", "c"}));
+  expect_same_model(f2.model, r2.model);
+
+  // Three materials reaching the domain boundary: facets, curves and corners.
+  const auto c3 = testcase::make_case(make_hex_grid(5, 5, 5), 3, [](const Vec3& p) {
+    return p.x() < 2.3 ? 0 : p.y() < 2.7 ? 1 : 2;
+  });
+  const auto r3 = reconstruct(c3.mesh, c3.fractions, c3.majority, ReconstructOptions{});
+  ASSERT_FALSE(r3.model.curves.empty());
+  ASSERT_FALSE(r3.model.corners.empty());
+  write_model_vtk(r3.model, {"x", "y", "z"}, (dir / "3d.vtk").string());
+  const ModelFile f3 = read_model_vtk((dir / "3d.vtk").string());
+  EXPECT_EQ(f3.materials, (std::vector<std::string>{"x", "y", "z"}));
+  expect_same_model(f3.model, r3.model);
+}
+
+TEST(ModelIo, VtkReaderNamesTheFileAndLine) {
+  const auto c = testcase::sphere(5, 1.8);
+  const auto r = reconstruct(c.mesh, c.fractions, c.majority, ReconstructOptions{});
+  const fs::path dir = temp_dir("bad");
+  const fs::path path = dir / "m.vtk";
+  write_model_vtk(r.model, {"out", "in"}, path.string());
+  const std::string text = slurp(path);
+  auto expect_error = [&](const std::string& content, const std::string& part) {
+    std::ofstream(path, std::ios::binary) << content;
+    try {
+      read_model_vtk(path.string());
+      ADD_FAILURE() << "no error for " << part;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(path.string()), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+    }
+  };
+  expect_error(text.substr(0, text.size() / 2), "line");
+  std::string other = text;
+  other.replace(other.find("hexadapt interface model"), 8, "someone ");
+  expect_error(other, "line 2");
+  std::string bad_id = text;
+  bad_id.replace(bad_id.find("\n4 ", bad_id.find("POLYGONS")) + 3, 1, "99999999 ");
+  expect_error(bad_id, "line");
+  EXPECT_THROW(read_model_vtk((dir / "missing.vtk").string()), IoError);
+}
+
 }  // namespace
 }  // namespace hexadapt::reconstruct

@@ -1,5 +1,6 @@
 // hexadapt-adapt: moves the interface nodes of an assigned grid onto the material interfaces
 // and pillows, giving a conformal mesh whose cells each hold one material (paper sec. 5).
+#include <algorithm>
 #include <string>
 #include <variant>
 #include <vector>
@@ -7,7 +8,9 @@
 #include "cli.h"
 #include "hexadapt/adapt/adapt.h"
 #include "hexadapt/adapt/adapt_io.h"
+#include "hexadapt/core/error.h"
 #include "hexadapt/io/mesh_file.h"
+#include "hexadapt/reconstruct/model_io.h"
 
 namespace {
 
@@ -17,6 +20,9 @@ using cli::Json;
 struct Args {
   std::string input;
   std::string method = "guaranteed";
+  std::string model;
+  bool no_correction = false;
+  TargetCorrectionOptions correction;
   bool allow_bad_input = false;
   int max_loops = 20;
   int cavity_range = 3;
@@ -70,7 +76,45 @@ Json result_json(const AdaptResult<M>& r, index_t input_cells) {
                      {"cells", s.cells},
                      {"seconds", s.seconds}});
   j["steps"] = steps;
+  const TargetCorrectionResult& c = r.correction;
+  Json correction = {{"ran", c.ran}};
+  if (c.ran) {
+    const auto it = std::find_if(r.steps.begin(), r.steps.end(),
+                                 [](const AdaptStep& s) { return s.name == "correct"; });
+    correction["seconds"] = it != r.steps.end() ? it->seconds : 0.0;
+    correction["surface_quads"] = c.n_faces;
+    correction["surface_nodes"] = c.n_surface_nodes;
+    correction["curve_nodes"] = c.n_curve_nodes;
+    correction["fixed_nodes"] = c.n_fixed_nodes;
+    correction["unprojected_nodes"] = c.n_unprojected;
+    correction["off_model_nodes"] = c.n_off_model;
+    correction["min_quad_quality_before"] = c.min_quality_before;
+    correction["min_quad_quality_projected"] = c.min_quality_projected;
+    correction["min_quad_quality_after"] = c.min_quality_after;
+    correction["quads_below_0.3_before"] = c.n_poor_before;
+    correction["quads_below_0.3_after"] = c.n_poor_after;
+    correction["mean_target_displacement"] = c.mean_displacement;
+    correction["max_target_displacement"] = c.max_displacement;
+    correction["sweeps"] = c.sweeps;
+  } else {
+    correction["skipped"] = c.skipped;
+  }
+  j["correction"] = correction;
   return j;
+}
+
+// The reconstruction's model (hexadapt-reconstruct --model), its materials checked against
+// the grid's.
+reconstruct::ModelFile read_model(const std::string& path, const Fractions& fractions) {
+  reconstruct::ModelFile m = reconstruct::read_model_vtk(path);
+  if (m.materials != fractions.names()) {
+    std::string want, got;
+    for (const auto& n : fractions.names()) want += " " + n;
+    for (const auto& n : m.materials) got += " " + n;
+    throw InputError(path, "title line",
+                     "the model's materials (" + got + " ) are not the grid's (" + want + " )");
+  }
+  return m;
 }
 
 // The guaranteed method does not start from cells already below the threshold: name them.
@@ -93,7 +137,7 @@ int refuse_bad_input(const cli::CommonOptions& common, Json& report, const Phase
 }
 
 int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& common) {
-  cli::refuse_overwrite(common.output, {args.input});
+  cli::refuse_overwrite(common.output, {args.input, args.model});
   AdaptOptions options;
   options.method = parse_adapt_method(args.method);
   options.threshold = args.threshold;
@@ -103,6 +147,8 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   options.allow_bad_input = args.allow_bad_input;
   options.max_loops = args.max_loops;
   options.cavity_range = args.cavity_range;
+  options.correction = args.correction;
+  options.correction.enabled = !args.no_correction;
 
   Timer clock;
   PhaseTimes times;
@@ -111,6 +157,8 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   const IdVector<CellId, int> material =
       read_material_array(in, fractions.n_materials(), args.input);
   const AnyMesh grid = io::to_mesh(in);
+  reconstruct::ModelFile model;
+  if (!args.model.empty()) model = read_model(args.model, fractions);
   times.emplace_back("read", clock.seconds());
   clock.restart();
 
@@ -121,13 +169,15 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   report["threshold"] = options.threshold;
   report["steps"] = options.steps;
   report["materials"] = fractions.names();
+  report["model"] = args.model;
   io::MeshData out;
   index_t below = 0;
   std::vector<CellId> bad_input;
   bool stopped = false;
   std::visit(
       [&](const auto& mesh) {
-        const auto r = adapt(mesh, fractions, material, options);
+        const auto r =
+            adapt(mesh, fractions, material, options, args.model.empty() ? nullptr : &model.model);
         bad_input = r.bad_input_cells;
         stopped = r.stopped_bad_input;
         for (const auto& s : r.steps) times.emplace_back(s.name, s.seconds);
@@ -191,6 +241,28 @@ int main(int argc, char** argv) {
                  "guaranteed: vertex distance of the cavities pillowed around blocked nodes "
                  "(0: no cavity pillowing)")
       ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--model", args.model,
+                 "guaranteed, 3D: the geometric model of hexadapt-reconstruct --model (its .vtk); "
+                 "the targets are smoothed on it first (paper sec. 5.3). Without it the "
+                 "correction is skipped");
+  app.add_flag("--no-correction", args.no_correction,
+               "guaranteed: do not correct the targets even when --model is given");
+  app.add_option("--correction-iterations", args.correction.iterations,
+                 "Target correction: smoothing sweeps")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--correction-relaxation", args.correction.relaxation,
+                 "Target correction: share of the way to the smoothed position per sweep")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  app.add_option("--correction-radius", args.correction.search_radius,
+                 "Target correction: model search radius, in mean interface edge lengths")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--correction-max-shift", args.correction.max_shift,
+                 "Target correction: farthest a target moves by smoothing, in mean edge lengths")
+      ->check(CLI::PositiveNumber)
       ->capture_default_str();
   cli::add_input_options(app, args.in);
   cli::add_common_options(app, common);

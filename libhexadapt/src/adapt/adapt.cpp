@@ -30,26 +30,45 @@ void check_options(const AdaptOptions& o) {
     throw OptionError("cavity_range must be >= 0, got " + std::to_string(o.cavity_range));
   if (!(o.loop_tolerance >= 0))
     throw OptionError("loop_tolerance must be >= 0, got " + std::to_string(o.loop_tolerance));
+  check_options(o.correction);
+}
+
+// The model's facets must name materials of the fractions.
+void check_model(const reconstruct::InterfaceModel* model, int dim, int n_materials) {
+  if (!model) return;
+  if (model->dim != dim)
+    throw InputError("", "model", "a " + std::to_string(model->dim) + "D model for a " +
+                                      std::to_string(dim) + "D grid");
+  for (std::size_t f = 0; f < model->facet_materials.size(); ++f)
+    for (int m : model->facet_materials[f])
+      if (m < 0 || m >= n_materials)
+        throw InputError("", "model facet " + std::to_string(f),
+                         "material index " + std::to_string(m) + " out of [0, " +
+                             std::to_string(n_materials) + ")");
 }
 
 }  // namespace
 
 template <class M>
 AdaptResult<M> adapt(const M& grid, const Fractions& fractions,
-                     const IdVector<CellId, int>& material, const AdaptOptions& options) {
+                     const IdVector<CellId, int>& material, const AdaptOptions& options,
+                     const reconstruct::InterfaceModel* model) {
   check_options(options);
+  check_model(model, M::dim, fractions.n_materials());
   switch (options.method) {
     case AdaptMethod::base:
       return detail::run_base_pipeline(grid, fractions, material, options);
     case AdaptMethod::guaranteed:
-      return detail::run_guaranteed_pipeline(grid, fractions, material, options);
+      return detail::run_guaranteed_pipeline(grid, fractions, material, options, model);
   }
   throw InternalError("unhandled adaptation method");
 }
 
 template AdaptResult<QuadMesh> adapt<QuadMesh>(const QuadMesh&, const Fractions&,
-                                               const IdVector<CellId, int>&, const AdaptOptions&);
+                                               const IdVector<CellId, int>&, const AdaptOptions&,
+                                               const reconstruct::InterfaceModel*);
 template AdaptResult<HexMesh> adapt<HexMesh>(const HexMesh&, const Fractions&,
-                                             const IdVector<CellId, int>&, const AdaptOptions&);
+                                             const IdVector<CellId, int>&, const AdaptOptions&,
+                                             const reconstruct::InterfaceModel*);
 
 }  // namespace hexadapt

@@ -5,11 +5,12 @@
 
 namespace hexadapt::detail {
 
-/// Input check, targets, controlled move, move-smooth loop; every output cell >= threshold
-/// when every input cell is.
+/// Input check, targets, (3D, with a model) target correction, controlled move, cavities,
+/// move-smooth loop; every output cell >= threshold when every input cell is.
 template <class M>
 AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions,
                                        const IdVector<CellId, int>& material,
-                                       const AdaptOptions& options);
+                                       const AdaptOptions& options,
+                                       const reconstruct::InterfaceModel* model);
 
 }  // namespace hexadapt::detail

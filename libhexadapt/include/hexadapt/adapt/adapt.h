@@ -11,7 +11,9 @@
 // unchanged) unless allow_bad_input. Between the first controlled move and the move-smooth
 // loop, cavity pillowing (sec. 5.2, Alg. 5, cavity_pillow.h) gives the nodes left short of
 // their targets new cells to move into; those still short at the end are reported in
-// `blocked`. The 3D target correction of sec. 5.3 is not implemented.
+// `blocked`. In 3D, when the reconstruction's geometric model is given, the guaranteed
+// method first corrects the targets (sec. 5.3, target_correction.h); without a model the
+// correction is skipped and the result says why.
 #pragma once
 
 #include <string>
@@ -22,6 +24,7 @@
 #include "hexadapt/adapt/global_pillow.h"
 #include "hexadapt/adapt/node_constraint.h"
 #include "hexadapt/adapt/smoothing.h"
+#include "hexadapt/adapt/target_correction.h"
 #include "hexadapt/adapt/targets.h"
 #include "hexadapt/core/log.h"
 #include "hexadapt/mesh/fractions.h"
@@ -40,6 +43,7 @@ struct AdaptOptions {
   int steps = 16;                                ///< steps of the controlled move
   BoundaryOptions boundary;                      ///< feature detection on the domain boundary
   TargetOptions targets;                         ///< target computation
+  TargetCorrectionOptions correction;            ///< guaranteed, 3D: targets smoothed on the model
   PillowOptions pillow;                          ///< where pillow nodes start
   SmoothOptions smooth;                          ///< smoothing sweeps
   Progress progress;                             ///< phase progress, nullptr = silent
@@ -93,12 +97,16 @@ struct AdaptResult {
   std::vector<CavityAttempt> cavities;  ///< every cavity tried, in order
   index_t n_cavities_published = 0;
   index_t n_cells_added = 0;  ///< layer cells of the published cavities
+  TargetCorrectionResult correction;  ///< the 3D target correction (ran or why skipped)
 };
 
 /// Runs the chosen pipeline. `material` holds one index into `fractions`' materials per
-/// cell. Throws InputError for inconsistent sizes, OptionError for bad options.
+/// cell; `model` is the reconstruction's geometric model of the same grid (nullptr: none,
+/// the target correction is skipped). Throws InputError for inconsistent sizes or a model
+/// whose material indices do not fit, OptionError for bad options.
 template <class M>
 AdaptResult<M> adapt(const M& grid, const Fractions& fractions,
-                     const IdVector<CellId, int>& material, const AdaptOptions& options = {});
+                     const IdVector<CellId, int>& material, const AdaptOptions& options = {},
+                     const reconstruct::InterfaceModel* model = nullptr);
 
 }  // namespace hexadapt

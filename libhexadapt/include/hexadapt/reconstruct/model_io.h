@@ -6,6 +6,7 @@
 // small writer: interface facets (LINES in 2D, POLYGONS in 3D), feature curves (LINES) and
 // corners (VERTICES), with cell arrays material_lo / material_hi (the pair; -1 on features)
 // and kind (0 interface, 1 curve, 2 corner); the material names are in the title line.
+// The .vtk file is also what the adapt stage reads back (read_model_vtk).
 // For OpenMesh users (3D): one PolyMesh of quads per material pair, written with
 // OpenMesh::IO (.om or .obj), the face normals pointing from the lower material index to
 // the higher one.
@@ -22,6 +23,15 @@ namespace hexadapt::reconstruct {
 /// Atomic. Throws IoError.
 void write_model_vtk(const InterfaceModel& model, const std::vector<std::string>& materials,
                      const std::string& path);
+
+struct ModelFile {
+  InterfaceModel model;                ///< dim 0 when the file holds no facets
+  std::vector<std::string> materials;  ///< from the title line
+};
+
+/// Reads back what write_model_vtk wrote (the adapt stage's `--model`). Throws IoError when
+/// the file cannot be read, InputError naming the file and line for anything else.
+ModelFile read_model_vtk(const std::string& path);
 
 struct ModelPatch {
   int lo = 0, hi = 0;  ///< the material pair
