@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "hexadapt/core/ids.h"
+#include "hexadapt/core/log.h"
 
 namespace hexadapt {
 namespace io {
@@ -26,6 +27,9 @@ struct ImprintOptions {
   double convex_tolerance = 1e-12;
   /// Bins of the candidate grid per output cell (about).
   double bins_per_cell = 1.0;
+  /// Called with phase "imprint" and the fraction of input cells done, ending at 1;
+  /// nullptr: silent.
+  Progress progress;
 };
 
 struct Imprint {
