@@ -59,7 +59,7 @@ double hex_in_pieces(const io::MeshData& output, index_t o, const Pieces& pieces
     Eigen::AlignedBox3d box;
     for (const Vec3& p : t.p) box.extend(p);
     double in = 0;
-    for (const auto& piece : pieces) in += tet_in_piece(t, box, piece);
+    for (const auto& piece : pieces) in += piece.sign * tet_in_piece(t, box, piece);
     v += t.sign * in;
   }
   return v;
@@ -77,7 +77,7 @@ double quad_in_pieces(const io::MeshData& output, index_t o, const Pieces& piece
       std::swap(a, b);
       if (a.size() < 3) break;
     }
-    v += clip::polygon_area(a);
+    v += piece.sign * clip::polygon_area(a);
   }
   return sign * v;
 }
