@@ -64,7 +64,8 @@ TEST(ParallelProgress, VisitsEveryItemOnceAndEndsAtOne) {
 
 TEST(ParallelProgress, SubRangeEndsExactlyAtItsEnd) {
   Recorder r;
-  parallel_for_progress(10000, r.callback(), "part", [](std::int64_t) {}, 0.3, 0.7);
+  parallel_for_progress(
+      10000, r.callback(), "part", [](std::int64_t) {}, 0.3, 0.7);
   ASSERT_FALSE(r.fractions.empty());
   EXPECT_GT(r.fractions.front(), 0.3);
   EXPECT_EQ(r.fractions.back(), 0.7);

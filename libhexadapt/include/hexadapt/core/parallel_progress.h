@@ -19,8 +19,8 @@ namespace hexadapt {
 /// item still writes only its own state, so the results are those of parallel_for. Without
 /// a callback the loop runs as one block.
 template <class F>
-void parallel_for_progress(std::int64_t n, const Progress& progress, std::string_view phase,
-                           F&& f, double from = 0.0, double to = 1.0) {
+void parallel_for_progress(std::int64_t n, const Progress& progress, std::string_view phase, F&& f,
+                           double from = 0.0, double to = 1.0) {
   if (!progress) {
     parallel_for(n, f);
     return;
