@@ -6,8 +6,10 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <type_traits>
 
 #include "adapt/flow_cases.h"
+#include "adapt/generated_case.h"
 #include "hexadapt/io/mesh_file.h"
 
 namespace hexadapt {
@@ -29,21 +31,28 @@ int run_tool(const std::string& args) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-// An assigned grid file: vf_<name> arrays and the majority `material`.
+// An assigned grid file: vf_<name> arrays and the `material` array.
 template <class M>
-void write_assigned(const M& grid, const test::Shape& shape, int n_materials, int samples,
+void write_assigned(const M& grid, const Fractions& f, const IdVector<CellId, int>& material,
                     const fs::path& path) {
-  const Fractions f = test::sample_fractions(grid, shape, n_materials, samples);
   io::MeshData data = io::from_mesh(grid);
-  for (int m = 0; m < n_materials; ++m) {
+  for (int m = 0; m < f.n_materials(); ++m) {
     io::DataArray a{"vf_" + f.names()[static_cast<std::size_t>(m)], 1, io::ScalarType::float64, {}};
     for (CellId c : id_range<CellId>(grid.n_cells())) a.values.push_back(f(c, m));
     data.set_cell_array(a);
   }
   io::DataArray mat{"material", 1, io::ScalarType::int32, {}};
-  for (CellId c : id_range<CellId>(grid.n_cells())) mat.values.push_back(f.majority(c));
+  for (CellId c : id_range<CellId>(grid.n_cells())) mat.values.push_back(material[c]);
   data.set_cell_array(mat);
   io::write_mesh(data, path.string());
+}
+
+// The same for fractions sampled from a shape, with the majority material.
+template <class M>
+void write_assigned(const M& grid, const test::Shape& shape, int n_materials, int samples,
+                    const fs::path& path) {
+  const Fractions f = test::sample_fractions(grid, shape, n_materials, samples);
+  write_assigned(grid, f, test::majority(f), path);
 }
 
 TEST(AdaptTool, WritesTheMeshTheArraysAndTheReport) {
@@ -76,9 +85,13 @@ TEST(AdaptTool, WritesTheMeshTheArraysAndTheReport) {
 
 TEST(AdaptTool, ExitCodes) {
   const fs::path dir = scratch("codes");
-  const double h = 1.0 / 6;
-  const QuadMesh grid = make_quad_grid(42, 18, Vec3::Zero(), Vec3(h, h, 1));
-  write_assigned(grid, test::triple_point(4.0), 3, 12, dir / "in.vtu");
+  QuadMesh grid;
+  test::with_generated_case({"triple-point", {35, 15}, 2.0}, [&](const auto& g, const Fractions& f,
+                                                                const IdVector<CellId, int>& m) {
+    write_assigned(g, f, m, dir / "in.vtu");
+    if constexpr (std::is_same_v<std::decay_t<decltype(g)>, QuadMesh>) grid = g;
+  });
+  ASSERT_GT(grid.n_cells(), 0);
   const std::string in = (dir / "in.vtu").string(), out = (dir / "out.vtu").string();
   // The base method leaves cells below 0.3 here: written, but exit 3.
   EXPECT_EQ(run_tool(in + " -o " + out + " --method base -q"), 3);

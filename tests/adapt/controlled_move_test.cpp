@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "adapt/adapt_cases.h"
+#include "adapt/generated_case.h"
 #include "hexadapt/core/parallel.h"
 
 namespace hexadapt {
@@ -108,6 +109,38 @@ TEST(ControlledMove, NeverGoesBelowTheThresholdOnJitteredGrids) {
   const HexMesh h = make_hex_grid(8, 8, 4, test::jittered_points(8, 8, 4, 0.15, 3));
   expect_move_keeps_threshold(h, targets_of(h, disk(Vec3(4.2, 3.8, 0), 2.9), 2, 4), 0.3);
 }
+
+// Every case of hexadapt-generate, in each dimension it has, extruded and jittered.
+class ControlledMoveOnGeneratedCases : public ::testing::TestWithParam<test::GeneratedCase> {};
+
+TEST_P(ControlledMoveOnGeneratedCases, NeverGoesBelowTheThreshold) {
+  test::with_generated_case(GetParam(), [](const auto& grid, const Fractions& f,
+                                           const IdVector<CellId, int>& material) {
+    const double threshold = std::min(0.3, min_quality(grid));
+    expect_move_keeps_threshold(
+        grid, compute_targets(grid, f, material, boundary_constraints(grid)), threshold);
+  });
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    AllCases, ControlledMoveOnGeneratedCases,
+    ::testing::Values(
+        test::GeneratedCase{"disk", {20, 20}}, test::GeneratedCase{"sphere", {10, 10, 10}},
+        test::GeneratedCase{"venn", {20, 20}}, test::GeneratedCase{"venn", {10, 10, 10}},
+        test::GeneratedCase{"venn4", {20, 20}}, test::GeneratedCase{"venn4", {10, 10, 10}},
+        test::GeneratedCase{"slotted-disk", {24, 24}},
+        test::GeneratedCase{"slotted-disk", {12, 12, 12}},
+        test::GeneratedCase{"asteroid", {10, 10, 10}}, test::GeneratedCase{"layers", {20, 20}},
+        test::GeneratedCase{"layers", {8, 8, 8}}, test::GeneratedCase{"triple-point", {35, 15}, 2.0},
+        test::GeneratedCase{"stir", {30, 15}, 1.0}, test::GeneratedCase{"vortex", {24, 24}},
+        test::GeneratedCase{"vortex", {10, 10, 10}}, test::GeneratedCase{"balldrop", {20, 20}},
+        test::GeneratedCase{"balldrop", {10, 10, 10}},
+        test::GeneratedCase{"triple-point", {28, 12}, 2.0, 3},
+        test::GeneratedCase{"stir", {24, 12}, 1.0, 3},
+        test::GeneratedCase{"triple-point", {35, 15}, 2.0, 0, 0.2},
+        test::GeneratedCase{"asteroid", {10, 10, 10}, -1, 0, 0.2},
+        test::GeneratedCase{"stir", {24, 12}, 1.0, 3, 0.2}),
+    [](const ::testing::TestParamInfo<test::GeneratedCase>& i) { return test::label(i.param); });
 
 TEST(ControlledMove, GivesTheSamePositionsWhateverTheThreadCount) {
   // Wavy stripes: enough interface nodes that the colour classes run on several threads.

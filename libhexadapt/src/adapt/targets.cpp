@@ -2,10 +2,14 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <optional>
 #include <string>
+#include <tuple>
+#include <utility>
 
 #include "hexadapt/adapt/local_topology.h"
 #include "hexadapt/core/error.h"
+#include "hexadapt/mesh/plane_cut.h"
 
 namespace hexadapt {
 
@@ -41,6 +45,59 @@ std::vector<CellId> node_neighbour_cells(const M& mesh, CellId c) {
   return out;
 }
 
+// Centre and unit normal of local face lf of c (2D: the edge's normal in the plane).
+template <class M>
+std::pair<Vec3, Vec3> face_plane(const M& mesh, CellId c, int lf) {
+  const auto nodes = mesh.face_nodes(c, lf);
+  Vec3 centre = Vec3::Zero();
+  for (NodeId v : nodes) centre += mesh.point(v);
+  centre /= static_cast<double>(nodes.size());
+  Vec3 n;
+  if constexpr (M::dim == 2) {
+    const Vec3 e = mesh.point(nodes[1]) - mesh.point(nodes[0]);
+    n = Vec3(e.y(), -e.x(), 0);
+  } else {
+    n = (mesh.point(nodes[2]) - mesh.point(nodes[0]))
+            .cross(mesh.point(nodes[3]) - mesh.point(nodes[1]));
+  }
+  return {centre, n.normalized()};
+}
+
+template <class M>
+bool shares_a_node(const M& mesh, CellId c, const std::vector<NodeId>& nodes) {
+  for (NodeId v : mesh.cell_nodes(c))
+    if (std::find(nodes.begin(), nodes.end(), v) != nodes.end()) return true;
+  return false;
+}
+
+// A cell centre (or its mirror image) taking part in a gradient fit, with the cell whose
+// fractions it carries.
+struct Sample {
+  Vec3 x;
+  CellId cell;
+};
+
+// The fit's samples: the node neighbours of c, and for each boundary face of c the mirror
+// images of c and of the samples touching that face (the ghost layer a symmetric boundary
+// would have). Without them a boundary cell's one-sided neighbourhood tilts the gradient of
+// fractions that do not vary along the boundary.
+template <class M>
+std::vector<Sample> gradient_samples(const M& mesh, CellId c) {
+  std::vector<Sample> out{{cell_centroid(mesh, c), c}};
+  for (CellId o : node_neighbour_cells(mesh, c)) out.push_back({cell_centroid(mesh, o), o});
+  for (int lf = 0; lf < M::faces_per_cell; ++lf) {
+    if (mesh.neighbour(c, lf).valid()) continue;
+    const auto fn = mesh.face_nodes(c, lf);
+    const std::vector<NodeId> face(fn.begin(), fn.end());
+    const auto [q, m] = face_plane(mesh, c, lf);
+    const std::size_t n0 = out.size();
+    for (std::size_t i = 0; i < n0; ++i)
+      if (shares_a_node(mesh, out[i].cell, face))
+        out.push_back({out[i].x - 2 * (out[i].x - q).dot(m) * m, out[i].cell});
+  }
+  return out;
+}
+
 Vec3 project_on_plane(const Vec3& p, const Vec3& x, const Vec3& n) {
   return p - (p - x).dot(n) * n;
 }
@@ -57,31 +114,54 @@ NodeConstraint interface_directions(const Eigen::Matrix3d& tensor, double share)
   return out;
 }
 
+// Where, along the segment p0 p1 of the centres of the face's cells, the volume-consistent
+// plane of normal f.normal crosses: in each mixed cell of the face the plane leaving the
+// cell's share of m0 on the m0 side (f.normal points into m0); the mean over the mixed
+// cells. nullopt when no plane could be bracketed or the plane is parallel to the segment.
+template <class M>
+std::optional<double> volume_crossing(const M& mesh, const Fractions& fractions,
+                                      const InterfaceFace& f, int m0, const Vec3& p0,
+                                      const Vec3& p1) {
+  const double along = f.normal.dot(p1 - p0);
+  if (std::abs(along) < 1e-9 * (p1 - p0).norm()) return std::nullopt;
+  double sum = 0;
+  int count = 0;
+  for (CellId c : {f.c0, f.c1}) {
+    const std::optional<double> s = plane_offset_for_share(mesh, c, f.normal, fractions(c, m0));
+    if (!s) continue;
+    sum += (*s - f.normal.dot(p0)) / along;
+    ++count;
+  }
+  if (count == 0) return std::nullopt;
+  return sum / count;
+}
+
 }  // namespace
 
 template <class M>
 std::vector<Vec3> fraction_gradients(const M& mesh, const Fractions& fractions, CellId c,
                                      double eps_factor) {
-  const std::vector<CellId> around = node_neighbour_cells(mesh, c);
-  const Vec3 xc = cell_centroid(mesh, c);
+  const std::vector<Sample> samples = gradient_samples(mesh, c);
+  const Vec3 xc = samples.front().x;
   std::vector<Vec3> d;
-  d.reserve(around.size());
+  d.reserve(samples.size());
   double mean_d2 = 0;
-  for (CellId o : around) {
-    d.push_back(cell_centroid(mesh, o) - xc);
+  for (std::size_t i = 1; i < samples.size(); ++i) {
+    d.push_back(samples[i].x - xc);
     if constexpr (M::dim == 2) d.back().z() = 0;
     mean_d2 += d.back().squaredNorm();
   }
   const int nm = fractions.n_materials();
   std::vector<Vec3> g(static_cast<std::size_t>(nm), Vec3::Zero());
-  if (around.empty()) return g;
-  const double eps = eps_factor * mean_d2 / static_cast<double>(around.size());
+  if (d.empty()) return g;
+  const double eps = eps_factor * mean_d2 / static_cast<double>(d.size());
   Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
   Eigen::MatrixXd b = Eigen::MatrixXd::Zero(3, nm);
-  for (std::size_t i = 0; i < around.size(); ++i) {
+  for (std::size_t i = 0; i < d.size(); ++i) {
     const double w = 1.0 / (d[i].squaredNorm() + eps);
+    const CellId o = samples[i + 1].cell;
     a += w * d[i] * d[i].transpose();
-    for (int m = 0; m < nm; ++m) b.col(m) += w * (fractions(around[i], m) - fractions(c, m)) * d[i];
+    for (int m = 0; m < nm; ++m) b.col(m) += w * (fractions(o, m) - fractions(c, m)) * d[i];
   }
   // A direction with no spread (2D: z; a single layer of hexes) gets a zero component.
   const double reg = 1e-12 * std::max(a.trace(), 1e-300);
@@ -121,6 +201,7 @@ Targets compute_targets(const M& mesh, const Fractions& fractions,
     grad[k] = fraction_gradients(mesh, fractions, cells[k], options.eps_factor);
   });
 
+  const auto is_mixed = [&](CellId c, int m) { return fractions(c, m) > 0 && fractions(c, m) < 1; };
   for_each_item(out.faces.size(), [&](std::int64_t i) {
     InterfaceFace& f = out.faces[static_cast<std::size_t>(i)];
     const int m0 = material[f.c0], m1 = material[f.c1];
@@ -131,13 +212,20 @@ Targets compute_targets(const M& mesh, const Fractions& fractions,
                    : (fractions(f.c0, m1) - fractions(f.c0, m0)) / d;
     t = std::clamp(t, 0.0, 1.0);
     const Vec3 p0 = cell_centroid(mesh, f.c0), p1 = cell_centroid(mesh, f.c1);
-    f.point = p0 + t * (p1 - p0);
     const auto& g0 = grad[static_cast<std::size_t>(slot[f.c0])];
     const auto& g1 = grad[static_cast<std::size_t>(slot[f.c1])];
     const auto u0 = static_cast<std::size_t>(m0), u1 = static_cast<std::size_t>(m1);
     const Vec3 n = (1 - t) * (g0[u0] - g0[u1]) + t * (g1[u0] - g1[u1]);
-    // Flat fractions give no gradient: fall back on the direction across the face.
-    f.normal = n.norm() > 1e-12 ? Vec3(n.normalized()) : Vec3((p1 - p0).normalized());
+    // Flat fractions give no gradient: fall back on the direction across the face (towards
+    // m0, as the gradient of f_m0 - f_m1 points).
+    f.normal = n.norm() > 1e-12 ? Vec3(n.normalized()) : Vec3((p0 - p1).normalized());
+    if (!is_mixed(f.c0, m0) && !is_mixed(f.c1, m0)) {
+      // Both cells pure: the interface is the face itself.
+      std::tie(f.point, f.normal) = face_plane(mesh, f.c0, f.lf);
+      return;
+    }
+    const std::optional<double> tv = volume_crossing(mesh, fractions, f, m0, p0, p1);
+    f.point = p0 + std::clamp(tv.value_or(t), 0.0, 1.0) * (p1 - p0);
   });
 
   const auto nn = static_cast<std::size_t>(mesh.n_nodes());

@@ -4,12 +4,21 @@
 // Interface nodes are the nodes whose cells carry more than one material. For every cell
 // next to an interface face, each material's volume-fraction gradient is fitted by weighted
 // least squares over the node-neighbour cells (w = 1 / (d^2 + eps), eps = mean(d^2) / 100,
-// d the distance between cell centres). On the face between c0 (material m0) and c1 (m1) the
-// two fractions cross at t = (f_m1(c0) - f_m0(c0)) / d along the segment of the cell centres,
-// with d = f_m0(c1) - f_m0(c0) - f_m1(c1) + f_m1(c0) (t = 1/2 when |d| is tiny, clamped to
-// [0, 1]); the interface plane there has the normal g_m0(t) - g_m1(t) of the interpolated
-// gradients. A node's target is the mean of its projections onto the planes (2D: lines) of
-// its interface faces, then projected onto the domain boundary when the node is on it.
+// d the distance between cell centres); a cell on the domain boundary also sees the mirror
+// images, across its boundary faces, of itself and of the neighbours touching those faces
+// (a symmetric ghost layer, so that fractions constant along the boundary give no tilt).
+// On the face between c0 (material m0) and c1 (m1) the interface normal is g_m0(t) - g_m1(t)
+// of the gradients interpolated at t = (f_m1(c0) - f_m0(c0)) / d, with
+// d = f_m0(c1) - f_m0(c0) - f_m1(c1) + f_m1(c0) (t = 1/2 when |d| is tiny, clamped to
+// [0, 1]). The crossing point X is volume-consistent (PLIC-like, mesh/plane_cut.h): in each
+// of the two cells whose share of m0 is strictly inside (0, 1), the plane of that normal
+// leaving the share of m0 on the m0 side; X is the mean of where those planes cut the
+// segment of the cell centres (clamped to the segment). A planar interface is thus found
+// exactly. When both cells are pure the interface is the face itself (its centre and
+// normal). When no plane can be found (degenerate cell, plane parallel to the segment) X
+// falls back on the linear crossing at t of the reference formula (DESIGN 4.3).
+// A node's target is the mean of its projections onto the planes (2D: lines) of its
+// interface faces, then projected onto the domain boundary when the node is on it.
 #pragma once
 
 #include <vector>
