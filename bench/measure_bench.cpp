@@ -1,8 +1,10 @@
 // Times the exact imprint (measure/imprint.h) on the paper's 420x180x3 grid: the grid onto
-// itself, and a jittered copy (non-planar faces, ~8-27 candidates per cell) onto it, with
-// 1 and 2 threads. Prints wall and CPU seconds and checks that the volumes add up.
+// itself, a jittered copy (non-planar faces, ~8-27 candidates per cell) onto it, and the
+// jittered copy onto a second jittered copy (input cells not convex either, the case of a
+// jittered reference grid), with 1 and 2 threads. Prints wall and CPU seconds and the
+// volumes, which must add up.
 //
-//   hexadapt_measure_bench [NX NY NZ]
+//   hexadapt_measure_bench [NX NY NZ [THREADS]]
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -48,21 +50,27 @@ void run(const char* name, const io::MeshData& in, const io::MeshData& out, int 
 
 int main(int argc, char** argv) {
   int n[3] = {420, 180, 3};
-  if (argc == 4)
+  std::vector<int> threads = {1, 2};
+  if (argc >= 4)
     for (int a = 0; a < 3; ++a) n[a] = std::atoi(argv[a + 1]);
+  if (argc == 5) threads = {std::atoi(argv[4])};
   const io::MeshData grid = io::from_mesh(make_hex_grid(n[0], n[1], n[2]));
-  io::MeshData jittered = grid;
   std::mt19937 rng(7);
-  std::uniform_real_distribution<double> u(-0.25, 0.25);
-  for (Vec3& p : jittered.points) {
-    // Interior nodes only, so both meshes cover the same box.
-    for (int a = 0; a < 3; ++a)
-      if (p[a] > 0 && p[a] < n[a]) p[a] += u(rng);
-  }
+  auto jitter = [&](io::MeshData d) {
+    std::uniform_real_distribution<double> u(-0.25, 0.25);
+    for (Vec3& p : d.points) {
+      // Interior nodes only, so both meshes cover the same box.
+      for (int a = 0; a < 3; ++a)
+        if (p[a] > 0 && p[a] < n[a]) p[a] += u(rng);
+    }
+    return d;
+  };
+  const io::MeshData jittered = jitter(grid), jittered2 = jitter(grid);
   std::printf("%d x %d x %d hexes (%d cells)\n", n[0], n[1], n[2], grid.n_cells());
-  for (int threads : {1, 2}) {
-    run("grid onto itself", grid, grid, threads);
-    run("jittered onto grid", grid, jittered, threads);
+  for (int t : threads) {
+    run("grid onto itself", grid, grid, t);
+    run("jittered onto grid", grid, jittered, t);
+    run("jittered onto jittered", jittered2, jittered, t);
   }
   return 0;
 }

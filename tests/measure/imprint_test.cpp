@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <array>
 #include <cmath>
 #include <random>
 
@@ -251,6 +252,57 @@ TEST(Imprint, MatchesMonteCarlo3D) {
   transform(out, rotation(0.5, Vec3(1, 2, 2)) * shear, Vec3(0.7, 0.2, -0.3));
   expect_monte_carlo(in, out, in_parallelepiped,
                      Eigen::AlignedBox3d(Vec3(-0.2, -0.2, -0.2), Vec3(4.2, 4.2, 3.2)), 40000);
+}
+
+// A unit cube whose top corner (1, 1, 1), node 7, moves to height h: the top face folds
+// along its diagonal from node 4 (the lowest id) to node 7, a valley for h < 1 and a ridge
+// for h > 1. Its volume is the mean height of the two top triangles, (2 + h) / 3. Layers
+// of an output column of height 0.5 each (materials 0, 1, 2) get exact known shares.
+void expect_folded_cube(double h, const std::array<double, 3>& want) {
+  io::MeshData in = hexes(1, 1, 1);
+  ASSERT_EQ(in.points[7], Vec3(1, 1, 1));
+  in.points[7].z() = h;
+  const io::MeshData out = io::from_mesh(make_hex_grid(1, 1, 3, Vec3::Zero(), Vec3(1, 1, 0.5)));
+  const Imprint im = imprint(in, out, {0, 1, 2}, 3);
+  EXPECT_NEAR(im.cell_volume[0], (2 + h) / 3, 1e-14);
+  for (int m = 0; m < 3; ++m)
+    EXPECT_NEAR(im.at(0, m), want[static_cast<std::size_t>(m)], 1e-14) << "material " << m;
+}
+
+TEST(Imprint, CubeWithAValleyFace) { expect_folded_cube(0.8, {0.5, 2.8 / 3 - 0.5, 0}); }
+
+TEST(Imprint, CubeWithARidgeFace) { expect_folded_cube(1.2, {0.5, 0.5, 3.2 / 3 - 1}); }
+
+// An output that is the input moved by a tiny amount (as smoothing leaves an adapted mesh):
+// nearly coincident faces everywhere, where clipping must neither lose nor double volume.
+TEST(Imprint, NearlyCoincidentMeshesConserveVolume) {
+  const io::MeshData flat = hexes(6, 5, 4);
+  io::MeshData in = flat;
+  jitter(in, 0.2, 21);
+  io::MeshData out = in;
+  std::mt19937 rng(22);
+  std::uniform_real_distribution<double> u(-1e-3, 1e-3);
+  for (std::size_t i = 0; i < flat.points.size(); ++i) {
+    const Vec3& p = flat.points[i];
+    const bool boundary = p.x() == 0 || p.x() == 6 || p.y() == 0 || p.y() == 5 || p.z() == 0 ||
+                          p.z() == 4;
+    if (boundary)
+      in.points[i] = out.points[i] = p;  // both cover the same box
+    else if (rng() % 2)
+      out.points[i] += Vec3(u(rng), u(rng), u(rng));
+  }
+  const std::vector<int> m = pattern(out.n_cells(), 3);
+  const Imprint im = imprint(in, out, m, 3);
+  for (int k = 0; k < 3; ++k) {
+    double s = 0;
+    for (index_t c = 0; c < in.n_cells(); ++c) s += im.at(c, k);
+    EXPECT_NEAR(s, im.output_volume[static_cast<std::size_t>(k)], 1e-12) << "material " << k;
+  }
+  for (index_t c = 0; c < in.n_cells(); ++c) {
+    double s = 0;
+    for (int k = 0; k < 3; ++k) s += im.at(c, k);
+    EXPECT_NEAR(s, im.cell_volume[static_cast<std::size_t>(c)], 1e-12) << "cell " << c;
+  }
 }
 
 // --- Known answer ----------------------------------------------------------------------

@@ -131,6 +131,7 @@ int refuse_bad_input(const cli::CommonOptions& common, Json& report, const Phase
   for (CellId c : bad) cells.push_back(c.value());
   report["bad_input_cells"] = cells;
   report["threshold_met"] = false;
+  report["exit_code"] = cli::target_missed;
   report["times"] = cli::phase_times_json(times);
   cli::write_report(common, report);
   return cli::target_missed;
@@ -191,8 +192,9 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   for (auto& kv : cli::provenance(app)) out.metadata.push_back(kv);
   io::write_mesh(out, common.output);
   times.emplace_back("write", clock.seconds());
-  report["times"] = cli::phase_times_json(times);
   report["threshold_met"] = below == 0;
+  report["exit_code"] = below == 0 ? cli::ok : cli::target_missed;
+  report["times"] = cli::phase_times_json(times);
   cli::write_report(common, report);
   if (below > 0) {
     log_warning(std::to_string(below) + " output cells have a scaled Jacobian below " +

@@ -155,6 +155,7 @@ int run_assign(const CLI::App& app, Options& o) {
   report["assign"] = result_json(r, fr);
   if (r.correction.failure)
     report["assign"]["failure"] = failure_json(*r.correction.failure, fractions);
+  report["exit_code"] = r.correction.failure ? cli::target_missed : cli::ok;
   report["times"] = cli::phase_times_json(times);
   cli::write_report(o.common, report);
   if (r.correction.failure) {

@@ -59,6 +59,18 @@ int run(CLI::App& app, int argc, char** argv, CommonOptions& options,
 /// nullptr otherwise.
 Progress terminal_progress(const CommonOptions& options);
 
+/// Runs `f` as one phase: shown on the bar (empty, then full when `f` returns; for phases
+/// that report no progress of their own) and timed into `times` under `name`.
+template <class F>
+auto timed_phase(PhaseTimes& times, const Progress& bar, const std::string& name, F&& f) {
+  const Timer timer;
+  if (bar) bar(name, 0.0);
+  auto result = f();
+  times.emplace_back(name, timer.seconds());
+  if (bar) bar(name, 1.0);
+  return result;
+}
+
 /// Key/value provenance of this run (tool, version, command line) for output metadata.
 std::vector<std::pair<std::string, std::string>> provenance(const CLI::App& app);
 

@@ -61,6 +61,7 @@ hx::cli::Json report(const CLI::App& app, const gen::GenerateOptions& o,
                    {"floor", o.jitter_floor},
                    {"moved_nodes", r.jitter.moved_nodes},
                    {"damped_nodes", r.jitter.damped_nodes}};
+  j["exit_code"] = hx::cli::ok;
   j["times"] = hx::cli::phase_times_json(r.times);
   return j;
 }

@@ -124,12 +124,12 @@ struct DiscrepancyRun {
 
 // Imprints the mesh's materials onto the reference grid; material m of the mesh is the
 // reference's m-th fraction array.
-DiscrepancyRun measure_discrepancy(const Args& a, const io::MeshData& mesh, PhaseTimes& times) {
-  Timer timer;
+DiscrepancyRun measure_discrepancy(const Args& a, const io::MeshData& mesh, const Progress& bar,
+                                   PhaseTimes& times) {
   DiscrepancyRun run;
-  run.reference = io::read_mesh(a.reference, a.in.read_options());
-  times.emplace_back("read_reference", timer.seconds());
-  timer.restart();
+  run.reference = cli::timed_phase(times, bar, "read_reference", [&] {
+    return io::read_mesh(a.reference, a.in.read_options());
+  });
   Fractions fractions;
   try {
     fractions = extract_fractions(run.reference, a.in.fractions, nullptr, a.reference);
@@ -142,14 +142,19 @@ DiscrepancyRun measure_discrepancy(const Args& a, const io::MeshData& mesh, Phas
   } catch (const InputError& e) {
     rethrow_with_file(e, a.input);
   }
+  Timer timer;
   Imprint im;
+  ImprintOptions options;
+  options.progress = bar;
   try {
-    im = imprint(run.reference, mesh, materials, fractions.n_materials());
+    im = imprint(run.reference, mesh, materials, fractions.n_materials(), options);
   } catch (const InputError& e) {
     rethrow_with_file(e, a.input);
   }
-  run.report = discrepancy(im, fractions);
   times.emplace_back("imprint", timer.seconds());
+  timer.restart();
+  run.report = discrepancy(im, fractions);
+  times.emplace_back("discrepancy", timer.seconds());
   return run;
 }
 
@@ -178,13 +183,15 @@ int measure(const CLI::App& app, const cli::CommonOptions& common, const Args& a
     cli::refuse_overwrite(a.discrepancy_field, {a.input, a.reference});
   }
   PhaseTimes times;
+  const Progress bar = cli::terminal_progress(common);
+  const io::MeshData data = cli::timed_phase(
+      times, bar, "read", [&] { return io::read_mesh(a.input, a.in.read_options()); });
   Timer timer;
-  const io::MeshData data = io::read_mesh(a.input, a.in.read_options());
-  times.emplace_back("read", timer.seconds());
-  timer.restart();
   QualityReport report;
   try {
-    report = quality_report(data, a.report);
+    QualityReportOptions options = a.report;
+    options.progress = bar;
+    report = quality_report(data, options);
   } catch (const InputError& e) {
     rethrow_with_file(e, a.input);
   }
@@ -194,19 +201,19 @@ int measure(const CLI::App& app, const cli::CommonOptions& common, const Args& a
   } catch (const InputError& e) {
     rethrow_with_file(e, a.input);
   }
-  times.emplace_back("measure", timer.seconds());
+  times.emplace_back("quality", timer.seconds());
   DiscrepancyRun disc;
-  if (!a.reference.empty()) disc = measure_discrepancy(a, data, times);
-  if (!a.discrepancy_field.empty()) {
-    timer.restart();
-    write_discrepancy_field(app, disc, a.discrepancy_field);
-    times.emplace_back("write_discrepancy", timer.seconds());
-  }
-  if (!a.quality_field.empty()) {
-    timer.restart();
-    write_quality_field(app, data, a.quality_field);
-    times.emplace_back("write", timer.seconds());
-  }
+  if (!a.reference.empty()) disc = measure_discrepancy(a, data, bar, times);
+  if (!a.discrepancy_field.empty())
+    cli::timed_phase(times, bar, "write_discrepancy", [&] {
+      write_discrepancy_field(app, disc, a.discrepancy_field);
+      return 0;
+    });
+  if (!a.quality_field.empty())
+    cli::timed_phase(times, bar, "write_quality", [&] {
+      write_quality_field(app, data, a.quality_field);
+      return 0;
+    });
   const int code = report.passed() ? cli::ok : cli::target_missed;
   cli::Json json = cli::report_header(app);
   json["input"] = a.input;
@@ -222,7 +229,7 @@ int measure(const CLI::App& app, const cli::CommonOptions& common, const Args& a
     json[key] = value;
   }
   json["exit_code"] = code;
-  json["timings"] = cli::phase_times_json(times);
+  json["times"] = cli::phase_times_json(times);
   cli::write_report(common, json);
   if (!common.quiet) {
     print_summary(a.input, report);

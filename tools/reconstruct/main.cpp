@@ -23,6 +23,7 @@ struct Options {
   cli::InputOptions in;
   bool majority = false;
   reconstruct::ReconstructOptions lib;
+  double read_seconds = 0;  ///< reading the input, for the report
 };
 
 /// "123", "500M", "8G", "1.5T" (powers of 1000) -> bytes.
@@ -146,7 +147,8 @@ int run(const M& mesh, const Fractions& f, const std::vector<int>& assignment,
       for (const auto& p : reconstruct::write_model_openmesh(rec.model, f.names(), stem, o.model_format))
         files.push_back(p);
   }
-  PhaseTimes times = r.times;
+  PhaseTimes times{{"read", o.read_seconds}};
+  times.insert(times.end(), r.times.begin(), r.times.end());
   times.emplace_back("write", t.seconds());
   const double total = r.discrepancy + r.unpixelated_discrepancy;
   log_info("method " + o.method + " (" + r.status + "): edgecut " + std::to_string(r.edgecut) +
@@ -177,6 +179,7 @@ int run(const M& mesh, const Fractions& f, const std::vector<int>& assignment,
                   {"corners", rec.model.corners.size()}};
   }
   j["files"] = files;
+  j["exit_code"] = cli::ok;
   j["times"] = cli::phase_times_json(times);
   cli::write_report(common, j);
   return cli::ok;
@@ -224,10 +227,12 @@ int main(int argc, char** argv) {
     lib.mip.seed = lib.annealing.seed;
     if (!o.model.empty()) cli::refuse_overwrite(model_stem(o.model) + ".vtk", {o.input});
     cli::refuse_overwrite(common.output, {o.input});
+    const Timer read;
     io::MeshData data = io::read_mesh(o.input, o.in.read_options());
     const Fractions f = extract_fractions(data, o.in.fractions, nullptr, o.input);
     const std::vector<int> assignment = read_assignment(data, f, o);
     const AnyMesh mesh = io::to_mesh(data);
+    o.read_seconds = read.seconds();
     return std::visit([&](const auto& m) { return run(m, f, assignment, o, common, app); },
                       mesh);
   });

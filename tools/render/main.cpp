@@ -105,33 +105,34 @@ int render_mesh(const CLI::App& app, const cli::CommonOptions& common, Args& a) 
   cli::refuse_overwrite(common.output, {a.input, a.overlay});
   render::PictureOptions options = picture_options(a);
   PhaseTimes times;
-  Timer timer;
+  const Progress bar = cli::terminal_progress(common);
   io::ReadOptions read;
   read.plane = a.plane;
-  const io::MeshData data = io::read_mesh(a.input, read);
   io::MeshData overlay;
-  if (!a.overlay.empty()) overlay = io::read_mesh(a.overlay, read);
-  times.emplace_back("read", timer.seconds());
-  timer.restart();
+  const io::MeshData data = cli::timed_phase(times, bar, "read", [&] {
+    if (!a.overlay.empty()) overlay = io::read_mesh(a.overlay, read);
+    return io::read_mesh(a.input, read);
+  });
 
   render::SliceOptions slice;
   slice.z = a.z_given ? a.z : mid_height(data);
   std::string field = a.color;
   if (field == "auto") field = auto_field(data);
-  render::Picture pic;
-  pic.polygons = render::slice_cells(data, slice);
-  pic.colors = render::color_cells(data, field);
-  if (!a.overlay.empty()) pic.overlay = render::slice_cells(overlay, slice);
-  if (a.targets) {
-    pic.arrows = render::target_arrows(data, pic.polygons, slice);
-    if (!data.find_point_array("target"))
-      log_warning(a.input + ": no `target` point array; --targets draws nothing");
-  }
+  const render::Picture pic = cli::timed_phase(times, bar, "slice", [&] {
+    render::Picture p;
+    p.polygons = render::slice_cells(data, slice);
+    p.colors = render::color_cells(data, field);
+    if (!a.overlay.empty()) p.overlay = render::slice_cells(overlay, slice);
+    if (a.targets) p.arrows = render::target_arrows(data, p.polygons, slice);
+    return p;
+  });
+  if (a.targets && !data.find_point_array("target"))
+    log_warning(a.input + ": no `target` point array; --targets draws nothing");
   if (pic.polygons.empty() && data.dim == 3)
     log_warning(a.input + ": no cell crosses the plane z = " + std::to_string(slice.z));
   options.title = a.title.empty() ? default_title(a, data, field, slice.z) : a.title;
-  times.emplace_back("slice", timer.seconds());
-  timer.restart();
+  options.progress = bar;
+  Timer timer;
   render::write_png(pic, options, common.output);
   times.emplace_back("draw", timer.seconds());
 
@@ -146,7 +147,7 @@ int render_mesh(const CLI::App& app, const cli::CommonOptions& common, Args& a) 
   json["arrows_drawn"] = pic.arrows.size();
   if (pic.colors.has_bar) json["range"] = {pic.colors.bar_min, pic.colors.bar_max};
   json["exit_code"] = cli::ok;
-  json["timings"] = cli::phase_times_json(times);
+  json["times"] = cli::phase_times_json(times);
   cli::write_report(common, json);
   if (!common.quiet)
     std::printf("%s: %zu cells drawn (%s) -> %s\n", a.input.c_str(), pic.polygons.size(),

@@ -68,9 +68,15 @@ double mean_cell_pixels(const View& v, const Window& w, const Picture& pic) {
   return n ? v.scale * std::sqrt(area / n) : 0;
 }
 
-void draw_cells(cairo_t* cr, const View& v, const Window& w, const Picture& pic, bool edges) {
+void draw_cells(cairo_t* cr, const View& v, const Window& w, const Picture& pic, bool edges,
+                const Progress& progress) {
   const double edge_width = 0.6;
-  for (const Polygon& p : pic.polygons) {
+  const std::size_t n = pic.polygons.size(), step = std::max<std::size_t>(4096, n / 100);
+  for (std::size_t i = 0; i < n; ++i) {
+    // Filling dominates the drawing: the cells are 0.9 of the phase, the PNG the rest.
+    if (progress && i % step == 0 && i > 0)
+      progress("draw", 0.9 * static_cast<double>(i) / static_cast<double>(n));
+    const Polygon& p = pic.polygons[i];
     if (!visible(p, w)) continue;
     trace(cr, v, p);
     set_rgb(cr, pic.colors.cell[static_cast<std::size_t>(p.cell)]);
@@ -211,7 +217,7 @@ void write_png(const Picture& pic, const PictureOptions& options, const std::str
   // Cells of a few pixels only: their edges would hide the colours.
   const bool edges = options.edges == Edges::on ||
                      (options.edges == Edges::automatic && mean_cell_pixels(v, shown, pic) >= 5);
-  draw_cells(cr, v, shown, pic, edges);
+  draw_cells(cr, v, shown, pic, edges, options.progress);
   draw_overlay(cr, v, shown, pic);
   draw_arrows(cr, v, pic);
   cairo_restore(cr);
@@ -221,6 +227,7 @@ void write_png(const Picture& pic, const PictureOptions& options, const std::str
   if (!pic.colors.legend.empty()) draw_legend(cr, panel_left, top + 4, pic.colors);
   if (pic.colors.has_bar) draw_bar(cr, panel_left, top + 10, std::min(plot_h, 320.0), pic.colors);
 
+  if (options.progress) options.progress("draw", 0.9);
   cairo_surface_flush(surface);
   const cairo_status_t drawn = cairo_status(cr);
   cairo_destroy(cr);
@@ -234,6 +241,7 @@ void write_png(const Picture& pic, const PictureOptions& options, const std::str
   if (written != CAIRO_STATUS_SUCCESS)
     throw IoError(path + ": cannot write PNG: " + cairo_status_to_string(written));
   out.commit();
+  if (options.progress) options.progress("draw", 1.0);
 }
 
 }  // namespace hexadapt::render

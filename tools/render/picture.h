@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "coloring.h"
+#include "hexadapt/core/log.h"
 #include "slice.h"
 
 namespace hexadapt::render {
@@ -24,6 +25,7 @@ struct PictureOptions {
   std::optional<Window> window;   ///< nullopt: the bounding box of the polygons
   Edges edges = Edges::automatic;  ///< draw the cells' edges
   std::string title;              ///< one line above the picture (empty: none)
+  Progress progress;              ///< phase "draw", over the cells then the PNG; may be null
 };
 
 struct Picture {

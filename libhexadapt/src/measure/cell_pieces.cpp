@@ -8,6 +8,9 @@ namespace hexadapt::clip {
 
 namespace {
 
+// The largest notch, relative to the cell, still taken out of the hull (hull_and_notches).
+constexpr double max_notch_share = 0.05;
+
 Vec3 node(const io::MeshData& d, index_t cell, int k) {
   return d.points[d.cells[static_cast<std::size_t>(cell) *
                               static_cast<std::size_t>(d.nodes_per_cell()) +
@@ -64,33 +67,62 @@ std::vector<Plane> tet_planes(const Tet& t) {
           plane_through(p[0], p[3], p[2]), plane_through(p[1], p[2], p[3])};
 }
 
+Piece tet_piece(const Tet& t, double sign) {
+  Piece piece{tet_planes(t), {}, sign};
+  for (const Vec3& p : t.p) piece.box.extend(p);
+  return piece;
+}
+
+// The hull H of the hex with every folded face bent outwards, as planes, and the notches
+// that H has in excess: where a face's chosen diagonal makes a valley, the face's other
+// diagonal makes a ridge, and the two differ by the tetrahedron of the face's corners.
+void hull_and_notches(const io::MeshData& d, index_t cell, double eps, std::vector<Plane>& planes,
+                      std::vector<Tet>& notches) {
+  for (int f = 0; f < 6; ++f) {
+    const auto tri = face_triangles(d, cell, f);
+    const Vec3 q0 = node(d, cell, tri[0][0]), q1 = node(d, cell, tri[0][1]),
+               q2 = node(d, cell, tri[0][2]), q3 = node(d, cell, tri[1][2]);
+    const Plane a = plane_through(q0, q1, q2);
+    const double fold = a.side(q3);
+    if (std::abs(fold) <= eps) {
+      planes.push_back(a);  // planar
+    } else if (fold < 0) {
+      planes.push_back(a);  // a ridge: both triangles bound H
+      planes.push_back(plane_through(q0, q2, q3));
+    } else {
+      planes.push_back(plane_through(q1, q2, q3));  // a valley: H takes the other diagonal
+      planes.push_back(plane_through(q1, q3, q0));
+      Tet notch{{q0, q1, q2, q3}, 1.0};
+      if (tet_volume(q0, q1, q2, q3) < 0) std::swap(notch.p[2], notch.p[3]);
+      notches.push_back(notch);
+    }
+  }
+}
+
 std::vector<Piece> hex_pieces(const io::MeshData& d, index_t cell, double tol, double* volume) {
   const std::array<Tet, 12> tets = hex_tets(d, cell);
   *volume = 0;
   for (const Tet& t : tets) *volume += t.sign * tet_volume(t.p[0], t.p[1], t.p[2], t.p[3]);
   const double eps = tol * diagonal(d, cell);
   std::vector<Plane> planes;
-  for (int f = 0; f < 6; ++f) {
-    const auto tri = face_triangles(d, cell, f);
-    const Plane a =
-        plane_through(node(d, cell, tri[0][0]), node(d, cell, tri[0][1]), node(d, cell, tri[0][2]));
-    planes.push_back(a);
-    // One plane for a planar face; two for a folded one.
-    if (std::abs(a.side(node(d, cell, tri[1][2]))) > eps)
-      planes.push_back(plane_through(node(d, cell, tri[1][0]), node(d, cell, tri[1][1]),
-                                     node(d, cell, tri[1][2])));
-  }
+  std::vector<Tet> notches;
+  hull_and_notches(d, cell, eps, planes, notches);
   const bool degenerate =
       std::any_of(planes.begin(), planes.end(), [](const Plane& p) { return p.n.isZero(); });
-  if (!degenerate && *volume > 0 && contains_corners(d, cell, planes, eps))
-    return {{planes, cell_box(d, cell)}};
+  // Thin notches stay near their face, apart from each other: then the cell is exactly H
+  // minus the notches (pieces of sign -1). Otherwise the cell is its 12 tets.
+  double notch_volume = 0;
+  for (const Tet& t : notches)
+    notch_volume = std::max(notch_volume, tet_volume(t.p[0], t.p[1], t.p[2], t.p[3]));
+  if (!degenerate && *volume > 0 && notch_volume <= max_notch_share * *volume &&
+      contains_corners(d, cell, planes, eps)) {
+    std::vector<Piece> pieces{{planes, cell_box(d, cell), 1.0}};
+    for (const Tet& t : notches) pieces.push_back(tet_piece(t, -1.0));
+    return pieces;
+  }
   std::vector<Piece> pieces;
   for (const Tet& t : tets)
-    if (t.sign > 0) {
-      Eigen::AlignedBox3d box;
-      for (const Vec3& p : t.p) box.extend(p);
-      pieces.push_back({tet_planes(t), box});
-    }
+    if (t.sign > 0) pieces.push_back(tet_piece(t, 1.0));
   return pieces;
 }
 
@@ -124,13 +156,13 @@ std::vector<Piece> quad_pieces(const io::MeshData& d, index_t cell, double tol, 
     if (cross_z(q[static_cast<std::size_t>((i + 3) % 4)], q[static_cast<std::size_t>(i)],
                 q[static_cast<std::size_t>((i + 1) % 4)]) < -eps)
       reflex = i;
-  if (reflex < 0) return {{polygon_planes(q), cell_box(d, cell)}};
+  if (reflex < 0) return {{polygon_planes(q), cell_box(d, cell), 1.0}};
   // A dart: split along the diagonal through the reflex corner.
   auto at = [&](int k) { return q[static_cast<std::size_t>((reflex + k) % 4)]; };
   auto piece = [](const Polygon& t) {
     Eigen::AlignedBox3d box;
     for (const Vec3& p : t) box.extend(p);
-    return Piece{polygon_planes(t), box};
+    return Piece{polygon_planes(t), box, 1.0};
   };
   return {piece({at(0), at(1), at(2)}), piece({at(0), at(2), at(3)})};
 }

@@ -3,7 +3,7 @@
 #include <string>
 
 #include "hexadapt/core/error.h"
-#include "hexadapt/core/parallel.h"
+#include "hexadapt/core/parallel_progress.h"
 #include "hexadapt/io/mesh_data.h"
 #include "hexadapt/measure/quality_report.h"
 #include "hexadapt/quality/scaled_jacobian.h"
@@ -22,7 +22,8 @@ std::array<Vec3, N> corners(const io::MeshData& data, std::size_t c) {
 
 }  // namespace
 
-CellQualities cell_qualities(const io::MeshData& data) {
+CellQualities cell_qualities(const io::MeshData& data, const Progress& progress, double from,
+                             double to) {
   const index_t n_points = data.n_points();
   for (std::size_t i = 0; i < data.cells.size(); ++i) {
     const NodeId n = data.cells[i];
@@ -36,7 +37,7 @@ CellQualities cell_qualities(const io::MeshData& data) {
   const auto n = static_cast<std::size_t>(data.n_cells());
   q.scaled_jacobian.resize(n);
   q.shape.resize(n);
-  parallel_for(data.n_cells(), [&](std::int64_t i) {
+  auto one_cell = [&](std::int64_t i) {
     const auto c = static_cast<std::size_t>(i);
     if (data.dim == 3) {
       const auto p = corners<8>(data, c);
@@ -47,7 +48,8 @@ CellQualities cell_qualities(const io::MeshData& data) {
       q.scaled_jacobian[c] = quad_scaled_jacobian(p);
       q.shape[c] = quad_shape(p);
     }
-  });
+  };
+  parallel_for_progress(data.n_cells(), progress, "quality", one_cell, from, to);
   return q;
 }
 

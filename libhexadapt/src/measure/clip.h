@@ -49,6 +49,12 @@ double polyhedron_volume(const Polyhedron& p);
 /// `scratch` is working memory.
 void clip_polyhedron(Polyhedron& p, const Plane& plane, Polyhedron& scratch);
 
+/// Volume of the part of tetrahedron a, b, c, d where every plane's side is <= 0, clipped
+/// as a list of tetrahedra into `volume`. Returns false (volume untouched) when the list
+/// would grow too long; the caller then clips the tetrahedron as a polyhedron.
+bool clipped_tet_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
+                        const Plane* const* planes, std::size_t n_planes, double* volume);
+
 /// The plane through a, b, c with normal (b - a) x (c - a); a zero normal for collinear points.
 Plane plane_through(const Vec3& a, const Vec3& b, const Vec3& c);
 

@@ -45,6 +45,14 @@ double polyhedron_volume(const Polyhedron& p) {
 
 namespace {
 
+// A value in [0, 4) increasing with the angle of (x, y), like atan2 but without its cost.
+double pseudo_angle(double x, double y) {
+  const double l1 = std::abs(x) + std::abs(y);
+  if (l1 == 0) return 0;
+  const double p = y / l1;  // in [-1, 1]
+  return x >= 0 ? (y >= 0 ? p : 4 + p) : 2 - p;
+}
+
 // Orders points [first, end) of a convex planar polygon counter-clockwise around n.
 void order_cap(std::vector<Vec3>& pts, std::size_t first, const Vec3& n) {
   const std::size_t m = pts.size() - first;
@@ -57,7 +65,7 @@ void order_cap(std::vector<Vec3>& pts, std::size_t first, const Vec3& n) {
   keyed.resize(m);
   for (std::size_t i = 0; i < m; ++i) {
     const Vec3 d = pts[first + i] - c;
-    keyed[i] = {std::atan2(d.dot(v), d.dot(u)), pts[first + i]};
+    keyed[i] = {pseudo_angle(d.dot(u), d.dot(v)), pts[first + i]};
   }
   std::sort(keyed.begin(), keyed.begin() + static_cast<std::ptrdiff_t>(m),
             [](const auto& x, const auto& y) { return x.first < y.first; });

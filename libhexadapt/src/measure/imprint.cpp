@@ -7,7 +7,7 @@
 #include "cell_bins.h"
 #include "cell_pieces.h"
 #include "hexadapt/core/error.h"
-#include "hexadapt/core/parallel.h"
+#include "hexadapt/core/parallel_progress.h"
 #include "hexadapt/io/mesh_data.h"
 
 namespace hexadapt {
@@ -41,6 +41,8 @@ double tet_in_piece(const clip::Tet& t, const Eigen::AlignedBox3d& box, const cl
     if (in < 4) cuts[n_cuts++] = &pl;
   }
   if (n_cuts == 0) return clip::tet_volume(t.p[0], t.p[1], t.p[2], t.p[3]);
+  double v = 0;
+  if (clip::clipped_tet_volume(t.p[0], t.p[1], t.p[2], t.p[3], cuts.data(), n_cuts, &v)) return v;
   // Per-thread buffers: clipping allocates nothing once they have grown.
   thread_local clip::Polyhedron poly, scratch;
   clip::tetrahedron(t.p[0], t.p[1], t.p[2], t.p[3], poly);
@@ -57,7 +59,7 @@ double hex_in_pieces(const io::MeshData& output, index_t o, const Pieces& pieces
     Eigen::AlignedBox3d box;
     for (const Vec3& p : t.p) box.extend(p);
     double in = 0;
-    for (const auto& piece : pieces) in += tet_in_piece(t, box, piece);
+    for (const auto& piece : pieces) in += piece.sign * tet_in_piece(t, box, piece);
     v += t.sign * in;
   }
   return v;
@@ -75,7 +77,7 @@ double quad_in_pieces(const io::MeshData& output, index_t o, const Pieces& piece
       std::swap(a, b);
       if (a.size() < 3) break;
     }
-    v += clip::polygon_area(a);
+    v += piece.sign * clip::polygon_area(a);
   }
   return sign * v;
 }
@@ -133,7 +135,7 @@ Imprint imprint(const io::MeshData& input, const io::MeshData& output,
     r.output_volume[static_cast<std::size_t>(material[static_cast<std::size_t>(o)])] +=
         output_cell_volume(output, o);
   const CellBins bins(output, options.bins_per_cell);
-  parallel_for(r.n_cells, [&](std::int64_t i) {
+  parallel_for_progress(r.n_cells, options.progress, "imprint", [&](std::int64_t i) {
     const auto c = static_cast<index_t>(i);
     double volume = 0;
     const Pieces pieces = clip::convex_pieces(input, c, options.convex_tolerance, &volume);

@@ -58,7 +58,9 @@ void run_check(const io::MeshData& data, const QualityReportOptions& options,
 QualityReport quality_report(const io::MeshData& data, const QualityReportOptions& options) {
   if (options.bins < 1) throw OptionError("the histogram needs at least one bin");
   if (data.n_cells() == 0) throw InputError("", "", "the mesh has no quad or hex cells");
-  const CellQualities q = cell_qualities(data);
+  const Progress& progress = options.progress;
+  // Shares of the phase, about what each part costs on a hex mesh.
+  const CellQualities q = cell_qualities(data, progress, 0.0, 0.5);
   QualityReport r;
   r.dim = data.dim;
   r.n_cells = data.n_cells();
@@ -73,7 +75,9 @@ QualityReport quality_report(const io::MeshData& data, const QualityReportOption
       r.first_below.push_back({CellId(c), q.scaled_jacobian[c], centroid(data, c)});
   }
   run_check(data, options, r);
+  if (progress) progress("quality", 0.9);
   r.purity = measure_purity(data, options);
+  if (progress) progress("quality", 1.0);
   return r;
 }
 

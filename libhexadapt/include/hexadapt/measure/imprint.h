@@ -4,16 +4,20 @@
 // output cells of material m, exact up to rounding: quads are clipped as polygons, hexes
 // are split into 12 tetrahedra (faces split along the diagonal through their lowest global
 // node id, so that neighbours agree) and clipped by the half-spaces of the input cell's
-// convex pieces. Candidate output cells come from a uniform grid of bins over their
-// bounding boxes. The loop runs in parallel over input cells, each writing its own slots,
-// so the result does not depend on the thread count. Cost: linear in the cells when the
-// two meshes have similar cell sizes.
+// convex pieces (a hex whose folded faces make valleys: its convex hull minus a thin
+// tetrahedron per valley face, counted negatively; see cell_pieces.h). A tet is clipped as a
+// list of tets (a plane leaves a tet or a prism, split into three), with no cap to build.
+// Candidate output cells come from a uniform grid of bins over their bounding boxes. The
+// loop runs in parallel over input cells, each writing its own slots, so the result does not
+// depend on the thread count. Cost: linear in the cells when the two meshes have similar
+// cell sizes.
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "hexadapt/core/ids.h"
+#include "hexadapt/core/log.h"
 
 namespace hexadapt {
 namespace io {
@@ -26,6 +30,9 @@ struct ImprintOptions {
   double convex_tolerance = 1e-12;
   /// Bins of the candidate grid per output cell (about).
   double bins_per_cell = 1.0;
+  /// Called with phase "imprint" and the fraction of input cells done, ending at 1;
+  /// nullptr: silent.
+  Progress progress;
 };
 
 struct Imprint {

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "hexadapt/core/ids.h"
+#include "hexadapt/core/log.h"
 #include "hexadapt/mesh/cell_complex.h"
 #include "hexadapt/mesh/mesh_check.h"
 
@@ -34,6 +35,9 @@ struct QualityReportOptions {
   std::string material_array = "material";  ///< cell array of material indices
   std::string fraction_prefix = "vf_";      ///< cell arrays of volume fractions
   double pure_tolerance = 1e-6;  ///< a cell is mixed when its largest fraction is below 1 - this
+  /// Called with phase "quality" and the fraction done (cell qualities, then the mesh check,
+  /// then purity), ending at 1; nullptr: silent.
+  Progress progress;
 };
 
 /// Per-cell quality values, indexed by cell.
@@ -82,8 +86,10 @@ struct QualityReport {
 };
 
 /// Scaled Jacobian and shape of every cell of the data (no kernel needed). Throws
-/// InputError when a cell refers to a missing node.
-CellQualities cell_qualities(const io::MeshData& data);
+/// InputError when a cell refers to a missing node. `progress` (phase "quality") goes from
+/// `from` to `to` over the cells.
+CellQualities cell_qualities(const io::MeshData& data, const Progress& progress = nullptr,
+                             double from = 0.0, double to = 1.0);
 
 /// Measures a mesh given as file data. Throws InputError (no cells, a cell referring to a
 /// missing node, a material array with several components) and OptionError (bins < 1).
