@@ -49,6 +49,21 @@ IdVector<NodeId, char> loop_movable(const Targets& targets) {
   return movable;
 }
 
+// The smoothing's unsettled nodes plus every node sharing a cell with a node that moved
+// since `before` (sorted, unique): what a smoothing of all nodes would try and possibly move.
+template <class M>
+std::vector<NodeId> nodes_around_moves(const M& mesh, const std::vector<Vec3>& before,
+                                       std::vector<NodeId> nodes) {
+  for (NodeId v : id_range<NodeId>(mesh.n_nodes())) {
+    if (mesh.point(v) == before[v.idx()]) continue;
+    for (CellId c : mesh.node_cells(v))
+      for (NodeId o : mesh.cell_nodes(c)) nodes.push_back(o);
+  }
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
+
 // Controlled moves alternating with quality-preserving smoothing until a round no longer
 // brings the nodes closer to their targets by more than the tolerance; keeps the best round.
 template <class M>
@@ -59,10 +74,15 @@ int move_smooth_loop(M& mesh, const Targets& targets, MoveResult move,
   std::vector<Vec3> best_points = points_of(mesh);
   const IdVector<NodeId, char> movable = loop_movable(targets);
   int loops = 0;
+  std::vector<NodeId> start;  // what the next smoothing must try; the first tries all
+  bool first = true;
   while (loops < options.max_loops && best > 0) {
     ++loops;
-    smooth(mesh, movable, sliding, options.smooth);
+    const SmoothResult s = smooth(mesh, movable, sliding, options.smooth, first ? nullptr : &start);
+    first = false;
+    const std::vector<Vec3> before = points_of(mesh);
     move = controlled_move(mesh, targets, mo);
+    start = nodes_around_moves(mesh, before, s.unsettled);
     const bool better = move.dist < best;
     if (better) {
       best_points = points_of(mesh);

@@ -13,17 +13,25 @@ namespace {
 // One node: the largest halving of the Laplacian displacement that does not lower the local
 // minimum quality. Returns the gain in local minimum (0 when the node did not move). `q`: the
 // local minimum, on entry and on return (each evaluation costs the cells around the node).
+// A pull shorter than min_move edge lengths is not made: the Laplacian relaxation would
+// otherwise creep over the whole mesh for ever, moving every node by ever smaller amounts.
 template <class M>
 double laplacian_step(M& mesh, NodeId n, const std::vector<NodeId>& around,
-                      const NodeConstraint& constraint, int halvings, double& q) {
+                      const NodeConstraint& constraint, const SmoothOptions& options,
+                      double& q) {
   Vec3 mean = Vec3::Zero();
-  for (NodeId o : around) mean += mesh.point(o);
-  mean /= static_cast<double>(around.size());
+  double len = 0;
   const Vec3 p = mesh.point(n);
+  for (NodeId o : around) {
+    mean += mesh.point(o);
+    len += (mesh.point(o) - p).norm();
+  }
+  mean /= static_cast<double>(around.size());
+  len /= static_cast<double>(around.size());
   Vec3 d = constraint.project(mean - p);
-  if (!(d.norm() > 0)) return 0;
+  if (!(d.norm() > options.min_move * len)) return 0;
   const double before = q;
-  for (int h = 0; h <= halvings; ++h, d *= 0.5) {
+  for (int h = 0; h <= options.halvings; ++h, d *= 0.5) {
     mesh.set_point(n, p + d);
     const double after = min_quality_around(mesh, n);
     if (after >= before) {
@@ -76,7 +84,7 @@ double smooth_node(M& mesh, NodeId n, const NodeConstraint& constraint,
   const std::vector<NodeId> around = edge_neighbours(mesh, n);
   if (around.empty()) return 0;
   double q = min_quality_around(mesh, n);
-  double gain = laplacian_step(mesh, n, around, constraint, options.halvings, q);
+  double gain = laplacian_step(mesh, n, around, constraint, options, q);
   if (q < options.optimise_below) {
     const double more = pattern_search(mesh, n, around, constraint, options.search_levels, q);
     if (more > 0) gain = std::max(gain, 0.0) + more;
@@ -89,41 +97,59 @@ double smooth_node(M& mesh, NodeId n, const NodeConstraint& constraint,
 template <class M>
 SmoothResult smooth(M& mesh, const IdVector<NodeId, char>& movable,
                     const IdVector<NodeId, NodeConstraint>& constraint,
-                    const SmoothOptions& options) {
+                    const SmoothOptions& options, const std::vector<NodeId>* start) {
   const auto nn = static_cast<std::size_t>(mesh.n_nodes());
   if (movable.size() != nn || constraint.size() != nn)
     throw InternalError("smoothing: movable flags or constraints do not match the mesh");
-  if (options.iterations < 0 || options.halvings < 0)
-    throw OptionError("smoothing iterations and halvings must be >= 0");
+  if (options.iterations < 0 || options.halvings < 0 || !(options.min_move >= 0))
+    throw OptionError("smoothing iterations, halvings and min_move must be >= 0");
   std::vector<NodeId> nodes;
   for (NodeId n : id_range<NodeId>(mesh.n_nodes()))
     if (movable[n] && !constraint[n].fixed(M::dim)) nodes.push_back(n);
   const auto sets = independent_node_sets(mesh, nodes);
+  // A node whose cells' nodes did not move since it was last tried would make the same
+  // choice again (no move): only the nodes around a move are tried again.
+  std::vector<char> active(nn, 0);
+  for (NodeId n : start ? *start : nodes) active[n.idx()] = movable[n];
   SmoothResult out;
   while (out.iterations < options.iterations) {
     ++out.iterations;
     double best_gain = 0;
     for (const auto& set : sets) {
-      std::vector<double> gain(set.size(), -1);
-      for_each_item(set.size(), [&](std::int64_t i) {
-        const NodeId n = set[static_cast<std::size_t>(i)];
-        gain[static_cast<std::size_t>(i)] = smooth_node(mesh, n, constraint[n], options);
+      std::vector<NodeId> todo;
+      for (NodeId n : set)
+        if (active[n.idx()]) todo.push_back(n);
+      std::vector<double> gain(todo.size(), -1);
+      std::vector<char> moved(todo.size(), 0);
+      for_each_item(todo.size(), [&](std::int64_t i) {
+        const auto k = static_cast<std::size_t>(i);
+        const NodeId n = todo[k];
+        const Vec3 before = mesh.point(n);
+        gain[k] = smooth_node(mesh, n, constraint[n], options);
+        moved[k] = mesh.point(n) != before;
       });
-      for (double g : gain) {
-        if (g >= 0) ++out.moves;
-        best_gain = std::max(best_gain, g);
+      for (std::size_t k = 0; k < todo.size(); ++k) {
+        out.moves += moved[k];
+        best_gain = std::max(best_gain, gain[k]);
+        active[todo[k].idx()] = 0;
       }
+      for (std::size_t k = 0; k < todo.size(); ++k)
+        if (moved[k])
+          for (CellId c : mesh.node_cells(todo[k]))
+            for (NodeId o : mesh.cell_nodes(c)) active[o.idx()] = movable[o] != 0;
     }
     if (best_gain <= options.min_gain) break;
   }
+  for (NodeId n : nodes)
+    if (active[n.idx()]) out.unsettled.push_back(n);
   return out;
 }
 
 template SmoothResult smooth<QuadMesh>(QuadMesh&, const IdVector<NodeId, char>&,
                                        const IdVector<NodeId, NodeConstraint>&,
-                                       const SmoothOptions&);
+                                       const SmoothOptions&, const std::vector<NodeId>*);
 template SmoothResult smooth<HexMesh>(HexMesh&, const IdVector<NodeId, char>&,
                                       const IdVector<NodeId, NodeConstraint>&,
-                                      const SmoothOptions&);
+                                      const SmoothOptions&, const std::vector<NodeId>*);
 
 }  // namespace hexadapt

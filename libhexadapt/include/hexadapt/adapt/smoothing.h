@@ -11,6 +11,8 @@
 // count.
 #pragma once
 
+#include <vector>
+
 #include "hexadapt/adapt/node_constraint.h"
 #include "hexadapt/core/ids.h"
 
@@ -24,17 +26,27 @@ struct SmoothOptions {
   /// Nodes whose local minimum stays below this also try the pattern search.
   double optimise_below = 0.5;
   int search_levels = 4;  ///< pattern-search step halvings (first step: 1/4 edge length)
+  /// Laplacian pulls shorter than this many mean edge lengths around the node are not made.
+  double min_move = 1e-2;
 };
 
 struct SmoothResult {
   int iterations = 0;  ///< sweeps done
   index_t moves = 0;   ///< node moves made over all sweeps
+  /// Nodes that a further sweep would try again: those that moved, or whose cells' nodes
+  /// moved, after they were last tried. Every other movable node would stay where it is.
+  std::vector<NodeId> unsettled;
 };
 
-/// Smooths the nodes with movable[n] != 0, keeping each within constraint[n].
+/// Smooths the nodes with movable[n] != 0, keeping each within constraint[n]. A node is tried
+/// again only after a node of its cells moved, which gives the result of full sweeps at the
+/// cost of the region still changing. `start`, when given, lists the nodes to try first (the
+/// other movable nodes are taken as settled: a previous call's `unsettled` plus the nodes
+/// around what moved since gives the result of a call on every node).
 template <class M>
 SmoothResult smooth(M& mesh, const IdVector<NodeId, char>& movable,
                     const IdVector<NodeId, NodeConstraint>& constraint,
-                    const SmoothOptions& options = {});
+                    const SmoothOptions& options = {},
+                    const std::vector<NodeId>* start = nullptr);
 
 }  // namespace hexadapt
