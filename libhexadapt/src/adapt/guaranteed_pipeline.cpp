@@ -75,11 +75,10 @@ int move_smooth_loop(M& mesh, const Targets& targets, MoveResult move,
   const IdVector<NodeId, char> movable = loop_movable(targets);
   int loops = 0;
   std::vector<NodeId> start;  // what the next smoothing must try; the first tries all
-  bool first = true;
   while (loops < options.max_loops && best > 0) {
     ++loops;
-    const SmoothResult s = smooth(mesh, movable, sliding, options.smooth, first ? nullptr : &start);
-    first = false;
+    const SmoothResult s =
+        smooth(mesh, movable, sliding, options.smooth, loops == 1 ? nullptr : &start);
     const std::vector<Vec3> before = points_of(mesh);
     move = controlled_move(mesh, targets, mo);
     start = nodes_around_moves(mesh, before, s.unsettled);
