@@ -10,6 +10,14 @@ namespace hexadapt {
 
 namespace {
 
+// Mean distance from n to its edge neighbours: the node's length scale.
+template <class M>
+double mean_edge_length(const M& mesh, NodeId n, const std::vector<NodeId>& around) {
+  double len = 0;
+  for (NodeId o : around) len += (mesh.point(o) - mesh.point(n)).norm();
+  return len / static_cast<double>(around.size());
+}
+
 // One node: the largest halving of the Laplacian displacement that does not lower the local
 // minimum quality. Returns the gain in local minimum (0 when the node did not move). `q`: the
 // local minimum, on entry and on return (each evaluation costs the cells around the node).
@@ -20,16 +28,11 @@ double laplacian_step(M& mesh, NodeId n, const std::vector<NodeId>& around,
                       const NodeConstraint& constraint, const SmoothOptions& options,
                       double& q) {
   Vec3 mean = Vec3::Zero();
-  double len = 0;
-  const Vec3 p = mesh.point(n);
-  for (NodeId o : around) {
-    mean += mesh.point(o);
-    len += (mesh.point(o) - p).norm();
-  }
+  for (NodeId o : around) mean += mesh.point(o);
   mean /= static_cast<double>(around.size());
-  len /= static_cast<double>(around.size());
+  const Vec3 p = mesh.point(n);
   Vec3 d = constraint.project(mean - p);
-  if (!(d.norm() > options.min_move * len)) return 0;
+  if (!(d.norm() > options.min_move * mean_edge_length(mesh, n, around))) return 0;
   const double before = q;
   for (int h = 0; h <= options.halvings; ++h, d *= 0.5) {
     mesh.set_point(n, p + d);
@@ -48,9 +51,7 @@ double laplacian_step(M& mesh, NodeId n, const std::vector<NodeId>& around,
 template <class M>
 double pattern_search(M& mesh, NodeId n, const std::vector<NodeId>& around,
                       const NodeConstraint& constraint, int levels, double& q) {
-  double len = 0;
-  for (NodeId o : around) len += (mesh.point(o) - mesh.point(n)).norm();
-  double h = 0.25 * len / static_cast<double>(around.size());
+  double h = 0.25 * mean_edge_length(mesh, n, around);
   const double start = q;
   double best = start;
   for (int level = 0; level < levels; ++level, h *= 0.5) {
