@@ -1,0 +1,64 @@
+#include "hexadapt/quality/cell_size.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "hexadapt/quality/scaled_jacobian.h"
+
+namespace hexadapt {
+
+namespace {
+
+// Below this share of the longest edge an edge counts as collapsed (as in scaled_jacobian).
+constexpr double degenerate_share = 1e-13;
+
+template <std::size_t N, std::size_t E>
+EdgeLengths edge_lengths(const std::array<Vec3, N>& p,
+                         const std::array<std::array<int, 2>, E>& edges) {
+  EdgeLengths out;
+  out.min = std::numeric_limits<double>::infinity();
+  for (const auto& e : edges) {
+    const double len = (p[static_cast<std::size_t>(e[1])] - p[static_cast<std::size_t>(e[0])]).norm();
+    if (!std::isfinite(len)) return EdgeLengths{};
+    out.min = std::min(out.min, len);
+    out.max = std::max(out.max, len);
+    out.mean += len;
+  }
+  out.mean /= static_cast<double>(E);
+  if (!(out.min > degenerate_share * out.max)) out.min = 0;
+  return out;
+}
+
+}  // namespace
+
+double EdgeLengths::ratio() const {
+  return min > 0 ? max / min : std::numeric_limits<double>::infinity();
+}
+
+EdgeLengths hex_edge_lengths(const std::array<Vec3, 8>& p) {
+  return edge_lengths(p, ref_hex::edges);
+}
+
+EdgeLengths quad_edge_lengths(const std::array<Vec3, 4>& p) {
+  return edge_lengths(p, ref_quad::face_nodes);
+}
+
+double hex_time_step_length(const std::array<Vec3, 8>& p) {
+  const double volume = hex_volume(p);
+  double largest = 0;
+  for (const auto& f : ref_hex::face_nodes) {
+    const Vec3 d1 = p[static_cast<std::size_t>(f[2])] - p[static_cast<std::size_t>(f[0])];
+    const Vec3 d2 = p[static_cast<std::size_t>(f[3])] - p[static_cast<std::size_t>(f[1])];
+    largest = std::max(largest, 0.5 * d1.cross(d2).norm());
+  }
+  return volume > 0 && largest > 0 && std::isfinite(volume) ? volume / largest : 0.0;
+}
+
+double quad_time_step_length(const std::array<Vec3, 4>& p) {
+  const double area = quad_area(p);
+  const double longest = quad_edge_lengths(p).max;
+  return area > 0 && longest > 0 && std::isfinite(area) ? area / longest : 0.0;
+}
+
+}  // namespace hexadapt

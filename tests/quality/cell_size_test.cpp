@@ -1,0 +1,69 @@
+// Known answers for the size metrics: edge lengths, edge ratio and time-step length of
+// boxes, a collapsed cell and an inverted one.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "hexadapt/quality/cell_size.h"
+
+namespace hexadapt {
+namespace {
+
+std::array<Vec3, 8> box(double a, double b, double c) {
+  std::array<Vec3, 8> p;
+  for (std::size_t v = 0; v < 8; ++v)
+    p[v] = Vec3(a * double(v & 1u), b * double((v >> 1) & 1u), c * double((v >> 2) & 1u));
+  return p;
+}
+
+std::array<Vec3, 4> rectangle(double a, double b) {
+  return {Vec3(0, 0, 0), Vec3(a, 0, 0), Vec3(a, b, 0), Vec3(0, b, 0)};
+}
+
+TEST(CellSize, HexBoxEdgesAndTimeStep) {
+  const EdgeLengths e = hex_edge_lengths(box(1, 2, 4));
+  EXPECT_DOUBLE_EQ(e.min, 1);
+  EXPECT_DOUBLE_EQ(e.max, 4);
+  EXPECT_DOUBLE_EQ(e.mean, 7.0 / 3.0);  // four edges of each length
+  EXPECT_DOUBLE_EQ(e.ratio(), 4);
+  // volume 8, largest face 2 x 4 = 8: the thinnest direction, 1.
+  EXPECT_DOUBLE_EQ(hex_time_step_length(box(1, 2, 4)), 1);
+  EXPECT_DOUBLE_EQ(hex_time_step_length(box(3, 3, 3)), 3);
+}
+
+TEST(CellSize, QuadRectangleEdgesAndTimeStep) {
+  const EdgeLengths e = quad_edge_lengths(rectangle(2, 0.5));
+  EXPECT_DOUBLE_EQ(e.min, 0.5);
+  EXPECT_DOUBLE_EQ(e.max, 2);
+  EXPECT_DOUBLE_EQ(e.mean, 1.25);
+  EXPECT_DOUBLE_EQ(e.ratio(), 4);
+  EXPECT_DOUBLE_EQ(quad_time_step_length(rectangle(2, 0.5)), 0.5);  // area 1 / edge 2
+}
+
+TEST(CellSize, ScalesWithTheUnit) {
+  const double s = 1e-4;
+  EXPECT_DOUBLE_EQ(hex_edge_lengths(box(s, 2 * s, 4 * s)).ratio(), 4);
+  EXPECT_NEAR(hex_time_step_length(box(s, 2 * s, 4 * s)), s, 1e-15 * s);
+  EXPECT_NEAR(quad_time_step_length(rectangle(2e6, 5e5)), 5e5, 1e-9);
+}
+
+// A quad whose edge 1-2 has collapsed to a point: the shortest edge is 0, the ratio infinite.
+TEST(CellSize, CollapsedEdgeIsZeroNeverSmallAndFinite) {
+  const std::array<Vec3, 4> p = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+  EXPECT_EQ(quad_edge_lengths(p).min, 0);
+  EXPECT_EQ(quad_edge_lengths(p).ratio(), std::numeric_limits<double>::infinity());
+}
+
+TEST(CellSize, InvertedOrNanCellsHaveNoTimeStep) {
+  std::array<Vec3, 4> cw = rectangle(1, 1);
+  std::swap(cw[1], cw[3]);
+  EXPECT_EQ(quad_time_step_length(cw), 0);
+  std::array<Vec3, 8> h = box(1, 1, 1);
+  h[7].x() = std::nan("");
+  EXPECT_EQ(hex_time_step_length(h), 0);
+  EXPECT_EQ(hex_edge_lengths(h).min, 0);
+}
+
+}  // namespace
+}  // namespace hexadapt
