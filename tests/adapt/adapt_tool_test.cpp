@@ -117,5 +117,44 @@ TEST(AdaptTool, ExitCodes) {
   fs::remove_all(dir);
 }
 
+// The size criterion: the output carries each cell's local input size, and a --min-edge the
+// input grid itself breaks stops the guaranteed method with exit 3, naming the criterion,
+// the cell and by how much.
+TEST(AdaptTool, SizeCriterionThatCannotBeMet) {
+  const fs::path dir = scratch("min_edge");
+  std::vector<double> xs, ys;
+  for (int i = 0; i <= 12; ++i) xs.push_back(2.0 * i);  // 2 x 1 cells: mean edge 1.5
+  for (int j = 0; j <= 12; ++j) ys.push_back(1.0 * j);
+  const QuadMesh grid = make_quad_grid(xs, ys);
+  write_assigned(
+      grid, [](const Vec3& p) { return (p - Vec3(12.3, 6.1, 0)).norm() < 4.2; }, 2, 8,
+      dir / "in.vtu");
+  const std::string in = (dir / "in.vtu").string(), out = (dir / "out.vtu").string();
+  const std::string json = (dir / "r.json").string();
+  ASSERT_EQ(run_tool(in + " -o " + out + " --json " + json + " -q"), 0);
+  const io::MeshData d = io::read_mesh(out);
+  const io::DataArray* local = d.find_cell_array("local_size");
+  ASSERT_NE(local, nullptr);
+  for (double h : local->values) EXPECT_DOUBLE_EQ(h, 1.5);
+  nlohmann::json report = nlohmann::json::parse(std::ifstream(json));
+  EXPECT_EQ(report["min_edge"], 0.1);
+  EXPECT_EQ(report["result"]["cells_below_min_edge"], 0);
+  EXPECT_GE(report["result"]["min_edge_ratio"].get<double>(), 0.1);
+
+  // Shortest edge 1 < 0.8 x 1.5 in every input cell.
+  const fs::path bad = dir / "bad.vtu";
+  EXPECT_EQ(run_tool(in + " -o " + bad.string() + " --min-edge 0.8 --json " + json + " -q"), 3);
+  EXPECT_FALSE(fs::exists(bad));
+  report = nlohmann::json::parse(std::ifstream(json));
+  EXPECT_EQ(report["bad_input_cells"].size(), static_cast<std::size_t>(grid.n_cells()));
+  const auto& worst = report["result"]["failures"];
+  ASSERT_EQ(worst.size(), 10u);
+  EXPECT_EQ(worst[0]["failed"], nlohmann::json::array({"min_edge"}));
+  EXPECT_DOUBLE_EQ(worst[0]["shortest_edge"].get<double>(), 1.0);
+  EXPECT_NEAR(worst[0]["min_edge_length"].get<double>(), 1.2, 1e-12);
+  EXPECT_EQ(report["exit_code"], 3);
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace hexadapt

@@ -1,6 +1,7 @@
 // hexadapt-adapt: moves the interface nodes of an assigned grid onto the material interfaces
 // and pillows, giving a conformal mesh whose cells each hold one material (paper sec. 5).
 #include <algorithm>
+#include <cstdio>
 #include <string>
 #include <variant>
 #include <vector>
@@ -28,12 +29,50 @@ struct Args {
   int cavity_range = 3;
   cli::InputOptions in;
   double threshold = 0.3;
+  double min_edge = 0.1;
   int steps = 16;
   int smooth_iterations = 20;
 };
 
+// The cells failing a criterion: which one, where, and by how much.
+Json failures_json(const std::vector<CellFailure>& failures, double threshold) {
+  Json out = Json::array();
+  for (const CellFailure& f : failures) {
+    Json criteria = Json::array();
+    if (f.shape_failed(threshold)) criteria.push_back("threshold");
+    if (f.size_failed()) criteria.push_back("min_edge");
+    out.push_back({{"cell", f.cell.value()},
+                   {"failed", criteria},
+                   {"scaled_jacobian", f.scaled_jacobian},
+                   {"shortest_edge", f.shortest_edge},
+                   {"min_edge_length", f.min_length},
+                   {"centroid", {f.centroid.x(), f.centroid.y(), f.centroid.z()}}});
+  }
+  return out;
+}
+
+// One line per failing cell, worst first, for stderr.
+std::string failures_text(const std::vector<CellFailure>& failures, double threshold) {
+  std::string text;
+  for (const CellFailure& f : failures) {
+    char line[256];
+    if (f.size_failed())
+      std::snprintf(line, sizeof line,
+                    "\n  cell %d at (%.6g, %.6g, %.6g): shortest edge %.6g < %.6g (min_edge)",
+                    f.cell.value(), f.centroid.x(), f.centroid.y(), f.centroid.z(),
+                    f.shortest_edge, f.min_length);
+    else
+      std::snprintf(line, sizeof line,
+                    "\n  cell %d at (%.6g, %.6g, %.6g): scaled Jacobian %.6g < %.6g (threshold)",
+                    f.cell.value(), f.centroid.x(), f.centroid.y(), f.centroid.z(),
+                    f.scaled_jacobian, threshold);
+    text += line;
+  }
+  return text;
+}
+
 template <class M>
-Json result_json(const AdaptResult<M>& r, index_t input_cells) {
+Json result_json(const AdaptResult<M>& r, index_t input_cells, double threshold) {
   Json j;
   j["cells_in"] = input_cells;
   j["cells"] = r.mesh.n_cells();
@@ -45,6 +84,9 @@ Json result_json(const AdaptResult<M>& r, index_t input_cells) {
   j["min_quality"] = r.min_quality;
   j["cells_below_threshold"] = r.n_below_threshold;
   j["cells_inverted"] = r.n_inverted;
+  j["cells_below_min_edge"] = r.n_below_min_edge;
+  j["min_edge_ratio"] = r.min_edge_ratio;
+  j["failures"] = failures_json(r.failures, threshold);
   j["dist_ratio"] = r.dist_init > 0 ? r.dist_final / r.dist_init : 0.0;
   j["input_min_quality"] = r.input_min_quality;
   j["input_cells_below_threshold"] = r.bad_input_cells.size();
@@ -117,16 +159,15 @@ reconstruct::ModelFile read_model(const std::string& path, const Fractions& frac
   return m;
 }
 
-// The guaranteed method does not start from cells already below the threshold: name them.
+// The guaranteed method does not start from cells already failing a criterion: name them.
 int refuse_bad_input(const cli::CommonOptions& common, Json& report, const PhaseTimes& times,
-                     const std::vector<CellId>& bad, double threshold) {
-  std::string list;
-  for (std::size_t i = 0; i < bad.size() && i < 10; ++i)
-    list += (i ? ", " : "") + std::to_string(bad[i].value());
-  if (bad.size() > 10) list += ", ...";
-  log_warning(std::to_string(bad.size()) + " input cells have a scaled Jacobian below " +
-              std::to_string(threshold) + " (cells " + list +
-              "); nothing written (--allow-bad-input runs anyway, without the guarantee)");
+                     const std::vector<CellId>& bad, const std::vector<CellFailure>& worst,
+                     double threshold) {
+  log_warning(std::to_string(bad.size()) + " input cells fail the threshold " +
+              std::to_string(threshold) + " or the size criterion (--min-edge); the worst:" +
+              failures_text(worst, threshold) +
+              "\nnothing written (--allow-bad-input runs anyway, without the guarantee; "
+              "--min-edge 0 drops the size criterion)");
   Json cells = Json::array();
   for (CellId c : bad) cells.push_back(c.value());
   report["bad_input_cells"] = cells;
@@ -142,6 +183,7 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   AdaptOptions options;
   options.method = parse_adapt_method(args.method);
   options.threshold = args.threshold;
+  options.min_edge = args.min_edge;
   options.steps = args.steps;
   options.smooth.iterations = args.smooth_iterations;
   options.progress = cli::terminal_progress(common);
@@ -168,27 +210,31 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   report["output"] = common.output;
   report["method"] = to_string(options.method);
   report["threshold"] = options.threshold;
+  report["min_edge"] = options.min_edge;
   report["steps"] = options.steps;
   report["materials"] = fractions.names();
   report["model"] = args.model;
   io::MeshData out;
   index_t below = 0;
   std::vector<CellId> bad_input;
+  std::vector<CellFailure> worst;
   bool stopped = false;
   std::visit(
       [&](const auto& mesh) {
         const auto r =
             adapt(mesh, fractions, material, options, args.model.empty() ? nullptr : &model.model);
         bad_input = r.bad_input_cells;
+        worst = r.failures;
         stopped = r.stopped_bad_input;
         for (const auto& s : r.steps) times.emplace_back(s.name, s.seconds);
-        report["result"] = result_json(r, mesh.n_cells());
-        below = r.n_below_threshold;
+        report["result"] = result_json(r, mesh.n_cells(), options.threshold);
+        below = r.n_below_threshold + r.n_below_min_edge;
         out = adapt_mesh_data(r, fractions.names());
       },
       grid);
   clock.restart();
-  if (stopped) return refuse_bad_input(common, report, times, bad_input, options.threshold);
+  if (stopped)
+    return refuse_bad_input(common, report, times, bad_input, worst, options.threshold);
   for (auto& kv : cli::provenance(app)) out.metadata.push_back(kv);
   io::write_mesh(out, common.output);
   times.emplace_back("write", clock.seconds());
@@ -197,9 +243,10 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   report["times"] = cli::phase_times_json(times);
   cli::write_report(common, report);
   if (below > 0) {
-    log_warning(std::to_string(below) + " output cells have a scaled Jacobian below " +
-                std::to_string(options.threshold) + " (the " + args.method +
-                " method gives no guarantee); mesh written to " + common.output);
+    log_warning(std::to_string(below) + " output cells fail the threshold " +
+                std::to_string(options.threshold) + " or the size criterion (the " + args.method +
+                " method gives no guarantee); the worst:" +
+                failures_text(worst, options.threshold) + "\nmesh written to " + common.output);
     return cli::target_missed;
   }
   return cli::ok;
@@ -212,9 +259,10 @@ int main(int argc, char** argv) {
       "Adapts an assigned grid (material + vf_* cell arrays, from hexadapt-assign) into a\n"
       "conformal mesh whose cells each hold one material, with point arrays 'target' and\n"
       "'distance', 'blocked' (1: the node stopped short of its target because of the quality of\n"
-      "the cells around it; 2: and no cavity around it could be pillowed). Exit code 3 when\n"
-      "output cells end below --threshold, or when input cells are below it (guaranteed\n"
-      "method, nothing written).",
+      "the cells around it; 2: and no cavity around it could be pillowed), and the cell array\n"
+      "'local_size'. Exit code 3 when output cells end below --threshold or with an edge\n"
+      "shorter than --min-edge x local_size, or when input cells do (guaranteed method,\n"
+      "nothing written).",
       "hexadapt-adapt"};
   Args args;
   cli::CommonOptions common;
@@ -227,6 +275,11 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--threshold", args.threshold, "Minimum scaled Jacobian S_q")
       ->check(CLI::Range(-1.0, 1.0))
+      ->capture_default_str();
+  app.add_option("--min-edge", args.min_edge,
+                 "Shortest edge every cell keeps, relative to its local input size (the mean "
+                 "edge length of the input cell it comes from); 0: no size criterion")
+      ->check(CLI::Range(0.0, 0.999999))
       ->capture_default_str();
   app.add_option("--steps", args.steps, "Steps of the controlled move")
       ->check(CLI::PositiveNumber)

@@ -23,6 +23,8 @@ namespace {
 void check_options(const AdaptOptions& o) {
   if (!(o.threshold > -1 && o.threshold <= 1))
     throw OptionError("threshold must be in (-1, 1], got " + std::to_string(o.threshold));
+  if (!(o.min_edge >= 0 && o.min_edge < 1))
+    throw OptionError("min_edge must be in [0, 1), got " + std::to_string(o.min_edge));
   if (o.steps < 1) throw OptionError("steps must be at least 1, got " + std::to_string(o.steps));
   if (o.max_loops < 0)
     throw OptionError("max_loops must be >= 0, got " + std::to_string(o.max_loops));

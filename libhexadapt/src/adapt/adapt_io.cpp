@@ -36,6 +36,8 @@ io::MeshData adapt_mesh_data(const AdaptResult<M>& result,
   io::DataArray material{"material", 1, io::ScalarType::int32, {}};
   for (int m : result.material) material.values.push_back(m);
   data.set_cell_array(std::move(material));
+  io::DataArray local_size{"local_size", 1, io::ScalarType::float64, result.local_size.raw()};
+  data.set_cell_array(std::move(local_size));
   io::DataArray target{"target", 3, io::ScalarType::float64, {}};
   io::DataArray distance{"distance", 1, io::ScalarType::float64, {}};
   for (NodeId v : id_range<NodeId>(result.mesh.n_nodes())) {

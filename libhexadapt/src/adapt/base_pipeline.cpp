@@ -21,8 +21,9 @@ AdaptResult<M> run_base_pipeline(const M& grid, const Fractions& fractions,
   r.dist_init = direct_move(mesh, targets).dist;
   record_step(r, mesh, "move", clock, options.progress, 0.3);
 
-  GlobalPillowResult<M> p =
-      global_pillow(mesh, material, fractions.n_materials(), options.boundary, options.pillow);
+  const SizeCriterion size = size_criterion(grid, options.min_edge);
+  GlobalPillowResult<M> p = global_pillow(mesh, material, fractions.n_materials(), options.boundary,
+                                          options.pillow, size);
   record_step(r, p.mesh, "pillow", clock, options.progress, 0.6);
 
   // Interface nodes sit on their targets: only the nodes the pillowing made, and the nodes
@@ -42,7 +43,7 @@ AdaptResult<M> run_base_pipeline(const M& grid, const Fractions& fractions,
 
   r.mesh = std::move(p.mesh);
   r.material = std::move(p.material);
-  finish_result(r, target, has, options);
+  finish_result(r, target, has, size.remapped(p.cell_origin.raw()), options);
   return r;
 }
 

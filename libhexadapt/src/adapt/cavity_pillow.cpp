@@ -136,55 +136,77 @@ CavityPatch<M> patch_of(const EditableMesh<M>& mesh, const std::vector<CellId>& 
   return mesh.patch(set, true);
 }
 
-// Pillows the patch's set and smooths the nodes only the cavity and its layer use. Returns
-// the pillowed patch and the smallest quality among those cells.
+// A pillowed patch, the size criterion on its cells, and the smallest score (size_criterion.h)
+// among the cavity's and its layer's cells after smoothing.
 template <class M>
-std::pair<PillowResult<M>, double> try_cavity(const CavityPatch<M>& patch, const CavityOptions& o) {
+struct TriedCavity {
+  PillowResult<M> pillowed;
+  SizeCriterion size;
+  double worst = 1;
+};
+
+// Pillows the patch's set and smooths the nodes only the cavity and its layer use. `size`:
+// the size criterion on the patch's cells.
+template <class M>
+TriedCavity<M> try_cavity(const CavityPatch<M>& patch, const SizeCriterion& size,
+                          const CavityOptions& o) {
   const M& mesh = patch.mesh;
   const IdVector<CellId, char>& set = patch.in_set;
-  PillowResult<M> p = pillow_cells(mesh, set, boundary_constraints(mesh, o.boundary), o.pillow);
-  const M& pm = p.mesh;
+  TriedCavity<M> t{pillow_cells(mesh, set, boundary_constraints(mesh, o.boundary), o.pillow, size),
+                   {}, 1};
+  t.size = size.remapped(t.pillowed.cell_origin.raw());
+  const M& pm = t.pillowed.mesh;
   auto in_cavity = [&](CellId c) { return c.value() >= mesh.n_cells() || set[c] != 0; };
   IdVector<NodeId, char> movable(static_cast<std::size_t>(pm.n_nodes()), 0);
   for (NodeId n : id_range<NodeId>(pm.n_nodes())) {
     const auto cells = pm.node_cells(n);
     movable[n] = !cells.empty() && std::all_of(cells.begin(), cells.end(), in_cavity);
   }
-  smooth(p.mesh, movable, boundary_constraints(p.mesh, o.boundary), o.smooth);
-  double worst = 1;
+  smooth(t.pillowed.mesh, movable, boundary_constraints(pm, o.boundary), o.smooth, nullptr,
+         t.size);
   for (CellId c : id_range<CellId>(pm.n_cells()))
-    if (in_cavity(c)) worst = std::min(worst, pm.cell_quality(c));
-  return {std::move(p), worst};
+    if (in_cavity(c)) t.worst = std::min(t.worst, cell_score(pm, c, t.size));
+  return t;
 }
 
-// The global ids of the set's cells that end below the threshold (all of them when the
-// set could not be pillowed), increasing.
+// The global ids of the set's cells that end below the threshold or break the size criterion
+// (all of them when the set could not be pillowed), increasing.
 template <class M>
 std::vector<CellId> bad_cells(const CavityPatch<M>& patch, const std::vector<CellId>& set,
-                              const std::optional<std::pair<PillowResult<M>, double>>& tried,
-                              double threshold) {
+                              const std::optional<TriedCavity<M>>& tried, double threshold) {
   if (!tried) return set;
-  const PillowResult<M>& p = tried->first;
+  const PillowResult<M>& p = tried->pillowed;
   const auto n = static_cast<index_t>(patch.cells.size());
   std::vector<CellId> bad;
   for (CellId c : id_range<CellId>(p.mesh.n_cells()))
-    if ((c.value() >= n || patch.in_set[c]) && p.mesh.cell_quality(c) < threshold)
+    if ((c.value() >= n || patch.in_set[c]) && cell_score(p.mesh, c, tried->size) < threshold)
       bad.push_back(patch.cells[p.cell_origin[c].idx()]);
   std::sort(bad.begin(), bad.end());
   bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
   return bad;
 }
 
+// The input cell each cell of the patch comes from.
+inline std::vector<CellId> patch_origin(const std::vector<CellId>& origin,
+                                        const std::vector<CellId>& patch_cells) {
+  std::vector<CellId> out;
+  out.reserve(patch_cells.size());
+  for (CellId c : patch_cells) out.push_back(origin[c.idx()]);
+  return out;
+}
+
 }  // namespace
 
 template <class M>
 CavityResult<M> cavity_pillow(const M& mesh, const IdVector<CellId, int>& material, int n_materials,
-                              const std::vector<NodeId>& seeds, const CavityOptions& options) {
+                              const std::vector<NodeId>& seeds, const CavityOptions& options,
+                              const SizeCriterion& size) {
   if (options.range < 1)
     throw OptionError("cavity range must be at least 1, got " + std::to_string(options.range));
   CavityResult<M> r;
   r.material = material;
   for (NodeId v : id_range<NodeId>(mesh.n_nodes())) r.node_origin.push_back(v);
+  for (CellId c : id_range<CellId>(mesh.n_cells())) r.cell_origin.push_back(c);
   EditableMesh<M> work(mesh);
   std::vector<NodeId> failed;
   for (int m = 0; m < n_materials; ++m) {
@@ -211,10 +233,12 @@ CavityResult<M> cavity_pillow(const M& mesh, const IdVector<CellId, int>& materi
       set.erase(std::unique(set.begin(), set.end()), set.end());
       a.cells = static_cast<index_t>(set.size());
       CavityPatch<M> patch = patch_of(work, set, options.whole_mesh);
-      std::optional<std::pair<PillowResult<M>, double>> tried;
+      std::optional<TriedCavity<M>> tried;
       for (bool whole = options.whole_mesh;; whole = true) {
         try {
-          tried.emplace(try_cavity(patch, options));
+          tried.emplace(
+              try_cavity(patch, size.remapped(patch_origin(r.cell_origin.raw(), patch.cells)),
+                         options));
         } catch (const MeshError&) {
           // The set touches itself along an edge in a way its layer cannot follow (a face of
           // three cells): it cannot be published, and every seed in it shrinks. Confirmed in
@@ -227,15 +251,18 @@ CavityResult<M> cavity_pillow(const M& mesh, const IdVector<CellId, int>& materi
         }
         break;
       }
-      a.min_quality = tried ? tried->second : -1.0;
-      a.published = tried && tried->second >= options.threshold && tried->first.n_new_cells > 0;
+      a.min_quality = tried ? tried->worst : -1.0;
+      a.published = tried && tried->worst >= options.threshold && tried->pillowed.n_new_cells > 0;
       r.attempts.push_back(a);
       if (a.published) {
-        const PillowResult<M>& p = tried->first;
+        const PillowResult<M>& p = tried->pillowed;
         const std::vector<NodeId> global = work.splice(patch, p);
         for (NodeId v : id_range<NodeId>(p.mesh.n_nodes()))
           if (v.idx() >= patch.nodes.size())
             r.node_origin.push_back(r.node_origin[global[p.node_origin[v].idx()]]);
+        for (CellId c : id_range<CellId>(p.mesh.n_cells()))
+          if (c.idx() >= patch.cells.size())
+            r.cell_origin.push_back(r.cell_origin[patch.cells[p.cell_origin[c].idx()]]);
         for (index_t k = 0; k < p.n_new_cells; ++k) r.material.push_back(m);
         r.n_cells_added += p.n_new_cells;
         ++r.n_published;
@@ -270,9 +297,10 @@ CavityResult<M> cavity_pillow(const M& mesh, const IdVector<CellId, int>& materi
 template CavityResult<QuadMesh> cavity_pillow<QuadMesh>(const QuadMesh&,
                                                         const IdVector<CellId, int>&, int,
                                                         const std::vector<NodeId>&,
-                                                        const CavityOptions&);
+                                                        const CavityOptions&,
+                                                        const SizeCriterion&);
 template CavityResult<HexMesh> cavity_pillow<HexMesh>(const HexMesh&, const IdVector<CellId, int>&,
                                                       int, const std::vector<NodeId>&,
-                                                      const CavityOptions&);
+                                                      const CavityOptions&, const SizeCriterion&);
 
 }  // namespace hexadapt

@@ -12,11 +12,11 @@ namespace {
 
 // Tries to put n at p; keeps it there when the cells around it stay acceptable.
 template <class M>
-bool try_position(M& mesh, NodeId n, const Vec3& p, double threshold) {
+bool try_position(M& mesh, NodeId n, const Vec3& p, double threshold, const SizeCriterion& size) {
   const Vec3 old = mesh.point(n);
-  const double before = min_quality_around(mesh, n);
+  const double before = min_score_around(mesh, n, size);
   mesh.set_point(n, p);
-  const double after = min_quality_around(mesh, n);
+  const double after = min_score_around(mesh, n, size);
   if (after >= threshold || after >= before) return true;
   mesh.set_point(n, old);
   return false;
@@ -25,7 +25,8 @@ bool try_position(M& mesh, NodeId n, const Vec3& p, double threshold) {
 }  // namespace
 
 template <class M>
-MoveResult controlled_move(M& mesh, const Targets& targets, const MoveOptions& options) {
+MoveResult controlled_move(M& mesh, const Targets& targets, const MoveOptions& options,
+                           const SizeCriterion& size) {
   if (options.steps < 1)
     throw OptionError("steps must be at least 1, got " + std::to_string(options.steps));
   const auto nn = static_cast<std::size_t>(mesh.n_nodes());
@@ -57,7 +58,7 @@ MoveResult controlled_move(M& mesh, const Targets& targets, const MoveOptions& o
         const Vec3 p = k == options.steps
                            ? targets.position[n]
                            : Vec3(start[n] + (k * inv_steps) * (targets.position[n] - start[n]));
-        if (!try_position(mesh, n, p, options.threshold)) {
+        if (!try_position(mesh, n, p, options.threshold, size)) {
           waiting[n] = 1;
           return;
         }
@@ -97,7 +98,8 @@ MoveResult direct_move(M& mesh, const Targets& targets) {
 }
 
 #define HEXADAPT_INSTANTIATE(M)                                                   \
-  template MoveResult controlled_move<M>(M&, const Targets&, const MoveOptions&); \
+  template MoveResult controlled_move<M>(M&, const Targets&, const MoveOptions&, \
+                                         const SizeCriterion&);                 \
   template MoveResult direct_move<M>(M&, const Targets&);
 HEXADAPT_INSTANTIATE(QuadMesh)
 HEXADAPT_INSTANTIATE(HexMesh)

@@ -9,7 +9,7 @@ namespace hexadapt {
 template <class M>
 GlobalPillowResult<M> global_pillow(const M& mesh, const IdVector<CellId, int>& material,
                                     int n_materials, const BoundaryOptions& boundary,
-                                    const PillowOptions& options) {
+                                    const PillowOptions& options, const SizeCriterion& size) {
   if (material.size() != static_cast<std::size_t>(mesh.n_cells()))
     throw InternalError("global pillow: materials do not match the mesh's cells");
   GlobalPillowResult<M> out;
@@ -25,8 +25,8 @@ GlobalPillowResult<M> global_pillow(const M& mesh, const IdVector<CellId, int>& 
       any = any || in_set[c];
     }
     if (!any) continue;
-    PillowResult<M> p =
-        pillow_cells(out.mesh, in_set, boundary_constraints(out.mesh, boundary), options);
+    PillowResult<M> p = pillow_cells(out.mesh, in_set, boundary_constraints(out.mesh, boundary),
+                                     options, size.remapped(out.cell_origin.raw()));
     if (p.n_new_cells == 0) continue;
     // Compose the maps: new items point through the step's origin to the input.
     for (NodeId v : id_range<NodeId>(p.mesh.n_nodes()))
@@ -46,10 +46,12 @@ GlobalPillowResult<M> global_pillow(const M& mesh, const IdVector<CellId, int>& 
 template GlobalPillowResult<QuadMesh> global_pillow<QuadMesh>(const QuadMesh&,
                                                               const IdVector<CellId, int>&, int,
                                                               const BoundaryOptions&,
-                                                              const PillowOptions&);
+                                                              const PillowOptions&,
+                                                              const SizeCriterion&);
 template GlobalPillowResult<HexMesh> global_pillow<HexMesh>(const HexMesh&,
                                                             const IdVector<CellId, int>&, int,
                                                             const BoundaryOptions&,
-                                                            const PillowOptions&);
+                                                            const PillowOptions&,
+                                                            const SizeCriterion&);
 
 }  // namespace hexadapt

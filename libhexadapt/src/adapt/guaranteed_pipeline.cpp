@@ -19,14 +19,6 @@ namespace hexadapt::detail {
 namespace {
 
 template <class M>
-std::vector<CellId> cells_below(const M& mesh, double threshold) {
-  std::vector<CellId> out;
-  for (CellId c : id_range<CellId>(mesh.n_cells()))
-    if (mesh.cell_quality(c) < threshold) out.push_back(c);
-  return out;
-}
-
-template <class M>
 std::vector<Vec3> points_of(const M& mesh) {
   std::vector<Vec3> p;
   for (NodeId v : id_range<NodeId>(mesh.n_nodes())) p.push_back(mesh.point(v));
@@ -69,7 +61,7 @@ std::vector<NodeId> nodes_around_moves(const M& mesh, const std::vector<Vec3>& b
 template <class M>
 int move_smooth_loop(M& mesh, const Targets& targets, MoveResult move,
                      const IdVector<NodeId, NodeConstraint>& sliding, const MoveOptions& mo,
-                     const AdaptOptions& options) {
+                     const SizeCriterion& size, const AdaptOptions& options) {
   double best = move.dist;
   std::vector<Vec3> best_points = points_of(mesh);
   const IdVector<NodeId, char> movable = loop_movable(targets);
@@ -78,9 +70,9 @@ int move_smooth_loop(M& mesh, const Targets& targets, MoveResult move,
   while (loops < options.max_loops && best > 0) {
     ++loops;
     const SmoothResult s =
-        smooth(mesh, movable, sliding, options.smooth, loops == 1 ? nullptr : &start);
+        smooth(mesh, movable, sliding, options.smooth, loops == 1 ? nullptr : &start, size);
     const std::vector<Vec3> before = points_of(mesh);
-    move = controlled_move(mesh, targets, mo);
+    move = controlled_move(mesh, targets, mo, size);
     start = nodes_around_moves(mesh, before, s.unsettled);
     const bool better = move.dist < best;
     if (better) {
@@ -97,10 +89,11 @@ int move_smooth_loop(M& mesh, const Targets& targets, MoveResult move,
 // Pillows cavities around the nodes the first move left short (sec. 5.2). Input nodes keep
 // their ids and their targets: a seed stays with the cells outside its cavity, on the
 // interface; its copies inside the cavity are new nodes without a target, free to smooth.
+// The layer cells take the local size of their cavity's cells.
 template <class M>
 std::vector<NodeId> pillow_cavities(M& mesh, IdVector<CellId, int>& material, Targets& targets,
-                                    const MoveResult& first, int n_materials, AdaptResult<M>& r,
-                                    const AdaptOptions& options) {
+                                    SizeCriterion& size, const MoveResult& first, int n_materials,
+                                    AdaptResult<M>& r, const AdaptOptions& options) {
   std::vector<NodeId> seeds;
   for (NodeId v : id_range<NodeId>(mesh.n_nodes()))
     if (targets.has[v] && !first.reached[v]) seeds.push_back(v);
@@ -111,7 +104,8 @@ std::vector<NodeId> pillow_cavities(M& mesh, IdVector<CellId, int>& material, Ta
   co.pillow = options.pillow;
   co.smooth = options.smooth;
   co.boundary = options.boundary;
-  CavityResult<M> c = cavity_pillow(mesh, material, n_materials, seeds, co);
+  CavityResult<M> c = cavity_pillow(mesh, material, n_materials, seeds, co, size);
+  size = size.remapped(c.cell_origin.raw());
   r.cavities = std::move(c.attempts);
   r.n_cavities_published = c.n_published;
   r.n_cells_added = c.n_cells_added;
@@ -180,15 +174,17 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
   AdaptResult<M> r;
   Timer clock;
   M mesh = grid;
+  SizeCriterion size = size_criterion(grid, options.min_edge);
   r.input_min_quality = min_quality(grid);
-  r.bad_input_cells = cells_below(grid, options.threshold);
+  for (const CellFailure& f : failing_cells(grid, options.threshold, size))
+    r.bad_input_cells.push_back(f.cell);
   const bool good_input = r.bad_input_cells.empty();
   const auto nn = static_cast<std::size_t>(mesh.n_nodes());
   if (!good_input && !options.allow_bad_input) {
     r.stopped_bad_input = true;
     r.mesh = std::move(mesh);
     r.material = material;
-    finish_result(r, IdVector<NodeId, Vec3>(nn, Vec3::Zero()), IdVector<NodeId, char>(nn, 0),
+    finish_result(r, IdVector<NodeId, Vec3>(nn, Vec3::Zero()), IdVector<NodeId, char>(nn, 0), size,
                   options);
     r.blocked.assign(nn, 0);
     return r;
@@ -204,27 +200,29 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
   MoveOptions mo;
   mo.threshold = options.threshold;
   mo.steps = options.steps;
-  const MoveResult first = controlled_move(mesh, targets, mo);
+  const MoveResult first = controlled_move(mesh, targets, mo, size);
   r.dist_init = first.dist;
   record_step(r, mesh, "move", clock, options.progress, 0.3);
 
   IdVector<CellId, int> out_material = material;
-  const std::vector<NodeId> failed =
-      pillow_cavities(mesh, out_material, targets, first, fractions.n_materials(), r, options);
+  const std::vector<NodeId> failed = pillow_cavities(mesh, out_material, targets, size, first,
+                                                     fractions.n_materials(), r, options);
   record_step(r, mesh, "cavity", clock, options.progress, 0.5);
 
   const auto boundary = boundary_constraints(mesh, options.boundary);
-  r.loops =
-      move_smooth_loop(mesh, targets, first, sliding_constraints(boundary, targets), mo, options);
+  r.loops = move_smooth_loop(mesh, targets, first, sliding_constraints(boundary, targets), mo, size,
+                             options);
   record_step(r, mesh, "move-smooth", clock, options.progress, 1.0);
 
   r.mesh = std::move(mesh);
   r.material = std::move(out_material);
-  finish_result(r, targets.position, targets.has, options);
+  finish_result(r, targets.position, targets.has, size, options);
   diagnose(r, failed);
-  if (good_input && r.n_below_threshold > 0)
+  if (good_input && (r.n_below_threshold > 0 || r.n_below_min_edge > 0))
     throw InternalError("guaranteed pipeline left " + std::to_string(r.n_below_threshold) +
-                        " cells below the threshold " + std::to_string(options.threshold));
+                        " cells below the threshold " + std::to_string(options.threshold) +
+                        " and " + std::to_string(r.n_below_min_edge) +
+                        " below the size criterion " + std::to_string(options.min_edge));
   return r;
 }
 

@@ -72,17 +72,27 @@ Vec3 copy_offset(const NodeConstraint& boundary, const Vec3& inward, const Vec3&
   return boundary.project(to_centre);
 }
 
+// The fraction of the way the copy goes: the offset option, raised so that the copy lies at
+// least min_thickness x `floor` (the shortest edge its cells may have) from its original.
+double copy_fraction(const PillowOptions& options, double reach, double floor) {
+  const double wanted = options.min_thickness * floor;
+  if (!(reach > 0) || options.offset * reach >= wanted) return options.offset;
+  return std::min(wanted / reach, std::max(options.offset, options.max_offset));
+}
+
 }  // namespace
 
 template <class M>
 PillowResult<M> pillow_cells(const M& mesh, const IdVector<CellId, char>& in_set,
                              const IdVector<NodeId, NodeConstraint>& boundary,
-                             const PillowOptions& options) {
+                             const PillowOptions& options, const SizeCriterion& size) {
   if (in_set.size() != static_cast<std::size_t>(mesh.n_cells()) ||
       boundary.size() != static_cast<std::size_t>(mesh.n_nodes()))
     throw InternalError("pillow: cell set or constraints do not match the mesh");
   if (!(options.offset > 0 && options.offset < 1))
     throw OptionError("pillow offset must be in (0, 1), got " + std::to_string(options.offset));
+  if (!(options.max_offset > 0 && options.max_offset < 1) || !(options.min_thickness >= 0))
+    throw OptionError("pillow max_offset must be in (0, 1) and min_thickness >= 0");
   std::vector<std::pair<CellId, int>> faces;
   IdVector<NodeId, char> split(static_cast<std::size_t>(mesh.n_nodes()), 0);
   for (CellId c : id_range<CellId>(mesh.n_cells())) {
@@ -132,7 +142,7 @@ PillowResult<M> pillow_cells(const M& mesh, const IdVector<CellId, char>& in_set
     for (std::size_t f = 0; f < inward[n].size(); ++f) {
       const NodeId copy(static_cast<index_t>(points.size()));
       Vec3 centre = Vec3::Zero();
-      double reach = 0;
+      double reach = 0, floor = 0;
       int count = 0;
       for (std::size_t k = 0; k < around[n].size(); ++k) {
         if (static_cast<std::size_t>(fan[n][k]) != f) continue;
@@ -140,13 +150,14 @@ PillowResult<M> pillow_cells(const M& mesh, const IdVector<CellId, char>& in_set
         const Vec3 x = cell_centroid(mesh, c);
         centre += x;
         reach += (x - p).norm();
+        floor += size.min_length(c);
         ++count;
         cells[c.idx()][static_cast<std::size_t>(corner_of(mesh, c, n))] = copy;
       }
       centre /= count;
       reach /= count;
-      points.push_back(p + options.offset *
-                               copy_offset(boundary[n], inward[n][f], centre - p, reach));
+      const Vec3 d = copy_offset(boundary[n], inward[n][f], centre - p, reach);
+      points.push_back(p + copy_fraction(options, d.norm(), floor / count) * d);
       out.node_origin.push_back(n);
     }
   }
@@ -171,9 +182,9 @@ PillowResult<M> pillow_cells(const M& mesh, const IdVector<CellId, char>& in_set
 template PillowResult<QuadMesh> pillow_cells<QuadMesh>(const QuadMesh&,
                                                        const IdVector<CellId, char>&,
                                                        const IdVector<NodeId, NodeConstraint>&,
-                                                       const PillowOptions&);
+                                                       const PillowOptions&, const SizeCriterion&);
 template PillowResult<HexMesh> pillow_cells<HexMesh>(const HexMesh&, const IdVector<CellId, char>&,
                                                      const IdVector<NodeId, NodeConstraint>&,
-                                                     const PillowOptions&);
+                                                     const PillowOptions&, const SizeCriterion&);
 
 }  // namespace hexadapt

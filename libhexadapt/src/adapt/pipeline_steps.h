@@ -3,6 +3,7 @@
 // end. Internal to the library: the pipelines (base, guaranteed) include it.
 #pragma once
 
+#include <limits>
 #include <string>
 
 #include "hexadapt/adapt/adapt.h"
@@ -19,9 +20,12 @@ void record_step(AdaptResult<M>& r, const M& mesh, const std::string& name, Time
   if (progress) progress("adapt", done);
 }
 
+// Fills the distances, quality and size figures of the output r.mesh; `size`: the size
+// criterion on its cells.
 template <class M>
 void finish_result(AdaptResult<M>& r, const IdVector<NodeId, Vec3>& target,
-                   const IdVector<NodeId, char>& has, const AdaptOptions& options) {
+                   const IdVector<NodeId, char>& has, const SizeCriterion& size,
+                   const AdaptOptions& options) {
   const M& mesh = r.mesh;
   r.target = target;
   r.has_target = has;
@@ -39,11 +43,18 @@ void finish_result(AdaptResult<M>& r, const IdVector<NodeId, Vec3>& target,
     r.n_reached += r.distance[v] == 0;
   }
   r.min_quality = min_quality(mesh);
+  r.min_edge_ratio = std::numeric_limits<double>::infinity();
   for (CellId c : id_range<CellId>(mesh.n_cells())) {
     const double q = mesh.cell_quality(c);
     r.n_below_threshold += q < options.threshold;
     r.n_inverted += q <= 0;
+    r.min_edge_ratio = std::min(r.min_edge_ratio, cell_edge_lengths(mesh, c).min / size.local_size[c]);
   }
+  if (mesh.n_cells() == 0) r.min_edge_ratio = 0;
+  std::vector<CellFailure> failures = failing_cells(mesh, options.threshold, size);
+  for (const CellFailure& f : failures) r.n_below_min_edge += f.size_failed();
+  r.failures = worst_failures(std::move(failures), 10);
+  r.local_size = size.local_size;
 }
 
 }  // namespace hexadapt::detail

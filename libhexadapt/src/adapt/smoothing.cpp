@@ -26,7 +26,7 @@ double mean_edge_length(const M& mesh, NodeId n, const std::vector<NodeId>& arou
 template <class M>
 double laplacian_step(M& mesh, NodeId n, const std::vector<NodeId>& around,
                       const NodeConstraint& constraint, const SmoothOptions& options,
-                      double& q) {
+                      const SizeCriterion& size, double& q) {
   Vec3 mean = Vec3::Zero();
   for (NodeId o : around) mean += mesh.point(o);
   mean /= static_cast<double>(around.size());
@@ -36,7 +36,7 @@ double laplacian_step(M& mesh, NodeId n, const std::vector<NodeId>& around,
   const double before = q;
   for (int h = 0; h <= options.halvings; ++h, d *= 0.5) {
     mesh.set_point(n, p + d);
-    const double after = min_quality_around(mesh, n);
+    const double after = min_score_around(mesh, n, size);
     if (after >= before) {
       q = after;
       return after - before;
@@ -50,7 +50,8 @@ double laplacian_step(M& mesh, NodeId n, const std::vector<NodeId>& around,
 // constraint, keeping the best strict improvement, halving the step when none improves.
 template <class M>
 double pattern_search(M& mesh, NodeId n, const std::vector<NodeId>& around,
-                      const NodeConstraint& constraint, int levels, double& q) {
+                      const NodeConstraint& constraint, int levels, const SizeCriterion& size,
+                      double& q) {
   double h = 0.25 * mean_edge_length(mesh, n, around);
   const double start = q;
   double best = start;
@@ -65,7 +66,7 @@ double pattern_search(M& mesh, NodeId n, const std::vector<NodeId>& around,
           const Vec3 d = constraint.project(sign * h * Vec3::Unit(axis));
           if (!(d.norm() > 1e-3 * h)) continue;
           mesh.set_point(n, p + d);
-          const double trial = min_quality_around(mesh, n);
+          const double trial = min_score_around(mesh, n, size);
           if (trial > best + 1e-9) {
             best = trial;
             best_p = p + d;
@@ -81,13 +82,14 @@ double pattern_search(M& mesh, NodeId n, const std::vector<NodeId>& around,
 
 template <class M>
 double smooth_node(M& mesh, NodeId n, const NodeConstraint& constraint,
-                   const SmoothOptions& options) {
+                   const SmoothOptions& options, const SizeCriterion& size) {
   const std::vector<NodeId> around = edge_neighbours(mesh, n);
   if (around.empty()) return 0;
-  double q = min_quality_around(mesh, n);
-  double gain = laplacian_step(mesh, n, around, constraint, options, q);
+  double q = min_score_around(mesh, n, size);
+  double gain = laplacian_step(mesh, n, around, constraint, options, size, q);
   if (q < options.optimise_below) {
-    const double more = pattern_search(mesh, n, around, constraint, options.search_levels, q);
+    const double more =
+        pattern_search(mesh, n, around, constraint, options.search_levels, size, q);
     if (more > 0) gain = std::max(gain, 0.0) + more;
   }
   return gain;
@@ -98,7 +100,8 @@ double smooth_node(M& mesh, NodeId n, const NodeConstraint& constraint,
 template <class M>
 SmoothResult smooth(M& mesh, const IdVector<NodeId, char>& movable,
                     const IdVector<NodeId, NodeConstraint>& constraint,
-                    const SmoothOptions& options, const std::vector<NodeId>* start) {
+                    const SmoothOptions& options, const std::vector<NodeId>* start,
+                    const SizeCriterion& size) {
   const auto nn = static_cast<std::size_t>(mesh.n_nodes());
   if (movable.size() != nn || constraint.size() != nn)
     throw InternalError("smoothing: movable flags or constraints do not match the mesh");
@@ -126,7 +129,7 @@ SmoothResult smooth(M& mesh, const IdVector<NodeId, char>& movable,
         const auto k = static_cast<std::size_t>(i);
         const NodeId n = todo[k];
         const Vec3 before = mesh.point(n);
-        gain[k] = smooth_node(mesh, n, constraint[n], options);
+        gain[k] = smooth_node(mesh, n, constraint[n], options, size);
         moved[k] = mesh.point(n) != before;
       });
       for (std::size_t k = 0; k < todo.size(); ++k) {
@@ -148,9 +151,11 @@ SmoothResult smooth(M& mesh, const IdVector<NodeId, char>& movable,
 
 template SmoothResult smooth<QuadMesh>(QuadMesh&, const IdVector<NodeId, char>&,
                                        const IdVector<NodeId, NodeConstraint>&,
-                                       const SmoothOptions&, const std::vector<NodeId>*);
+                                       const SmoothOptions&, const std::vector<NodeId>*,
+                                       const SizeCriterion&);
 template SmoothResult smooth<HexMesh>(HexMesh&, const IdVector<NodeId, char>&,
                                       const IdVector<NodeId, NodeConstraint>&,
-                                      const SmoothOptions&, const std::vector<NodeId>*);
+                                      const SmoothOptions&, const std::vector<NodeId>*,
+                                      const SizeCriterion&);
 
 }  // namespace hexadapt

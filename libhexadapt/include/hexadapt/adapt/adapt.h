@@ -6,9 +6,10 @@
 // global pillowing of every material, global quality-preserving smoothing; no guarantee on
 // the output quality (the comparison point of the paper's Table 1). `guaranteed` (Fig. 10-b:
 // controlled move, then the move-smooth loop) reuses the same steps and keeps every cell at
-// or above the threshold S_q when the input cells all are; an input cell below S_q stops it
-// (the result lists them in bad_input_cells, sets stopped_bad_input and holds the input grid
-// unchanged) unless allow_bad_input. Between the first controlled move and the move-smooth
+// or above the threshold S_q, with its shortest edge at least min_edge times its local input
+// size (size_criterion.h), when the input cells all are; an input cell failing either stops
+// it (the result lists them in bad_input_cells and failures, sets stopped_bad_input and
+// holds the input grid unchanged) unless allow_bad_input. Between the first controlled move and the move-smooth
 // loop, cavity pillowing (sec. 5.2, Alg. 5, cavity_pillow.h) gives the nodes left short of
 // their targets new cells to move into; those still short at the end are reported in
 // `blocked`. In 3D, when the reconstruction's geometric model is given, the guaranteed
@@ -23,6 +24,7 @@
 #include "hexadapt/adapt/controlled_move.h"
 #include "hexadapt/adapt/global_pillow.h"
 #include "hexadapt/adapt/node_constraint.h"
+#include "hexadapt/adapt/size_criterion.h"
 #include "hexadapt/adapt/smoothing.h"
 #include "hexadapt/adapt/target_correction.h"
 #include "hexadapt/adapt/targets.h"
@@ -40,6 +42,8 @@ std::string to_string(AdaptMethod method);
 struct AdaptOptions {
   AdaptMethod method = AdaptMethod::guaranteed;  ///< which pipeline runs
   double threshold = 0.3;                        ///< S_q, the quality the guaranteed method keeps
+  /// Shortest edge / local input size every cell keeps (guaranteed); 0 = no size criterion.
+  double min_edge = 0.1;
   int steps = 16;                                ///< steps of the controlled move
   BoundaryOptions boundary;                      ///< feature detection on the domain boundary
   TargetOptions targets;                         ///< target computation
@@ -85,8 +89,15 @@ struct AdaptResult {
   double min_quality = 1;         ///< of the output
   index_t n_below_threshold = 0;  ///< output cells with scaled Jacobian < threshold
   index_t n_inverted = 0;         ///< output cells with scaled Jacobian <= 0
+  index_t n_below_min_edge = 0;   ///< output cells breaking the size criterion
+  /// Of the output: smallest shortest edge / local size over the cells.
+  double min_edge_ratio = 0;
+  IdVector<CellId, double> local_size;  ///< each output cell's local input size
+  /// The worst cells failing a criterion (at most 10): of the output, or of the input when
+  /// the guaranteed method stopped on it.
+  std::vector<CellFailure> failures;
   // Guaranteed method only.
-  std::vector<CellId> bad_input_cells;  ///< input cells below the threshold
+  std::vector<CellId> bad_input_cells;  ///< input cells failing the threshold or min_edge
   bool stopped_bad_input = false;       ///< true: nothing was done (see bad_input_cells)
   double input_min_quality = 1;         ///< of the input grid
   IdVector<NodeId, char> blocked;       ///< BlockReason per node (all none for base)

@@ -46,7 +46,7 @@ struct CavityAttempt {
   int range = 0;              ///< the largest range of its seeds
   index_t cells = 0;          ///< cells of the cavity
   bool published = false;
-  double min_quality = 0;  ///< of the cavity and its layer after smoothing
+  double min_quality = 0;  ///< smallest score (size_criterion.h) of the cavity and its layer
 };
 
 template <class M>
@@ -54,15 +54,18 @@ struct CavityResult {
   M mesh;
   IdVector<CellId, int> material;
   IdVector<NodeId, NodeId> node_origin;  ///< the input node each node is (a copy of)
+  IdVector<CellId, CellId> cell_origin;  ///< the input cell; a layer cell: its cavity's cell
   std::vector<CavityAttempt> attempts;
   std::vector<NodeId> failed_seeds;  ///< seeds no range could serve, increasing
   index_t n_published = 0;
   index_t n_cells_added = 0;
 };
 
-/// `seeds`: node ids of `mesh`. Throws OptionError for range < 1.
+/// `seeds`: node ids of `mesh`; `size`: the size criterion on mesh's cells (off by default).
+/// Throws OptionError for range < 1.
 template <class M>
 CavityResult<M> cavity_pillow(const M& mesh, const IdVector<CellId, int>& material, int n_materials,
-                              const std::vector<NodeId>& seeds, const CavityOptions& options = {});
+                              const std::vector<NodeId>& seeds, const CavityOptions& options = {},
+                              const SizeCriterion& size = {});
 
 }  // namespace hexadapt

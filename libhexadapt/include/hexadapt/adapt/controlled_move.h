@@ -3,13 +3,15 @@
 //
 // Each node with a target moves toward it in `steps` equal steps (k / steps of the way from
 // where it started); a step is taken only if every cell around the node keeps a scaled
-// Jacobian >= threshold (a cell already below the threshold may not get worse). A node that
+// Jacobian >= threshold and its shortest edge >= the size criterion's floor (size_criterion.h;
+// a cell already failing may not get worse). A node that
 // is refused stays where it is and tries again on the next round, so a neighbour moving away
 // can unblock it; rounds stop when no node advances. Nodes that share no cell move in
 // parallel (independent_node_sets), in a fixed order: the result is the same whatever the
 // thread count.
 #pragma once
 
+#include "hexadapt/adapt/size_criterion.h"
 #include "hexadapt/adapt/targets.h"
 #include "hexadapt/core/ids.h"
 
@@ -29,9 +31,11 @@ struct MoveResult {
   double dist = 0;  ///< sum over target nodes of |position - target| after
 };
 
-/// Moves the nodes with targets.has set. Throws OptionError for steps < 1.
+/// Moves the nodes with targets.has set, keeping the threshold and the size criterion (off by
+/// default). Throws OptionError for steps < 1.
 template <class M>
-MoveResult controlled_move(M& mesh, const Targets& targets, const MoveOptions& options = {});
+MoveResult controlled_move(M& mesh, const Targets& targets, const MoveOptions& options = {},
+                           const SizeCriterion& size = {});
 
 /// Puts every node with a target on it, whatever happens to the cells (base algorithm).
 template <class M>

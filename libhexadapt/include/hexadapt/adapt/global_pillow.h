@@ -17,10 +17,12 @@ struct GlobalPillowResult {
   index_t n_layer_cells = 0;
 };
 
-/// `material`: one index per cell of `mesh`, in [0, n_materials).
+/// `material`: one index per cell of `mesh`, in [0, n_materials); `size`: the size criterion
+/// on mesh's cells, which sets the layers' least thickness (off by default).
 template <class M>
 GlobalPillowResult<M> global_pillow(const M& mesh, const IdVector<CellId, int>& material,
                                     int n_materials, const BoundaryOptions& boundary = {},
-                                    const PillowOptions& options = {});
+                                    const PillowOptions& options = {},
+                                    const SizeCriterion& size = {});
 
 }  // namespace hexadapt

@@ -1,6 +1,6 @@
 // Navigation around a node that the adaptation steps share (paper sec. 5): the corner of a
 // cell a node is, the nodes joined to it by a cell edge, the outward normal of a cell face,
-// the cells around a node, and a conflict-free colouring of nodes for parallel moves.
+// and a conflict-free colouring of nodes for parallel moves.
 //
 // The only dimensional facts live here: a quad corner's edge neighbours are the previous and
 // next corners, a hex corner's (binary numbering) are the corners one bit away.
@@ -41,14 +41,6 @@ std::vector<NodeId> edge_neighbours(const M& mesh, NodeId n);
 /// Unit normal of local face lf of c, pointing out of c (2D: in the xy plane).
 template <class M>
 Vec3 face_normal(const M& mesh, CellId c, int lf);
-
-/// Smallest scaled Jacobian of the cells around n (1 when n has no cell).
-template <class M>
-double min_quality_around(const M& mesh, NodeId n) {
-  double q = 1.0;
-  for (CellId c : mesh.node_cells(n)) q = std::min(q, mesh.cell_quality(c));
-  return q;
-}
 
 /// Splits `nodes` into classes in which no two nodes share a cell, so that moving the nodes
 /// of one class in parallel never reads a point another thread writes. Greedy colouring in

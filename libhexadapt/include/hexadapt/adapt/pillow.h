@@ -12,12 +12,14 @@
 // cells avoids; the kernel throws MeshError. Faces on the domain boundary are not pillowed.
 // A new node starts a fraction of the way from its original toward the centre of the fan's
 // cells (kept on the domain boundary when the original is on it); smoothing is the caller's
-// next step. Used for the global pillowing of the base algorithm (each material in turn)
+// next step. With a size criterion (size_criterion.h) a copy starts far enough from its
+// original for the layer's edges across to meet it. Used for the global pillowing of the base algorithm (each material in turn)
 // and, in the guaranteed pipeline, for cavities (sec. 5.2). The mesh is rebuilt, never
 // edited in place.
 #pragma once
 
 #include "hexadapt/adapt/node_constraint.h"
+#include "hexadapt/adapt/size_criterion.h"
 #include "hexadapt/core/ids.h"
 #include "hexadapt/mesh/cell_complex.h"
 
@@ -26,6 +28,11 @@ namespace hexadapt {
 struct PillowOptions {
   /// Where a duplicated node starts: this fraction of the way toward its fan's cell centre.
   double offset = 0.25;
+  /// With a size criterion: a copy starts at least this many times the shortest edge its
+  /// fan's cells may have from its original (the layer's thickness)...
+  double min_thickness = 1.5;
+  /// ... but never farther than this fraction of the way toward the fan's cell centre.
+  double max_offset = 0.5;
 };
 
 /// The pillowed mesh and its maps back to the input. Input nodes and cells keep their ids;
@@ -39,11 +46,12 @@ struct PillowResult {
   index_t n_new_cells = 0;
 };
 
-/// Pillows the cells with in_set[c] != 0. `boundary`: boundary_constraints(mesh).
+/// Pillows the cells with in_set[c] != 0. `boundary`: boundary_constraints(mesh); `size`:
+/// the size criterion on mesh's cells (off by default), which sets the least thickness.
 template <class M>
 PillowResult<M> pillow_cells(const M& mesh, const IdVector<CellId, char>& in_set,
                              const IdVector<NodeId, NodeConstraint>& boundary,
-                             const PillowOptions& options = {});
+                             const PillowOptions& options = {}, const SizeCriterion& size = {});
 
 /// The layer cell between a face of a set cell (outward node order) and its copy (the set
 /// side): the dimensional part of pillowing.

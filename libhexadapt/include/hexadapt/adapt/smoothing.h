@@ -3,8 +3,9 @@
 //
 // Each movable node is pulled toward the mean of its edge neighbours, the displacement
 // restricted by its constraint (boundary plane or edge, interface plane or curve: the node
-// slides along them), and shortened by halves until the smallest scaled Jacobian of the cells
-// around the node does not go down; a move that cannot keep it is not made. A node whose
+// slides along them), and shortened by halves until the smallest score of the cells around
+// the node (the scaled Jacobian, below it where a cell breaks the size criterion:
+// size_criterion.h) does not go down; a move that cannot keep it is not made. A node whose
 // cells stay poor then tries a pattern search along the axes (within its constraint) that
 // only accepts a higher local minimum: it untangles what the Laplacian pull cannot. Nodes sharing
 // no cell are moved in parallel in a fixed order, so the result does not depend on the thread
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "hexadapt/adapt/node_constraint.h"
+#include "hexadapt/adapt/size_criterion.h"
 #include "hexadapt/core/ids.h"
 
 namespace hexadapt {
@@ -42,11 +44,12 @@ struct SmoothResult {
 /// again only after a node of its cells moved, which gives the result of full sweeps at the
 /// cost of the region still changing. `start`, when given, lists the nodes to try first (the
 /// other movable nodes are taken as settled: a previous call's `unsettled` plus the nodes
-/// around what moved since gives the result of a call on every node).
+/// around what moved since gives the result of a call on every node). `size`: the size
+/// criterion the scores include (off by default: the scores are the scaled Jacobians).
 template <class M>
 SmoothResult smooth(M& mesh, const IdVector<NodeId, char>& movable,
                     const IdVector<NodeId, NodeConstraint>& constraint,
                     const SmoothOptions& options = {},
-                    const std::vector<NodeId>* start = nullptr);
+                    const std::vector<NodeId>* start = nullptr, const SizeCriterion& size = {});
 
 }  // namespace hexadapt

@@ -1,0 +1,103 @@
+// The size criterion of the guarantee (DESIGN sec. 6), beside the shape one (scaled Jacobian
+// >= S_q, paper sec. 5): every cell keeps its shortest edge at least `min_edge` times its
+// local input size, so that no sliver cuts an explicit solver's time step. The scaled
+// Jacobian says nothing about size: a quad with one edge a thousandth of the others can
+// score 0.77.
+//
+// Local input size: the mean edge length of the input-grid cell a cell comes from (a pillow
+// layer cell: the cell it was inflated from). Moves never change it; pillowing carries it
+// through its cell-origin maps (remapped). The output mesh holds it as the `local_size` cell
+// array, which hexadapt-measure checks the criterion against.
+//
+// The adaptation steps compare one number per cell, the score: the scaled Jacobian when the
+// size criterion holds, and -2 + shortest / (min_edge x local size), in [-2, -1), when it does
+// not. A cell that breaks the size criterion therefore scores below every scaled Jacobian,
+// so "every cell around the node >= S_q" (controlled move, cavities) means both criteria, and
+// "never lower the local minimum" (smoothing) never makes a sliver where there was none and
+// lengthens the short edge of one that is there. Where the criterion holds nothing changes:
+// with min_edge 0 (off) the score is the scaled Jacobian.
+#pragma once
+
+#include <vector>
+
+#include "hexadapt/core/ids.h"
+#include "hexadapt/mesh/cell_complex.h"
+#include "hexadapt/quality/cell_size.h"
+
+namespace hexadapt {
+
+struct SizeCriterion {
+  double min_edge = 0;                  ///< shortest edge / local size at least; 0 = off
+  IdVector<CellId, double> local_size;  ///< per cell of the mesh it is used on
+
+  bool on() const { return min_edge > 0; }
+  /// The shortest edge cell c may have.
+  double min_length(CellId c) const { return on() ? min_edge * local_size[c] : 0.0; }
+  /// The criterion for a mesh whose cell k comes from cell origin[k] of this one's mesh.
+  SizeCriterion remapped(const std::vector<CellId>& origin) const;
+};
+
+/// Shortest, longest and mean edge of a cell.
+template <class M>
+EdgeLengths cell_edge_lengths(const M& mesh, CellId c) {
+  if constexpr (M::dim == 3) {
+    return hex_edge_lengths(mesh.cell_points(c));
+  } else {
+    return quad_edge_lengths(mesh.cell_points(c));
+  }
+}
+
+/// The local size of every cell of an input grid: its mean edge length.
+template <class M>
+IdVector<CellId, double> mean_edge_lengths(const M& grid);
+
+/// The criterion `min_edge` on the cells of `grid` itself (local sizes kept even when off).
+template <class M>
+SizeCriterion size_criterion(const M& grid, double min_edge) {
+  return {min_edge, mean_edge_lengths(grid)};
+}
+
+/// Shortest edge / (min_edge x local size): below 1 breaks the criterion (+inf when off).
+template <class M>
+double size_ratio(const M& mesh, CellId c, const SizeCriterion& size);
+
+/// The scaled Jacobian, or -2 + size_ratio in [-2, -1) when the size criterion fails.
+template <class M>
+double cell_score(const M& mesh, CellId c, const SizeCriterion& size) {
+  const double q = mesh.cell_quality(c);
+  if (!size.on()) return q;
+  const double r = size_ratio(mesh, c, size);
+  return r < 1 ? -2.0 + r : q;
+}
+
+/// Smallest score of the cells around n (1 when n has no cell).
+template <class M>
+double min_score_around(const M& mesh, NodeId n, const SizeCriterion& size) {
+  double s = 1.0;
+  for (CellId c : mesh.node_cells(n)) s = std::min(s, cell_score(mesh, c, size));
+  return s;
+}
+
+/// A cell that breaks a criterion, and by how much.
+struct CellFailure {
+  CellId cell;
+  double scaled_jacobian = 0;
+  double shortest_edge = 0;
+  double min_length = 0;  ///< the shortest edge it may have (0: size criterion off)
+  Vec3 centroid = Vec3::Zero();
+  bool shape_failed(double threshold) const { return scaled_jacobian < threshold; }
+  bool size_failed() const { return shortest_edge < min_length; }
+  /// cell_score's value: -2 + shortest / min_length when the size fails, else the Jacobian.
+  double score() const {
+    return size_failed() ? -2.0 + shortest_edge / min_length : scaled_jacobian;
+  }
+};
+
+/// Every cell with scaled Jacobian < threshold or shortest edge < its min_length, by id.
+template <class M>
+std::vector<CellFailure> failing_cells(const M& mesh, double threshold, const SizeCriterion& size);
+
+/// The `count` worst of `failures` (lowest score first, then by id).
+std::vector<CellFailure> worst_failures(std::vector<CellFailure> failures, std::size_t count);
+
+}  // namespace hexadapt
