@@ -176,11 +176,10 @@ TEST_F(MeasureCli, BadInputAndUsage) {
 TEST_F(MeasureCli, HelpDocumentsEveryOption) {
   std::string out;
   ASSERT_EQ(run("--help", &out), 0);
-  for (const char* opt : {"--threshold", "--bins", "--quality-field", "--json", "--threads", "-q",
-                          "-v", "--list", "--duplicate-tolerance", "--conformity-tolerance",
-                          "--material-array", "--plane", "--reference",
-                          "--discrepancy-field", "--target-array", "--min-edge",
-                          "--max-volume-error"})
+  for (const char* opt :
+       {"--threshold", "--bins", "--quality-field", "--json", "--threads", "-q", "-v", "--list",
+        "--duplicate-tolerance", "--conformity-tolerance", "--material-array", "--plane",
+        "--reference", "--discrepancy-field", "--target-array", "--min-edge", "--max-volume-error"})
     EXPECT_NE(out.find(opt), std::string::npos) << opt;
 }
 
@@ -252,8 +251,8 @@ TEST_F(MeasureCli, DiscrepancyAgainstReference) {
 TEST_F(MeasureCli, MaxVolumeErrorDecidesTheExitCode) {
   io::write_mesh(two_material_reference(), path("ref.vtu"));
   io::write_mesh(two_material_mesh(), path("mesh.vtu"));
-  const std::string args = path("mesh.vtu") + " -q --reference " + path("ref.vtu") + " --json " +
-                           path("report.json");
+  const std::string args =
+      path("mesh.vtu") + " -q --reference " + path("ref.vtu") + " --json " + path("report.json");
   ASSERT_EQ(run(args), 0) << slurp(path("stderr.txt"));
   auto j = report();
   EXPECT_NEAR(j["discrepancy"]["materials"][0]["volume_error"].get<double>(), 1.0 / 3, 1e-12);
@@ -308,9 +307,9 @@ TEST_F(MeasureCli, SliverFailsTheMinEdge) {
   io::MeshData ref = io::from_mesh(make_quad_grid(2, 2));
   ref.set_cell_array({"vf_a", 1, io::ScalarType::float64, {1, 1, 1, 1}});
   io::write_mesh(ref, path("ref.vtu"));
-  EXPECT_EQ(run(path("plain.vtu") + " --reference " + path("ref.vtu") + " --json " +
-                path("report.json")),
-            3);
+  EXPECT_EQ(
+      run(path("plain.vtu") + " --reference " + path("ref.vtu") + " --json " + path("report.json")),
+      3);
   j = report();
   EXPECT_EQ(j["size"]["local_size"], "reference");
   EXPECT_EQ(j["size"]["below_min_edge"]["count"], 1);

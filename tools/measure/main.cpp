@@ -202,10 +202,11 @@ void print_size(const SizeReport& s) {
     std::printf("  min edge: not checked (%s)\n", s.not_checked.c_str());
     return;
   }
-  std::printf("  min edge %.3g x local size (%s): shortest edge / local size min %.4g, %d cells "
-              "below%s\n",
-              s.min_edge, s.local_size == LocalSizeSource::array ? "local_size array" : "reference",
-              f.min_relative_edge, f.below_min_edge, s.passed() ? "" : "  FAILED");
+  std::printf(
+      "  min edge %.3g x local size (%s): shortest edge / local size min %.4g, %d cells "
+      "below%s\n",
+      s.min_edge, s.local_size == LocalSizeSource::array ? "local_size array" : "reference",
+      f.min_relative_edge, f.below_min_edge, s.passed() ? "" : "  FAILED");
 }
 
 int measure(const CLI::App& app, const cli::CommonOptions& common, const Args& a) {
@@ -296,14 +297,15 @@ int measure(const CLI::App& app, const cli::CommonOptions& common, const Args& a
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app("Measure a quad or hex mesh: quality (scaled Jacobian, shape), histogram, mesh "
-               "check (conformity, duplicate / unreferenced nodes, inverted cells, "
-               "manifoldness), purity, distances to node targets and, with --reference, the "
-               "discrepancy against the input fractions, cell sizes (edge ratio, time-step length, "
-               "shortest edge against the local input size) and the volume per material. Exit "
-               "codes: 0 passed, 1 usage, 2 bad input, 3 threshold, mesh check, --min-edge or "
-               "--max-volume-error not met, 4 internal error.",
-               "hexadapt-measure");
+  CLI::App app(
+      "Measure a quad or hex mesh: quality (scaled Jacobian, shape), histogram, mesh "
+      "check (conformity, duplicate / unreferenced nodes, inverted cells, "
+      "manifoldness), purity, distances to node targets, cell sizes (edge ratio, "
+      "time-step length, shortest edge against the local input size) and, with "
+      "--reference, the discrepancy and the volume per material against the input "
+      "fractions. Exit codes: 0 passed, 1 usage, 2 bad input, 3 threshold, mesh check, "
+      "--min-edge or --max-volume-error not met, 4 internal error.",
+      "hexadapt-measure");
   cli::CommonOptions common;
   Args args;
   add_options(app, args);

@@ -40,8 +40,7 @@ CellBins::CellBins(const io::MeshData& mesh, double bins_per_cell) : dim_(mesh.d
     const auto hi = bin_of(boxes_[static_cast<std::size_t>(c)].max());
     for (int k = lo[2]; k <= hi[2]; ++k)
       for (int j = lo[1]; j <= hi[1]; ++j)
-        for (int i = lo[0]; i <= hi[0]; ++i)
-          f(bin_index(i, j, k));
+        for (int i = lo[0]; i <= hi[0]; ++i) f(bin_index(i, j, k));
   };
   for (index_t c = 0; c < n; ++c) each_bin(c, [&](std::size_t b) { ++start_[b + 1]; });
   for (std::size_t b = 0; b < n_bins; ++b) start_[b + 1] += start_[b];

@@ -1,6 +1,6 @@
 // A uniform grid of bins over the bounding boxes of a mesh's cells: the candidate search
-// of the imprint and of the cell containing a point. Each cell is listed in every bin its box overlaps (CSR storage, built
-// serially so the lists are in increasing cell order).
+// of the imprint and of the cell containing a point. Each cell is listed in every bin its box
+// overlaps (CSR storage, built serially so the lists are in increasing cell order).
 #pragma once
 
 #include <Eigen/Geometry>

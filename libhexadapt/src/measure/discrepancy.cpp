@@ -40,8 +40,7 @@ int worst_material(const std::vector<MaterialVolume>& materials) {
 
 DiscrepancyReport discrepancy(const Imprint& im, const Fractions& f,
                               const DiscrepancyOptions& options) {
-  if (!(options.max_volume_error >= 0))
-    throw OptionError("max_volume_error must be >= 0");
+  if (!(options.max_volume_error >= 0)) throw OptionError("max_volume_error must be >= 0");
   if (f.n_cells() != im.n_cells || f.n_materials() != im.n_materials)
     throw InputError({}, {},
                      "discrepancy: " + std::to_string(f.n_cells()) + " cells and " +
@@ -96,9 +95,8 @@ std::string discrepancy_json(const DiscrepancyReport& r) {
                     {"imprinted_minus_input", m.imprinted - m.input},
                     {"volume_error", m.volume_error()}});
   j["materials"] = mats;
-  const auto* worst = r.worst_material >= 0
-                          ? &r.materials[static_cast<std::size_t>(r.worst_material)]
-                          : nullptr;
+  const auto* worst =
+      r.worst_material >= 0 ? &r.materials[static_cast<std::size_t>(r.worst_material)] : nullptr;
   j["worst_volume_error"] =
       worst ? nlohmann::ordered_json{{"name", worst->name}, {"value", worst->volume_error()}}
             : nlohmann::ordered_json(nullptr);

@@ -88,8 +88,8 @@ PointCells locate(const io::MeshData& grid, const std::vector<Vec3>& points,
     r.cell[k] = nearest_centroid(bins, centroids, points[k], candidates);
     outside[k] = 1;
   };
-  parallel_for_progress(static_cast<std::int64_t>(points.size()), progress, "size", one_point,
-                        from, to);
+  parallel_for_progress(static_cast<std::int64_t>(points.size()), progress, "size", one_point, from,
+                        to);
   r.outside = static_cast<index_t>(std::count(outside.begin(), outside.end(), 1));
   return r;
 }

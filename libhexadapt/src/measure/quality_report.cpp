@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cell_values.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/mesh_data.h"
-#include "cell_values.h"
 #include "purity.h"
 
 namespace hexadapt {

@@ -21,7 +21,7 @@ constexpr double inf = std::numeric_limits<double>::infinity();
 
 // Lower bounds of the histogram bins (docs/reports.md); the last bin is open.
 const std::vector<double> edge_ratio_bins = {1, 2, 4, 8, 16, 32, 64, 128};
-const std::vector<double> time_step_bins = {0,     1. / 64, 1. / 32, 1. / 16, 1. / 8,
+const std::vector<double> time_step_bins = {0,      1. / 64, 1. / 32, 1. / 16, 1. / 8,
                                             1. / 4, 1. / 2,  1,       2,       4};
 
 SizeHistogram histogram(const std::vector<double>& v, const std::vector<double>& lower) {
@@ -35,7 +35,8 @@ SizeHistogram histogram(const std::vector<double>& v, const std::vector<double>&
 
 void time_step_figures(const std::vector<double>& t, SizeFigures& f) {
   f.time_step = stats(t);
-  f.time_step_min_cell = CellId(static_cast<index_t>(std::min_element(t.begin(), t.end()) - t.begin()));
+  f.time_step_min_cell =
+      CellId(static_cast<index_t>(std::min_element(t.begin(), t.end()) - t.begin()));
   std::vector<double> sorted = t;
   const auto mid = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2);
   std::nth_element(sorted.begin(), mid, sorted.end());

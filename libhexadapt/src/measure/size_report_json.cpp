@@ -52,9 +52,12 @@ Json figures_json(const SizeFigures& f) {
 
 const char* source_name(LocalSizeSource s) {
   switch (s) {
-    case LocalSizeSource::array: return "array";
-    case LocalSizeSource::reference: return "reference";
-    case LocalSizeSource::none: break;
+    case LocalSizeSource::array:
+      return "array";
+    case LocalSizeSource::reference:
+      return "reference";
+    case LocalSizeSource::none:
+      break;
   }
   return nullptr;
 }

@@ -71,10 +71,10 @@ struct SizeFigures {
   /// Of time-step length / median: lower bounds 0, 1/64, 1/32, ..., 1/2, 1, 2, 4; not
   /// defined when the median is 0.
   SizeHistogram time_step_histogram;
-  bool has_local_size = false;  ///< the figures below were measured
-  double min_relative_edge = 0;  ///< min over cells of shortest edge / local size
-  double max_relative_edge = 0;  ///< max over cells of longest edge / local size
-  index_t below_min_edge = 0;    ///< cells with shortest edge < min_edge x local size
+  bool has_local_size = false;          ///< the figures below were measured
+  double min_relative_edge = 0;         ///< min over cells of shortest edge / local size
+  double max_relative_edge = 0;         ///< max over cells of longest edge / local size
+  index_t below_min_edge = 0;           ///< cells with shortest edge < min_edge x local size
   std::vector<SizeBreach> first_below;  ///< the lowest ids among them
 };
 
