@@ -41,10 +41,7 @@ void time_step_figures(const std::vector<double>& t, SizeFigures& f) {
   const auto mid = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2);
   std::nth_element(sorted.begin(), mid, sorted.end());
   f.time_step_median = *mid;
-  if (!(f.time_step_median > 0)) {
-    f.time_step_histogram.lower = time_step_bins;
-    return;
-  }
+  if (!(f.time_step_median > 0)) return;  // no histogram
   std::vector<double> relative(t.size());
   for (std::size_t c = 0; c < t.size(); ++c) relative[c] = t[c] / f.time_step_median;
   f.time_step_histogram = histogram(relative, time_step_bins);
