@@ -377,6 +377,30 @@ TEST(Discrepancy, RejectsMismatchedFractions) {
   EXPECT_THROW(imprint(broken, g, {0, 1, 0, 1}, 2), InputError);
 }
 
+// Fractions: a fills cells 0 and 1, b cells 2 and 3, c nothing; the output gives cell 2 to a.
+// Volume errors (output - input) / input: a +1/2, b -1/2, c undefined (no input volume).
+TEST(Discrepancy, VolumeErrorPerMaterial) {
+  const io::MeshData g = quads(2, 2, 0.5, 0.5);
+  Fractions f(4, {"a", "b", "c"});
+  for (CellId c : id_range<CellId>(4)) f(c, c.value() < 2 ? 0 : 1) = 1;
+  const Imprint im = imprint(g, g, {0, 0, 0, 1}, 3);
+  DiscrepancyOptions o;
+  const DiscrepancyReport open = discrepancy(im, f, o);
+  EXPECT_NEAR(open.materials[0].volume_error(), 0.5, 1e-12);
+  EXPECT_NEAR(open.materials[1].volume_error(), -0.5, 1e-12);
+  EXPECT_TRUE(std::isnan(open.materials[2].volume_error()));
+  EXPECT_EQ(open.worst_material, 0);  // ties go to the lowest index
+  EXPECT_TRUE(open.passed());         // no bound
+  o.max_volume_error = 0.5 + 1e-9;
+  EXPECT_TRUE(discrepancy(im, f, o).passed());
+  o.max_volume_error = 0.49;
+  EXPECT_FALSE(discrepancy(im, f, o).passed());
+  o.max_volume_error = -1;
+  EXPECT_THROW(discrepancy(im, f, o), OptionError);
+  // Nothing has input volume: no worst material, nothing to fail.
+  EXPECT_EQ(discrepancy(im, Fractions(4, {"a", "b", "c"}), {}).worst_material, -1);
+}
+
 TEST(TargetDistances, SumAndMax) {
   io::MeshData d = quads(1, 1);
   EXPECT_FALSE(target_distances(d).has_targets);

@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -175,17 +176,17 @@ TEST_F(MeasureCli, BadInputAndUsage) {
 TEST_F(MeasureCli, HelpDocumentsEveryOption) {
   std::string out;
   ASSERT_EQ(run("--help", &out), 0);
-  for (const char* opt : {"--threshold", "--bins", "--quality-field", "--json", "--threads", "-q",
-                          "-v", "--list", "--duplicate-tolerance", "--conformity-tolerance",
-                          "--material-array", "--plane", "--reference",
-                          "--discrepancy-field", "--target-array"})
+  for (const char* opt :
+       {"--threshold", "--bins", "--quality-field", "--json", "--threads", "-q", "-v", "--list",
+        "--duplicate-tolerance", "--conformity-tolerance", "--material-array", "--plane",
+        "--reference", "--discrepancy-field", "--target-array", "--min-edge", "--max-volume-error"})
     EXPECT_NE(out.find(opt), std::string::npos) << opt;
 }
 
-// A 4x4x1 reference grid whose interface x = 1.5 splits column 1 in halves, and a 2x2x1
-// output mesh (cells of size 2) with material 0 left of x = 2: the column of cells
-// x in [1, 2) is off by 2 * 0.5 per cell, the total is 4 * 1 = 4 of a volume of 16.
-TEST_F(MeasureCli, DiscrepancyAgainstReference) {
+// A 4x4x1 reference grid whose interface x = 1.5 splits column 1 in halves (material
+// volumes: left 6, right 10), and a 2x2x1 output mesh (cells of size 2) with material 0 left
+// of x = 2 (volumes 8 and 8).
+io::MeshData two_material_reference() {
   io::MeshData ref = io::from_mesh(make_hex_grid(4, 4, 1));
   io::DataArray left{"vf_left", 1, io::ScalarType::float64, {}}, right = left;
   right.name = "vf_right";
@@ -197,9 +198,20 @@ TEST_F(MeasureCli, DiscrepancyAgainstReference) {
   }
   ref.set_cell_array(left);
   ref.set_cell_array(right);
-  io::write_mesh(ref, path("ref.vtu"));
+  return ref;
+}
+
+io::MeshData two_material_mesh() {
   io::MeshData mesh = io::from_mesh(make_hex_grid(2, 2, 1, Vec3::Zero(), Vec3(2, 2, 1)));
   mesh.set_cell_array({"material", 1, io::ScalarType::int32, {0, 1, 0, 1}});
+  return mesh;
+}
+
+// The column of reference cells x in [1, 2) is off by 2 * 0.5 per cell, the total is
+// 4 * 1 = 4 of a volume of 16.
+TEST_F(MeasureCli, DiscrepancyAgainstReference) {
+  io::write_mesh(two_material_reference(), path("ref.vtu"));
+  io::MeshData mesh = two_material_mesh();
   io::DataArray target{"target", 3, io::ScalarType::float64, {}};
   for (const Vec3& p : mesh.points)
     for (double v : {p.x() + 0.5, p.y(), p.z()}) target.values.push_back(v);
@@ -233,6 +245,77 @@ TEST_F(MeasureCli, DiscrepancyAgainstReference) {
   EXPECT_EQ(run(path("bad.vtu") + " --reference " + path("ref.vtu")), 2);
   EXPECT_NE(slurp(path("stderr.txt")).find("bad.vtu"), std::string::npos);
   EXPECT_EQ(run(path("mesh.vtu") + " --discrepancy-field " + path("e.vtu")), 1);
+}
+
+// Volume errors: left (8 - 6) / 6 = 1/3, right (8 - 10) / 10 = -1/5.
+TEST_F(MeasureCli, MaxVolumeErrorDecidesTheExitCode) {
+  io::write_mesh(two_material_reference(), path("ref.vtu"));
+  io::write_mesh(two_material_mesh(), path("mesh.vtu"));
+  const std::string args =
+      path("mesh.vtu") + " -q --reference " + path("ref.vtu") + " --json " + path("report.json");
+  ASSERT_EQ(run(args), 0) << slurp(path("stderr.txt"));
+  auto j = report();
+  EXPECT_NEAR(j["discrepancy"]["materials"][0]["volume_error"].get<double>(), 1.0 / 3, 1e-12);
+  EXPECT_NEAR(j["discrepancy"]["materials"][1]["volume_error"].get<double>(), -0.2, 1e-12);
+  EXPECT_EQ(j["discrepancy"]["worst_volume_error"]["name"], "left");
+  EXPECT_NEAR(j["discrepancy"]["worst_volume_error"]["value"].get<double>(), 1.0 / 3, 1e-12);
+  EXPECT_TRUE(j["discrepancy"]["max_volume_error"].is_null());
+  EXPECT_TRUE(j["discrepancy"]["passed"].get<bool>());
+  EXPECT_EQ(run(args + " --max-volume-error 0.34"), 0);
+  EXPECT_TRUE(report()["passed"].get<bool>());
+  EXPECT_EQ(run(args + " --max-volume-error 0.3"), 3);
+  j = report();
+  EXPECT_FALSE(j["passed"].get<bool>());
+  EXPECT_FALSE(j["discrepancy"]["passed"].get<bool>());
+  EXPECT_DOUBLE_EQ(j["discrepancy"]["max_volume_error"].get<double>(), 0.3);
+  EXPECT_TRUE(j["quality"]["passed"].get<bool>());
+  EXPECT_EQ(j["exit_code"], 3);
+  // The input volumes come from the reference: no bound without it.
+  EXPECT_EQ(run(path("mesh.vtu") + " --max-volume-error 0.3"), 1);
+}
+
+// 2x2 unit squares whose node (1, 0) slid to (0.05, 0): cell 0 has an edge of 0.05 local
+// sizes, below the default --min-edge 0.1.
+TEST_F(MeasureCli, SliverFailsTheMinEdge) {
+  io::MeshData d = io::from_mesh(make_quad_grid(2, 2));
+  d.points[1] = Vec3(0.05, 0, 0);
+  d.set_cell_array({"material", 1, io::ScalarType::int32, {0, 0, 0, 0}});
+  io::write_mesh(d, path("plain.vtu"));
+  d.set_cell_array({"local_size", 1, io::ScalarType::float64, {1, 1, 1, 1}});
+  io::write_mesh(d, path("sliver.vtu"));
+  std::string out;
+  EXPECT_EQ(run(path("sliver.vtu") + " --json " + path("report.json"), &out), 3);
+  EXPECT_NE(out.find("min edge 0.1 x local size"), std::string::npos) << out;
+  auto j = report();
+  EXPECT_FALSE(j["passed"].get<bool>());
+  EXPECT_TRUE(j["quality"]["passed"].get<bool>());
+  EXPECT_FALSE(j["size"]["passed"].get<bool>());
+  EXPECT_EQ(j["size"]["local_size"], "array");
+  EXPECT_EQ(j["size"]["below_min_edge"]["count"], 1);
+  EXPECT_EQ(j["size"]["below_min_edge"]["first"][0]["cell"], 0);
+  EXPECT_NEAR(j["size"]["relative_edge"]["min"].get<double>(), 0.05, 1e-12);
+  EXPECT_EQ(run(path("sliver.vtu") + " --min-edge 0 --json " + path("report.json")), 0);
+  j = report();
+  EXPECT_TRUE(j["passed"].get<bool>());
+  EXPECT_FALSE(j["size"]["checked"].get<bool>());
+  EXPECT_EQ(run(path("sliver.vtu") + " -q --min-edge 0.04"), 0);
+  // No local size: measured without it, not checked, not failed.
+  EXPECT_EQ(run(path("plain.vtu") + " --json " + path("report.json"), &out), 0);
+  EXPECT_NE(out.find("no local_size array and no --reference"), std::string::npos) << out;
+  EXPECT_EQ(report()["size"]["not_checked"], "no local_size array and no --reference");
+  // The reference grid gives the local size: unit squares, the same verdict.
+  io::MeshData ref = io::from_mesh(make_quad_grid(2, 2));
+  ref.set_cell_array({"vf_a", 1, io::ScalarType::float64, {1, 1, 1, 1}});
+  io::write_mesh(ref, path("ref.vtu"));
+  EXPECT_EQ(
+      run(path("plain.vtu") + " --reference " + path("ref.vtu") + " --json " + path("report.json")),
+      3);
+  j = report();
+  EXPECT_EQ(j["size"]["local_size"], "reference");
+  EXPECT_EQ(j["size"]["below_min_edge"]["count"], 1);
+  EXPECT_NEAR(j["size"]["time_step_ratio"].get<double>(), 0.525 / std::sqrt(0.95 * 0.95 + 1),
+              1e-12);
+  EXPECT_EQ(run(path("sliver.vtu") + " --min-edge -1"), 1);
 }
 
 }  // namespace

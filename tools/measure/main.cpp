@@ -1,7 +1,9 @@
 // hexadapt-measure: measures any quad / hex mesh file (DESIGN sec. 2): quality statistics
 // and histogram, cells below the threshold, the mesh check, purity, node-to-target
-// distances and, with --reference, the discrepancy of paper eq. 5. Exit 3 when the
-// threshold is not met or the mesh check fails. Report fields: docs/reports.md.
+// distances, cell sizes and, with --reference, the discrepancy of paper eq. 5 and the
+// volume per material. Exit 3 when the threshold, the mesh check, the min-edge criterion or
+// --max-volume-error is not met. Report fields: docs/reports.md.
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <map>
@@ -13,6 +15,7 @@
 #include "hexadapt/measure/discrepancy.h"
 #include "hexadapt/measure/imprint.h"
 #include "hexadapt/measure/quality_report.h"
+#include "hexadapt/measure/size_report.h"
 #include "hexadapt/measure/target_distance.h"
 #include "hexadapt/mesh/fractions.h"
 
@@ -28,6 +31,8 @@ struct Args {
   std::string target_array = "target";
   cli::InputOptions in;  ///< --plane, and how the reference fractions are read
   QualityReportOptions report;
+  SizeReportOptions size;
+  DiscrepancyOptions volume;
 };
 
 void add_options(CLI::App& app, Args& a) {
@@ -67,6 +72,16 @@ void add_options(CLI::App& app, Args& a) {
   app.add_option("--target-array", a.target_array,
                  "Point array (3 components) of node targets for the distances")
       ->capture_default_str();
+  app.add_option("--min-edge", a.size.min_edge,
+                 "Every cell's shortest edge must be at least this times its local input size "
+                 "(the 'local_size' cell array, or the mean edge of the --reference cell holding "
+                 "its centroid); 0: not checked")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--max-volume-error", a.volume.max_volume_error,
+                 "Every material's volume must be within this share of its input volume "
+                 "(needs --reference; default: not checked)")
+      ->check(CLI::NonNegativeNumber);
   cli::add_input_options(app, a.in);
 }
 
@@ -153,7 +168,7 @@ DiscrepancyRun measure_discrepancy(const Args& a, const io::MeshData& mesh, cons
   }
   times.emplace_back("imprint", timer.seconds());
   timer.restart();
-  run.report = discrepancy(im, fractions);
+  run.report = discrepancy(im, fractions, a.volume);
   times.emplace_back("discrepancy", timer.seconds());
   return run;
 }
@@ -171,12 +186,33 @@ void print_discrepancy(const DiscrepancyReport& d) {
   std::printf("  discrepancy  total %.6g  relative %.6g  max per cell %.6g (cell %d)\n", d.total,
               d.relative, d.max_cell, d.max_cell_id.value());
   for (const auto& m : d.materials)
-    std::printf("  volume %-12s input %.9g  output %.9g  imprinted %.9g\n", m.name.c_str(), m.input,
-                m.output, m.imprinted);
+    std::printf("  volume %-12s input %.9g  output %.9g  imprinted %.9g  error %+.3g%s\n",
+                m.name.c_str(), m.input, m.output, m.imprinted, m.volume_error(),
+                std::abs(m.volume_error()) > d.max_volume_error ? "  FAILED" : "");
+}
+
+void print_size(const SizeReport& s) {
+  const auto& f = s.mesh;
+  std::printf("  size  edge ratio min %.4g  mean %.4g  max %.4g  time step min %.6g (cell %d)",
+              f.edge_ratio.min, f.edge_ratio.mean, f.edge_ratio.max, f.time_step.min,
+              f.time_step_min_cell.value());
+  if (s.has_reference) std::printf("  %.4g x the input's", s.time_step_ratio);
+  std::printf("\n");
+  if (!s.checked()) {
+    std::printf("  min edge: not checked (%s)\n", s.not_checked.c_str());
+    return;
+  }
+  std::printf(
+      "  min edge %.3g x local size (%s): shortest edge / local size min %.4g, %d cells "
+      "below%s\n",
+      s.min_edge, s.local_size == LocalSizeSource::array ? "local_size array" : "reference",
+      f.min_relative_edge, f.below_min_edge, s.passed() ? "" : "  FAILED");
 }
 
 int measure(const CLI::App& app, const cli::CommonOptions& common, const Args& a) {
   if (!a.quality_field.empty()) cli::refuse_overwrite(a.quality_field, {a.input, a.reference});
+  if (app.count("--max-volume-error") > 0 && a.reference.empty())
+    throw OptionError("--max-volume-error needs --reference (the input volumes)");
   if (!a.discrepancy_field.empty()) {
     if (a.reference.empty())
       throw OptionError("--discrepancy-field needs --reference (the grid the field lives on)");
@@ -204,6 +240,17 @@ int measure(const CLI::App& app, const cli::CommonOptions& common, const Args& a
   times.emplace_back("quality", timer.seconds());
   DiscrepancyRun disc;
   if (!a.reference.empty()) disc = measure_discrepancy(a, data, bar, times);
+  timer.restart();
+  SizeReport size;
+  try {
+    SizeReportOptions options = a.size;
+    options.max_listed = a.report.max_listed;
+    options.progress = bar;
+    size = size_report(data, a.reference.empty() ? nullptr : &disc.reference, options);
+  } catch (const InputError& e) {
+    rethrow_with_file(e, a.input);
+  }
+  times.emplace_back("size", timer.seconds());
   if (!a.discrepancy_field.empty())
     cli::timed_phase(times, bar, "write_discrepancy", [&] {
       write_discrepancy_field(app, disc, a.discrepancy_field);
@@ -214,7 +261,9 @@ int measure(const CLI::App& app, const cli::CommonOptions& common, const Args& a
       write_quality_field(app, data, a.quality_field);
       return 0;
     });
-  const int code = report.passed() ? cli::ok : cli::target_missed;
+  const bool passed =
+      report.passed() && size.passed() && (a.reference.empty() || disc.report.passed());
+  const int code = passed ? cli::ok : cli::target_missed;
   cli::Json json = cli::report_header(app);
   json["input"] = a.input;
   const cli::Json sections = cli::Json::parse(quality_report_json(report));
@@ -225,8 +274,11 @@ int measure(const CLI::App& app, const cli::CommonOptions& common, const Args& a
         json["reference"] = a.reference;
         json["discrepancy"] = cli::Json::parse(discrepancy_json(disc.report));
       }
+      json["size"] = cli::Json::parse(size_report_json(size));
+      json[key] = passed;
+    } else {
+      json[key] = value;
     }
-    json[key] = value;
   }
   json["exit_code"] = code;
   json["times"] = cli::phase_times_json(times);
@@ -237,6 +289,7 @@ int measure(const CLI::App& app, const cli::CommonOptions& common, const Args& a
       std::printf("  distances to targets: dist %.6g  max %.6g  (%d nodes)\n", distances.sum,
                   distances.max, distances.nodes);
     if (!a.reference.empty()) print_discrepancy(disc.report);
+    print_size(size);
   }
   return code;
 }
@@ -244,12 +297,15 @@ int measure(const CLI::App& app, const cli::CommonOptions& common, const Args& a
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app("Measure a quad or hex mesh: quality (scaled Jacobian, shape), histogram, mesh "
-               "check (conformity, duplicate / unreferenced nodes, inverted cells, "
-               "manifoldness), purity, distances to node targets and, with --reference, the "
-               "discrepancy against the input fractions. Exit codes: 0 passed, 1 usage, 2 bad input, "
-               "3 threshold not met or mesh check failed, 4 internal error.",
-               "hexadapt-measure");
+  CLI::App app(
+      "Measure a quad or hex mesh: quality (scaled Jacobian, shape), histogram, mesh "
+      "check (conformity, duplicate / unreferenced nodes, inverted cells, "
+      "manifoldness), purity, distances to node targets, cell sizes (edge ratio, "
+      "time-step length, shortest edge against the local input size) and, with "
+      "--reference, the discrepancy and the volume per material against the input "
+      "fractions. Exit codes: 0 passed, 1 usage, 2 bad input, 3 threshold, mesh check, "
+      "--min-edge or --max-volume-error not met, 4 internal error.",
+      "hexadapt-measure");
   cli::CommonOptions common;
   Args args;
   add_options(app, args);

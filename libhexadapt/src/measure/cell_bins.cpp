@@ -40,11 +40,7 @@ CellBins::CellBins(const io::MeshData& mesh, double bins_per_cell) : dim_(mesh.d
     const auto hi = bin_of(boxes_[static_cast<std::size_t>(c)].max());
     for (int k = lo[2]; k <= hi[2]; ++k)
       for (int j = lo[1]; j <= hi[1]; ++j)
-        for (int i = lo[0]; i <= hi[0]; ++i)
-          f((static_cast<std::size_t>(k) * static_cast<std::size_t>(n_[1]) +
-             static_cast<std::size_t>(j)) *
-                static_cast<std::size_t>(n_[0]) +
-            static_cast<std::size_t>(i));
+        for (int i = lo[0]; i <= hi[0]; ++i) f(bin_index(i, j, k));
   };
   for (index_t c = 0; c < n; ++c) each_bin(c, [&](std::size_t b) { ++start_[b + 1]; });
   for (std::size_t b = 0; b < n_bins; ++b) start_[b + 1] += start_[b];
@@ -72,10 +68,7 @@ void CellBins::query(const Eigen::AlignedBox3d& q, std::vector<index_t>& out) co
   for (int k = lo[2]; k <= hi[2]; ++k)
     for (int j = lo[1]; j <= hi[1]; ++j)
       for (int i = lo[0]; i <= hi[0]; ++i) {
-        const std::size_t b = (static_cast<std::size_t>(k) * static_cast<std::size_t>(n_[1]) +
-                               static_cast<std::size_t>(j)) *
-                                  static_cast<std::size_t>(n_[0]) +
-                              static_cast<std::size_t>(i);
+        const std::size_t b = bin_index(i, j, k);
         for (std::size_t s = start_[b]; s < start_[b + 1]; ++s) {
           const index_t c = items_[s];
           const Eigen::AlignedBox3d o = q.intersection(box(c));
@@ -86,6 +79,20 @@ void CellBins::query(const Eigen::AlignedBox3d& q, std::vector<index_t>& out) co
       }
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
+void CellBins::query_point(const Eigen::Vector3d& p, std::vector<index_t>& out) const {
+  out.clear();
+  auto holds = [&](const Eigen::AlignedBox3d& b) {
+    for (int a = 0; a < dim_; ++a)
+      if (!(b.min()[a] <= p[a] && p[a] <= b.max()[a])) return false;
+    return true;
+  };
+  if (items_.empty() || !holds(domain_)) return;
+  const auto b = bin_of(p);
+  const std::size_t bin = bin_index(b[0], b[1], b[2]);
+  for (std::size_t s = start_[bin]; s < start_[bin + 1]; ++s)
+    if (holds(box(items_[s]))) out.push_back(items_[s]);
 }
 
 }  // namespace hexadapt

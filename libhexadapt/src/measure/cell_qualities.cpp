@@ -1,8 +1,6 @@
 // Per-cell scaled Jacobian and shape straight from file data, so that meshes the kernels
 // refuse are still measured.
-#include <string>
-
-#include "hexadapt/core/error.h"
+#include "cell_values.h"
 #include "hexadapt/core/parallel_progress.h"
 #include "hexadapt/io/mesh_data.h"
 #include "hexadapt/measure/quality_report.h"
@@ -11,28 +9,9 @@
 
 namespace hexadapt {
 
-namespace {
-
-template <std::size_t N>
-std::array<Vec3, N> corners(const io::MeshData& data, std::size_t c) {
-  std::array<Vec3, N> p;
-  for (std::size_t k = 0; k < N; ++k) p[k] = data.points[data.cells[c * N + k].idx()];
-  return p;
-}
-
-}  // namespace
-
 CellQualities cell_qualities(const io::MeshData& data, const Progress& progress, double from,
                              double to) {
-  const index_t n_points = data.n_points();
-  for (std::size_t i = 0; i < data.cells.size(); ++i) {
-    const NodeId n = data.cells[i];
-    if (!n.valid() || n.value() >= n_points)
-      throw InputError(
-          "", "cell " + std::to_string(i / static_cast<std::size_t>(data.nodes_per_cell())),
-          "refers to node " + std::to_string(n.value()) + " but there are " +
-              std::to_string(n_points) + " points");
-  }
+  check_node_ids(data);
   CellQualities q;
   const auto n = static_cast<std::size_t>(data.n_cells());
   q.scaled_jacobian.resize(n);

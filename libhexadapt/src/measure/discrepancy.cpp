@@ -2,6 +2,7 @@
 #include "hexadapt/measure/discrepancy.h"
 
 #include <cmath>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "hexadapt/core/error.h"
@@ -10,7 +11,36 @@
 
 namespace hexadapt {
 
-DiscrepancyReport discrepancy(const Imprint& im, const Fractions& f) {
+double MaterialVolume::volume_error() const {
+  return input != 0 ? (output - input) / input : std::numeric_limits<double>::quiet_NaN();
+}
+
+bool DiscrepancyReport::passed() const {
+  for (const auto& m : materials)
+    if (std::abs(m.volume_error()) > max_volume_error) return false;
+  return true;
+}
+
+namespace {
+
+int worst_material(const std::vector<MaterialVolume>& materials) {
+  int worst = -1;
+  double largest = -1;
+  for (std::size_t m = 0; m < materials.size(); ++m) {
+    const double e = std::abs(materials[m].volume_error());  // NaN (no input) never wins
+    if (e > largest) {
+      largest = e;
+      worst = static_cast<int>(m);
+    }
+  }
+  return worst;
+}
+
+}  // namespace
+
+DiscrepancyReport discrepancy(const Imprint& im, const Fractions& f,
+                              const DiscrepancyOptions& options) {
+  if (!(options.max_volume_error >= 0)) throw OptionError("max_volume_error must be >= 0");
   if (f.n_cells() != im.n_cells || f.n_materials() != im.n_materials)
     throw InputError({}, {},
                      "discrepancy: " + std::to_string(f.n_cells()) + " cells and " +
@@ -43,6 +73,8 @@ DiscrepancyReport discrepancy(const Imprint& im, const Fractions& f) {
     }
   }
   r.relative = r.input_volume > 0 ? r.total / r.input_volume : 0;
+  r.max_volume_error = options.max_volume_error;
+  r.worst_material = worst_material(r.materials);
   return r;
 }
 
@@ -60,8 +92,16 @@ std::string discrepancy_json(const DiscrepancyReport& r) {
                     {"input", m.input},
                     {"output", m.output},
                     {"imprinted", m.imprinted},
-                    {"imprinted_minus_input", m.imprinted - m.input}});
+                    {"imprinted_minus_input", m.imprinted - m.input},
+                    {"volume_error", m.volume_error()}});
   j["materials"] = mats;
+  const auto* worst =
+      r.worst_material >= 0 ? &r.materials[static_cast<std::size_t>(r.worst_material)] : nullptr;
+  j["worst_volume_error"] =
+      worst ? nlohmann::ordered_json{{"name", worst->name}, {"value", worst->volume_error()}}
+            : nlohmann::ordered_json(nullptr);
+  j["max_volume_error"] = r.max_volume_error;
+  j["passed"] = r.passed();
   return j.dump();
 }
 

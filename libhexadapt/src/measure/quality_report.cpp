@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cell_values.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/mesh_data.h"
 #include "purity.h"
@@ -10,17 +11,6 @@
 namespace hexadapt {
 
 namespace {
-
-QualityStats stats(const std::vector<double>& v) {
-  QualityStats s;
-  if (v.empty()) return s;
-  s.min = *std::min_element(v.begin(), v.end());
-  s.max = *std::max_element(v.begin(), v.end());
-  double sum = 0;  // serial, in cell order: the same bytes whatever the thread count
-  for (double x : v) sum += x;
-  s.mean = sum / double(v.size());
-  return s;
-}
 
 QualityHistogram histogram(const std::vector<double>& v, int bins) {
   QualityHistogram h;
@@ -32,13 +22,6 @@ QualityHistogram histogram(const std::vector<double>& v, int bins) {
     ++h.counts[b];
   }
   return h;
-}
-
-Vec3 centroid(const io::MeshData& data, std::size_t c) {
-  const auto npc = static_cast<std::size_t>(data.nodes_per_cell());
-  Vec3 s = Vec3::Zero();
-  for (std::size_t k = 0; k < npc; ++k) s += data.points[data.cells[c * npc + k].idx()];
-  return s / double(npc);
 }
 
 void run_check(const io::MeshData& data, const QualityReportOptions& options,
