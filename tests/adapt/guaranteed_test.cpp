@@ -38,11 +38,12 @@ void check_guaranteed(const M& grid, const AdaptResult<M>& r, double threshold =
   EXPECT_LE(r.dist_final, r.dist_init);
   index_t blocked = 0;
   for (NodeId v : id_range<NodeId>(r.mesh.n_nodes())) {
-    EXPECT_EQ(r.blocked[v] != 0, r.has_target[v] && r.distance[v] > 0);
+    EXPECT_EQ(r.blocked[v] != 0, r.has_target[v] && !r.near_interface[v]);
+    EXPECT_LE(r.surface_distance[v], r.distance[v] + 1e-12);
     blocked += r.blocked[v] != 0;
   }
   EXPECT_EQ(blocked, r.n_blocked);
-  EXPECT_EQ(r.n_reached + r.n_blocked, [&] {
+  EXPECT_EQ(r.n_near_interface + r.n_blocked, [&] {
     index_t n = 0;
     for (char h : r.has_target) n += h != 0;
     return n;

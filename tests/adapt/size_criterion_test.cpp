@@ -69,6 +69,25 @@ TEST(SizeCriterion, AMoveIsRefusedOnlyBecauseOfSize) {
   EXPECT_TRUE(failing_cells(mesh, 0.3, size).empty());
 }
 
+// Given its surface (here the line y = 1 through the target), the node refused at 0.109 from
+// the corner slides along it instead: the nearest ring point that keeps the edge >= 0.1 is
+// 1/16 of its mean edge length (1) short of the target.
+TEST(SizeCriterion, ANodeRefusedBySizeSlidesOntoItsSurface) {
+  QuadMesh mesh = two_squares();
+  const Targets t = squeeze_target(mesh);
+  IdVector<NodeId, NodeConstraint> surface(static_cast<std::size_t>(mesh.n_nodes()));
+  const NodeId top = node_at(mesh, Vec3(1, 1, 0));
+  surface[top].add(Vec3(0, 1, 0));
+  const SizeCriterion size = size_criterion(mesh, 0.1);
+  const MoveResult r = controlled_move(mesh, t, MoveOptions{}, size, &surface);
+  EXPECT_EQ(r.n_reached, 0);
+  EXPECT_EQ(r.n_slid, 1);
+  EXPECT_TRUE(r.on_surface[top]);
+  EXPECT_NEAR((mesh.point(top) - Vec3(1.95 - 0.0625, 1, 0)).norm(), 0, 1e-12);
+  EXPECT_NEAR(surface_distance(mesh.point(top), t.position[top], surface[top]), 0, 1e-12);
+  EXPECT_TRUE(failing_cells(mesh, 0.3, size).empty());
+}
+
 TEST(SizeCriterion, APillowLayerIsGivenTheThicknessTheCriterionNeeds) {
   const HexMesh mesh = make_hex_grid(3, 3, 3);
   IdVector<CellId, char> in_set(static_cast<std::size_t>(mesh.n_cells()), 0);

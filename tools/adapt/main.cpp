@@ -79,8 +79,13 @@ Json result_json(const AdaptResult<M>& r, index_t input_cells, double threshold)
   j["nodes"] = r.mesh.n_nodes();
   j["interface_nodes"] = r.n_interface_nodes;
   j["reached"] = r.n_reached;
+  j["near_interface"] = r.n_near_interface;
   j["dist_init"] = r.dist_init;
   j["dist_final"] = r.dist_final;
+  j["surface_dist_init"] = r.surface_dist_init;
+  j["surface_dist_final"] = r.surface_dist_final;
+  j["surface_dist_ratio"] = r.surface_dist_init > 0 ? r.surface_dist_final / r.surface_dist_init
+                                                    : 0.0;
   j["min_quality"] = r.min_quality;
   j["cells_below_threshold"] = r.n_below_threshold;
   j["cells_inverted"] = r.n_inverted;

@@ -43,7 +43,7 @@ AdaptResult<M> run_base_pipeline(const M& grid, const Fractions& fractions,
 
   r.mesh = std::move(p.mesh);
   r.material = std::move(p.material);
-  finish_result(r, target, has, size.remapped(p.cell_origin.raw()), options);
+  finish_result(r, target, has, size.remapped(p.cell_origin.raw()), nullptr, options);
   return r;
 }
 

@@ -1,5 +1,7 @@
 #include "hexadapt/adapt/controlled_move.h"
 
+#include <array>
+#include <cmath>
 #include <string>
 
 #include "hexadapt/adapt/local_topology.h"
@@ -22,11 +24,94 @@ bool try_position(M& mesh, NodeId n, const Vec3& p, double threshold, const Size
   return false;
 }
 
+// An orthonormal basis of the displacements a constraint allows (2D meshes: in the xy plane).
+template <int Dim>
+std::vector<Vec3> tangent_basis(const NodeConstraint& c) {
+  std::vector<Vec3> basis;
+  for (int a = 0; a < Dim; ++a) {
+    Vec3 d = c.project(Vec3::Unit(a));
+    for (const Vec3& b : basis) d -= d.dot(b) * b;
+    if (d.norm() > 1e-6) basis.push_back(d.normalized());
+  }
+  return basis;
+}
+
+// Unit directions in the span of the basis: both ways along a line; eight, 45 degrees apart,
+// in a plane.
+std::vector<Vec3> ring_directions(const std::vector<Vec3>& basis) {
+  if (basis.size() == 1) return {basis[0], -basis[0]};
+  std::vector<Vec3> out;
+  const double s = std::sqrt(0.5);
+  const std::array<Vec3, 4> half = {basis[0], Vec3(s * (basis[0] + basis[1])), basis[1],
+                                    Vec3(s * (basis[1] - basis[0]))};
+  for (const Vec3& d : half) out.insert(out.end(), {d, Vec3(-d)});
+  return out;
+}
+
+// Puts n on the nearest ring of points of its surface around its target that holds a point
+// where every cell around n keeps the criteria (the best such point of the ring). Returns
+// false and leaves n where it was when no ring does.
+template <class M>
+bool slide(M& mesh, NodeId n, const Vec3& target, const NodeConstraint& surface,
+           double threshold, const SizeCriterion& size) {
+  const std::vector<Vec3> basis = tangent_basis<M::dim>(surface);
+  if (basis.empty()) return false;
+  const std::vector<NodeId> around = edge_neighbours(mesh, n);
+  if (around.empty()) return false;
+  const Vec3 old = mesh.point(n);
+  double h = 0;
+  for (NodeId o : around) h += (mesh.point(o) - old).norm();
+  h /= static_cast<double>(around.size());
+  const std::vector<Vec3> directions = ring_directions(basis);
+  for (double r : {0.0625, 0.125, 0.25, 0.375, 0.5}) {
+    double best = threshold;
+    Vec3 best_p = old;
+    bool found = false;
+    for (const Vec3& d : directions) {
+      const Vec3 p = target + r * h * d;
+      mesh.set_point(n, p);
+      const double s = min_score_around(mesh, n, size);
+      if (s >= best && (!found || s > best)) {
+        best = s;
+        best_p = p;
+        found = true;
+      }
+    }
+    mesh.set_point(n, best_p);
+    if (found) return true;
+  }
+  return false;
+}
+
+// Every node left short of its target tries to slide onto its surface; nodes sharing no cell
+// in parallel, in a fixed order.
+template <class M>
+void slide_blocked(M& mesh, const Targets& targets, const IdVector<NodeId, NodeConstraint>& surface,
+                   double threshold, const SizeCriterion& size, MoveResult& out) {
+  std::vector<NodeId> blocked;
+  for (NodeId n : id_range<NodeId>(mesh.n_nodes()))
+    if (!out.on_surface[n]) blocked.push_back(n);
+  for (const auto& set : independent_node_sets(mesh, blocked)) {
+    std::vector<char> slid(set.size(), 0);
+    for_each_item(set.size(), [&](std::int64_t i) {
+      const NodeId n = set[static_cast<std::size_t>(i)];
+      slid[static_cast<std::size_t>(i)] =
+          slide(mesh, n, targets.position[n], surface[n], threshold, size);
+    });
+    for (std::size_t i = 0; i < set.size(); ++i)
+      if (slid[i]) {
+        out.on_surface[set[i]] = 1;
+        ++out.n_slid;
+      }
+  }
+}
+
 }  // namespace
 
 template <class M>
 MoveResult controlled_move(M& mesh, const Targets& targets, const MoveOptions& options,
-                           const SizeCriterion& size) {
+                           const SizeCriterion& size,
+                           const IdVector<NodeId, NodeConstraint>* surface) {
   if (options.steps < 1)
     throw OptionError("steps must be at least 1, got " + std::to_string(options.steps));
   const auto nn = static_cast<std::size_t>(mesh.n_nodes());
@@ -78,6 +163,8 @@ MoveResult controlled_move(M& mesh, const Targets& targets, const MoveOptions& o
       out.reached[n] = 1;
       ++out.n_reached;
     }
+  out.on_surface = out.reached;
+  if (surface) slide_blocked(mesh, targets, *surface, options.threshold, size, out);
   out.dist = target_distance(mesh, targets);
   return out;
 }
@@ -86,6 +173,7 @@ template <class M>
 MoveResult direct_move(M& mesh, const Targets& targets) {
   MoveResult out;
   out.reached.assign(static_cast<std::size_t>(mesh.n_nodes()), 1);
+  out.on_surface = out.reached;
   for (NodeId n : id_range<NodeId>(mesh.n_nodes()))
     if (targets.has[n] && mesh.point(n) != targets.position[n]) {
       mesh.set_point(n, targets.position[n]);
@@ -99,7 +187,8 @@ MoveResult direct_move(M& mesh, const Targets& targets) {
 
 #define HEXADAPT_INSTANTIATE(M)                                                   \
   template MoveResult controlled_move<M>(M&, const Targets&, const MoveOptions&, \
-                                         const SizeCriterion&);                 \
+                                         const SizeCriterion&,                  \
+                                         const IdVector<NodeId, NodeConstraint>*); \
   template MoveResult direct_move<M>(M&, const Targets&);
 HEXADAPT_INSTANTIATE(QuadMesh)
 HEXADAPT_INSTANTIATE(HexMesh)

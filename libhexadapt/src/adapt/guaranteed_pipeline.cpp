@@ -72,7 +72,7 @@ int move_smooth_loop(M& mesh, const Targets& targets, MoveResult move,
     const SmoothResult s =
         smooth(mesh, movable, sliding, options.smooth, loops == 1 ? nullptr : &start, size);
     const std::vector<Vec3> before = points_of(mesh);
-    move = controlled_move(mesh, targets, mo, size);
+    move = controlled_move(mesh, targets, mo, size, &sliding);
     start = nodes_around_moves(mesh, before, s.unsettled);
     const bool better = move.dist < best;
     if (better) {
@@ -96,7 +96,7 @@ std::vector<NodeId> pillow_cavities(M& mesh, IdVector<CellId, int>& material, Ta
                                     AdaptResult<M>& r, const AdaptOptions& options) {
   std::vector<NodeId> seeds;
   for (NodeId v : id_range<NodeId>(mesh.n_nodes()))
-    if (targets.has[v] && !first.reached[v]) seeds.push_back(v);
+    if (targets.has[v] && !first.on_surface[v]) seeds.push_back(v);
   if (seeds.empty() || options.cavity_range < 1) return {};
   CavityOptions co;
   co.range = options.cavity_range;
@@ -146,7 +146,7 @@ void diagnose(AdaptResult<M>& r, const std::vector<NodeId>& failed_seeds) {
   std::vector<std::pair<CellId, double>> cells;
   IdVector<CellId, char> seen(static_cast<std::size_t>(mesh.n_cells()), 0);
   for (NodeId v : id_range<NodeId>(mesh.n_nodes())) {
-    if (!r.has_target[v] || !(r.distance[v] > 0)) continue;
+    if (!r.has_target[v] || r.near_interface[v]) continue;
     r.blocked[v] = static_cast<char>(std::binary_search(failed_seeds.begin(), failed_seeds.end(), v)
                                          ? BlockReason::cavity
                                          : BlockReason::quality);
@@ -185,7 +185,7 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
     r.mesh = std::move(mesh);
     r.material = material;
     finish_result(r, IdVector<NodeId, Vec3>(nn, Vec3::Zero()), IdVector<NodeId, char>(nn, 0), size,
-                  options);
+                  nullptr, options);
     r.blocked.assign(nn, 0);
     return r;
   }
@@ -200,8 +200,10 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
   MoveOptions mo;
   mo.threshold = options.threshold;
   mo.steps = options.steps;
-  const MoveResult first = controlled_move(mesh, targets, mo, size);
+  const auto grid_sliding = sliding_constraints(grid_boundary, targets);
+  const MoveResult first = controlled_move(mesh, targets, mo, size, &grid_sliding);
   r.dist_init = first.dist;
+  r.surface_dist_init = surface_distance_sum(mesh, targets, grid_sliding);
   record_step(r, mesh, "move", clock, options.progress, 0.3);
 
   IdVector<CellId, int> out_material = material;
@@ -209,14 +211,13 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
                                                      fractions.n_materials(), r, options);
   record_step(r, mesh, "cavity", clock, options.progress, 0.5);
 
-  const auto boundary = boundary_constraints(mesh, options.boundary);
-  r.loops = move_smooth_loop(mesh, targets, first, sliding_constraints(boundary, targets), mo, size,
-                             options);
+  const auto sliding = sliding_constraints(boundary_constraints(mesh, options.boundary), targets);
+  r.loops = move_smooth_loop(mesh, targets, first, sliding, mo, size, options);
   record_step(r, mesh, "move-smooth", clock, options.progress, 1.0);
 
   r.mesh = std::move(mesh);
   r.material = std::move(out_material);
-  finish_result(r, targets.position, targets.has, size, options);
+  finish_result(r, targets.position, targets.has, size, &sliding, options);
   diagnose(r, failed);
   if (good_input && (r.n_below_threshold > 0 || r.n_below_min_edge > 0))
     throw InternalError("guaranteed pipeline left " + std::to_string(r.n_below_threshold) +

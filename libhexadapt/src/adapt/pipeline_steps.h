@@ -20,27 +20,59 @@ void record_step(AdaptResult<M>& r, const M& mesh, const std::string& name, Time
   if (progress) progress("adapt", done);
 }
 
+// Sum over the nodes with targets of their distance to their surface.
+template <class M>
+double surface_distance_sum(const M& mesh, const Targets& targets,
+                            const IdVector<NodeId, NodeConstraint>& surface) {
+  double s = 0;
+  for (NodeId v : id_range<NodeId>(mesh.n_nodes()))
+    if (targets.has[v]) s += surface_distance(mesh.point(v), targets.position[v], surface[v]);
+  return s;
+}
+
+// Mean local size of the cells around n.
+template <class M>
+double node_local_size(const M& mesh, NodeId n, const SizeCriterion& size) {
+  double h = 0;
+  int count = 0;
+  for (CellId c : mesh.node_cells(n)) {
+    h += size.local_size[c];
+    ++count;
+  }
+  return count ? h / count : 0.0;
+}
+
 // Fills the distances, quality and size figures of the output r.mesh; `size`: the size
-// criterion on its cells.
+// criterion on its cells; `surface`: each node's interface surface (nullptr: the target
+// point itself).
 template <class M>
 void finish_result(AdaptResult<M>& r, const IdVector<NodeId, Vec3>& target,
                    const IdVector<NodeId, char>& has, const SizeCriterion& size,
-                   const AdaptOptions& options) {
+                   const IdVector<NodeId, NodeConstraint>* surface, const AdaptOptions& options) {
   const M& mesh = r.mesh;
   r.target = target;
   r.has_target = has;
-  r.distance.assign(static_cast<std::size_t>(mesh.n_nodes()), 0.0);
-  r.blocked.assign(static_cast<std::size_t>(mesh.n_nodes()), 0);
-  r.dist_final = 0;
-  r.n_reached = 0;
+  const auto nn = static_cast<std::size_t>(mesh.n_nodes());
+  r.distance.assign(nn, 0.0);
+  r.surface_distance.assign(nn, 0.0);
+  r.near_interface.assign(nn, 1);
+  r.blocked.assign(nn, 0);
+  r.dist_final = r.surface_dist_final = 0;
+  r.n_reached = r.n_near_interface = 0;
   for (NodeId v : id_range<NodeId>(mesh.n_nodes())) {
     if (!has[v]) {
       r.target[v] = mesh.point(v);
       continue;
     }
     r.distance[v] = (mesh.point(v) - target[v]).norm();
+    r.surface_distance[v] =
+        surface ? surface_distance(mesh.point(v), target[v], (*surface)[v]) : r.distance[v];
+    r.near_interface[v] =
+        r.surface_distance[v] <= options.near_interface * node_local_size(mesh, v, size);
     r.dist_final += r.distance[v];
+    r.surface_dist_final += r.surface_distance[v];
     r.n_reached += r.distance[v] == 0;
+    r.n_near_interface += r.near_interface[v];
   }
   r.min_quality = min_quality(mesh);
   r.min_edge_ratio = std::numeric_limits<double>::infinity();

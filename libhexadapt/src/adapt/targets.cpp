@@ -263,6 +263,11 @@ IdVector<NodeId, NodeConstraint> sliding_constraints(
   return out;
 }
 
+double surface_distance(const Vec3& p, const Vec3& target, const NodeConstraint& surface) {
+  const Vec3 d = p - target;
+  return (d - surface.project(d)).norm();
+}
+
 template <class M>
 double target_distance(const M& mesh, const Targets& targets) {
   double s = 0;

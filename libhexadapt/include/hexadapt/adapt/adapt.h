@@ -57,6 +57,9 @@ struct AdaptOptions {
   int cavity_range = 3;  ///< guaranteed: starting vertex distance of a cavity; 0 = no cavities
   /// guaranteed: the loop stops when a round lowers dist by no more than this share of it.
   double loop_tolerance = 1e-3;
+  /// A node within this many local sizes (the mean local_size of its cells) of its interface
+  /// surface has reached the interface; one farther is blocked.
+  double near_interface = 0.05;
 };
 
 /// Why a node with a target did not reach it (the `blocked` point array).
@@ -81,9 +84,16 @@ struct AdaptResult {
   IdVector<NodeId, Vec3> target;  ///< each node's target (its own position when it has none)
   IdVector<NodeId, char> has_target;
   IdVector<NodeId, double> distance;  ///< |position - target|
+  /// Distance to the interface surface through the target (surface_distance(); the target
+  /// distance for the base method, whose nodes do not slide).
+  IdVector<NodeId, double> surface_distance;
+  IdVector<NodeId, char> near_interface;  ///< within near_interface local sizes of it
   std::vector<AdaptStep> steps;
   index_t n_interface_nodes = 0;
   index_t n_reached = 0;          ///< interface nodes on their target at the end
+  index_t n_near_interface = 0;   ///< interface nodes within near_interface of their surface
+  double surface_dist_init = 0;   ///< sum of surface distances after the first move
+  double surface_dist_final = 0;  ///< sum of surface distances at the end
   double dist_init = 0;           ///< sum of distances after the first (controlled or direct) move
   double dist_final = 0;          ///< sum of distances at the end
   double min_quality = 1;         ///< of the output
@@ -101,7 +111,7 @@ struct AdaptResult {
   bool stopped_bad_input = false;       ///< true: nothing was done (see bad_input_cells)
   double input_min_quality = 1;         ///< of the input grid
   IdVector<NodeId, char> blocked;       ///< BlockReason per node (all none for base)
-  index_t n_blocked = 0;                ///< nodes left short of their target
+  index_t n_blocked = 0;  ///< interface nodes farther than near_interface from their surface
   /// The worst cells next to blocked nodes, lowest quality first (at most 10).
   std::vector<std::pair<CellId, double>> blocking_cells;
   int loops = 0;                        ///< move-smooth rounds run

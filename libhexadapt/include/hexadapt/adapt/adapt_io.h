@@ -20,8 +20,8 @@ IdVector<CellId, int> read_material_array(const io::MeshData& data, int n_materi
                                           const std::string& array = "material");
 
 /// The output mesh: points, cells, `material` (int32) and `local_size` (each cell's local
-/// input size, size_criterion.h) cell arrays, `target` (3 components) and `distance` point
-/// arrays; the material names in the `materials` metadata entry.
+/// input size, size_criterion.h) cell arrays, `target` (3 components), `distance` and
+/// `surface_distance` point arrays; the material names in the `materials` metadata entry.
 template <class M>
 io::MeshData adapt_mesh_data(const AdaptResult<M>& result,
                              const std::vector<std::string>& material_names);

@@ -6,7 +6,14 @@
 // Jacobian >= threshold and its shortest edge >= the size criterion's floor (size_criterion.h;
 // a cell already failing may not get worse). A node that
 // is refused stays where it is and tries again on the next round, so a neighbour moving away
-// can unblock it; rounds stop when no node advances. Nodes that share no cell move in
+// can unblock it; rounds stop when no node advances. When the interface surfaces are given
+// (the plane, line or point through each target that the node may slide on: the interface
+// normals and the domain boundary, sliding_constraints()), a node still short of its target
+// then slides onto its surface instead: it takes the nearest ring of points of the surface
+// around the target (1/16, 1/8, 1/4, 3/8, 1/2 of its mean edge length away) that holds a point
+// keeping the criteria, the best point of that ring. A target that only a sliver or a flat
+// cell could reach is thus replaced by another point of the same interface. Nodes that share
+// no cell move in
 // parallel (independent_node_sets), in a fixed order: the result is the same whatever the
 // thread count.
 #pragma once
@@ -25,6 +32,9 @@ struct MoveOptions {
 
 struct MoveResult {
   IdVector<NodeId, char> reached;  ///< 1: the node got to its target (or had none)
+  /// 1: the node got to its target or slid onto its surface (or had no target).
+  IdVector<NodeId, char> on_surface;
+  index_t n_slid = 0;  ///< nodes that slid onto their surface away from their target
   index_t n_moving = 0;            ///< nodes that had somewhere to go
   index_t n_reached = 0;           ///< of those, how many got all the way
   int rounds = 0;
@@ -32,10 +42,12 @@ struct MoveResult {
 };
 
 /// Moves the nodes with targets.has set, keeping the threshold and the size criterion (off by
-/// default). Throws OptionError for steps < 1.
+/// default); `surface`, when given, lets the nodes left short slide onto their target's
+/// surface. Throws OptionError for steps < 1.
 template <class M>
 MoveResult controlled_move(M& mesh, const Targets& targets, const MoveOptions& options = {},
-                           const SizeCriterion& size = {});
+                           const SizeCriterion& size = {},
+                           const IdVector<NodeId, NodeConstraint>* surface = nullptr);
 
 /// Puts every node with a target on it, whatever happens to the cells (base algorithm).
 template <class M>

@@ -79,4 +79,10 @@ IdVector<NodeId, NodeConstraint> sliding_constraints(
 template <class M>
 double target_distance(const M& mesh, const Targets& targets);
 
+/// Distance from p to the interface surface at `target`: the plane, line or point through
+/// the target that `surface` leaves a node to slide on (sliding_constraints()), i.e. the
+/// length of p - target along the constraint's normals (the distance to the target itself
+/// when the constraint fixes the node).
+double surface_distance(const Vec3& p, const Vec3& target, const NodeConstraint& surface);
+
 }  // namespace hexadapt
