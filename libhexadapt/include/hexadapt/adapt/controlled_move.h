@@ -10,8 +10,8 @@
 // (the plane, line or point through each target that the node may slide on: the interface
 // normals and the domain boundary, sliding_constraints()), a node still short of its target
 // then slides onto its surface instead: it takes the nearest ring of points of the surface
-// around the target (1/16, 1/8, 1/4, 3/8, 1/2 of its mean edge length away) that holds a point
-// keeping the criteria, the best point of that ring. A target that only a sliver or a flat
+// around the target (1/16, 1/8, 1/4, 3/8, 1/2 of its cells' local size away, or of its mean
+// edge length without local sizes) that holds a point keeping the criteria, the best point of that ring. A target that only a sliver or a flat
 // cell could reach is thus replaced by another point of the same interface. Nodes that share
 // no cell move in
 // parallel (independent_node_sets), in a fixed order: the result is the same whatever the
