@@ -57,7 +57,9 @@ TEST_P(GeneratedCases, KeepTheThresholdAndGetCloser) {
                                            const IdVector<CellId, int>& material) {
     const auto r = adapt(grid, f, material, guaranteed_options());
     check_guaranteed(grid, r);
-    if (r.dist_init > 0) {
+    // Closer than after the first move, unless that move already put every node on its
+    // interface (some slid there, away from their targets).
+    if (r.dist_init > 0 && r.n_blocked > 0) {
       EXPECT_LT(r.dist_final, r.dist_init);
     }
   });
