@@ -27,6 +27,9 @@ struct Args {
   bool allow_bad_input = false;
   int max_loops = 20;
   int cavity_range = 3;
+  int interface_pillow_rounds = 4;
+  int interface_pillow_carve = 1;
+  double near_interface = 0.05;
   cli::InputOptions in;
   double threshold = 0.3;
   double min_edge = 0.1;
@@ -97,6 +100,15 @@ Json result_json(const AdaptResult<M>& r, index_t input_cells, double threshold)
   j["input_cells_below_threshold"] = r.bad_input_cells.size();
   j["move_smooth_loops"] = r.loops;
   j["blocked_nodes"] = r.n_blocked;
+  Json pillows = Json::array();
+  for (const auto& a : r.interface_pillows)
+    pillows.push_back({{"material", a.material},
+                       {"rounds", a.rounds},
+                       {"kept", a.kept},
+                       {"left_out", a.left_out},
+                       {"layer_cells", a.layer_cells}});
+  j["interface_pillows"] = pillows;
+  j["interface_layer_cells"] = r.n_interface_layer_cells;
   j["cavities_tried"] = r.cavities.size();
   j["cavities_published"] = r.n_cavities_published;
   j["cells_added_by_pillowing"] = r.n_cells_added;
@@ -195,6 +207,9 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   options.allow_bad_input = args.allow_bad_input;
   options.max_loops = args.max_loops;
   options.cavity_range = args.cavity_range;
+  options.interface_pillow_rounds = args.interface_pillow_rounds;
+  options.interface_pillow_carve = args.interface_pillow_carve;
+  options.near_interface = args.near_interface;
   options.correction = args.correction;
   options.correction.enabled = !args.no_correction;
 
@@ -300,6 +315,21 @@ int main(int argc, char** argv) {
   app.add_option("--cavity-range", args.cavity_range,
                  "guaranteed: vertex distance of the cavities pillowed around blocked nodes "
                  "(0: no cavity pillowing)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--interface-pillow-rounds", args.interface_pillow_rounds,
+                 "guaranteed: attempts at pillowing each material's interfaces before the first "
+                 "move, kept only where every cell meets the criteria (0: no such pillowing)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--interface-pillow-carve", args.interface_pillow_carve,
+                 "guaranteed: vertex distance of the cells left out of a material's layer "
+                 "around a cell that fails the criteria, before the next attempt")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--near-interface", args.near_interface,
+                 "guaranteed: a node within this many local sizes of its interface surface has "
+                 "reached it; farther ones are reported as blocked")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   app.add_option("--model", args.model,

@@ -30,6 +30,17 @@ void set_points(M& mesh, const std::vector<Vec3>& p) {
   for (NodeId v : id_range<NodeId>(mesh.n_nodes())) mesh.set_point(v, p[v.idx()]);
 }
 
+// Nodes appended by a pillowing get no target.
+template <class M>
+void extend_targets(const M& mesh, Targets& targets) {
+  for (NodeId v : id_range<NodeId>(mesh.n_nodes())) {
+    if (v.idx() < targets.has.size()) continue;
+    targets.has.push_back(0);
+    targets.position.push_back(mesh.point(v));
+    targets.interface.push_back(NodeConstraint{});
+  }
+}
+
 // Smoothing moves only the nodes without a target: nodes on their targets stay (sec. 5.1),
 // and letting the blocked ones slide along their interface drew them away from their
 // targets faster than the next move brought them back (dist never went down on the test
@@ -111,13 +122,31 @@ std::vector<NodeId> pillow_cavities(M& mesh, IdVector<CellId, int>& material, Ta
   r.n_cells_added = c.n_cells_added;
   mesh = std::move(c.mesh);
   material = std::move(c.material);
-  for (NodeId v : id_range<NodeId>(mesh.n_nodes())) {
-    if (v.idx() < targets.has.size()) continue;
-    targets.has.push_back(0);
-    targets.position.push_back(mesh.point(v));
-    targets.interface.push_back(NodeConstraint{});
-  }
+  extend_targets(mesh, targets);
   return c.failed_seeds;
+}
+
+// Pillows the interfaces of every material where the criteria hold (interface_pillow.h). The
+// interface nodes keep their ids and targets; the new nodes have none.
+template <class M>
+void pillow_interfaces_first(M& mesh, IdVector<CellId, int>& material, Targets& targets,
+                             SizeCriterion& size, int n_materials, AdaptResult<M>& r,
+                             const AdaptOptions& options) {
+  if (options.interface_pillow_rounds < 1) return;
+  InterfacePillowOptions io;
+  io.threshold = options.threshold;
+  io.rounds = options.interface_pillow_rounds;
+  io.carve = options.interface_pillow_carve;
+  io.pillow = options.pillow;
+  io.smooth = options.smooth;
+  io.boundary = options.boundary;
+  InterfacePillowResult<M> p = pillow_interfaces(mesh, material, n_materials, targets.has, size, io);
+  r.interface_pillows = std::move(p.attempts);
+  r.n_interface_layer_cells = p.mesh.n_cells() - mesh.n_cells();
+  size = size.remapped(p.cell_origin.raw());
+  mesh = std::move(p.mesh);
+  material = std::move(p.material);
+  extend_targets(mesh, targets);
 }
 
 // Sec. 5.3: smooths the targets on the model in 3D; says why when it does not run.
@@ -197,16 +226,20 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
   record_step(r, mesh, "targets", clock, options.progress, 0.1);
   correct(mesh, material, grid_boundary, targets, model, r, clock, options);
 
+  IdVector<CellId, int> out_material = material;
+  pillow_interfaces_first(mesh, out_material, targets, size, fractions.n_materials(), r, options);
+  record_step(r, mesh, "pillow", clock, options.progress, 0.2);
+
   MoveOptions mo;
   mo.threshold = options.threshold;
   mo.steps = options.steps;
-  const auto grid_sliding = sliding_constraints(grid_boundary, targets);
+  const auto grid_sliding =
+      sliding_constraints(boundary_constraints(mesh, options.boundary), targets);
   const MoveResult first = controlled_move(mesh, targets, mo, size, &grid_sliding);
   r.dist_init = first.dist;
   r.surface_dist_init = surface_distance_sum(mesh, targets, grid_sliding);
   record_step(r, mesh, "move", clock, options.progress, 0.3);
 
-  IdVector<CellId, int> out_material = material;
   const std::vector<NodeId> failed = pillow_cavities(mesh, out_material, targets, size, first,
                                                      fractions.n_materials(), r, options);
   record_step(r, mesh, "cavity", clock, options.progress, 0.5);

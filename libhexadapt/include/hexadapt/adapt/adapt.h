@@ -23,6 +23,7 @@
 #include "hexadapt/adapt/cavity_pillow.h"
 #include "hexadapt/adapt/controlled_move.h"
 #include "hexadapt/adapt/global_pillow.h"
+#include "hexadapt/adapt/interface_pillow.h"
 #include "hexadapt/adapt/node_constraint.h"
 #include "hexadapt/adapt/size_criterion.h"
 #include "hexadapt/adapt/smoothing.h"
@@ -55,6 +56,12 @@ struct AdaptOptions {
   bool allow_bad_input = false;
   int max_loops = 20;    ///< guaranteed: move-smooth rounds at most
   int cavity_range = 3;  ///< guaranteed: starting vertex distance of a cavity; 0 = no cavities
+  /// guaranteed: attempts at pillowing each material's interfaces before the first move
+  /// (interface_pillow.h); 0 = none.
+  int interface_pillow_rounds = 4;
+  /// guaranteed: vertex distance of the cells left out of a material's layer around a cell
+  /// that fails the criteria.
+  int interface_pillow_carve = 1;
   /// guaranteed: the loop stops when a round lowers dist by no more than this share of it.
   double loop_tolerance = 1e-3;
   /// A node within this many local sizes (the mean local_size of its cells) of its interface
@@ -115,6 +122,8 @@ struct AdaptResult {
   /// The worst cells next to blocked nodes, lowest quality first (at most 10).
   std::vector<std::pair<CellId, double>> blocking_cells;
   int loops = 0;                        ///< move-smooth rounds run
+  std::vector<InterfacePillowAttempt> interface_pillows;  ///< per material, before the move
+  index_t n_interface_layer_cells = 0;  ///< cells the interface pillowing added
   std::vector<CavityAttempt> cavities;  ///< every cavity tried, in order
   index_t n_cavities_published = 0;
   index_t n_cells_added = 0;  ///< layer cells of the published cavities

@@ -1,0 +1,61 @@
+// Quality-controlled pillowing of the interfaces before the first move (guaranteed method).
+//
+// In 3D a node of the input grid's staircase is a corner of up to eight cells of two or more
+// materials: moving it onto a smooth interface flattens some of them, and the controlled move
+// (sec. 5.1) refuses, so most nodes stay on the staircase. Sculpt pillows every interface
+// before it smooths; the paper pillows cavities after the move (sec. 5.2), only around the
+// nodes left short. Here each material's region is pillowed first, on the unmoved grid, as
+// the base method's global pillowing does (pillow.h): every interface node then only touches
+// layer cells, which bend where the grid's cells would fold. Unlike the base method, a
+// material's layer is kept only when every cell keeps the criteria (threshold and size,
+// size_criterion.h) once the new nodes are smoothed: where cells fail (around the staircase's
+// concave corners, in sheets one cell thick), the cells of the region within vertex distance
+// `carve` of each failing cell's origin are left out of the pillowed set and the material is
+// pillowed again, at most `rounds` times; then it is left unpillowed. Nodes with a target never
+// move here; the cells outside a kept layer and its ring are the input's.
+#pragma once
+
+#include <vector>
+
+#include "hexadapt/adapt/pillow.h"
+#include "hexadapt/adapt/size_criterion.h"
+#include "hexadapt/adapt/smoothing.h"
+
+namespace hexadapt {
+
+struct InterfacePillowOptions {
+  double threshold = 0.3;  ///< S_q every cell keeps
+  int rounds = 4;          ///< pillowing attempts per material
+  int carve = 1;           ///< vertex distance of the cells left out around a failing cell
+  PillowOptions pillow;
+  SmoothOptions smooth;
+  BoundaryOptions boundary;
+};
+
+/// What happened to one material.
+struct InterfacePillowAttempt {
+  int material = 0;
+  int rounds = 0;           ///< pillowings tried
+  bool kept = false;        ///< its layer is in the mesh
+  index_t left_out = 0;     ///< cells of the region carved out of the pillowed set
+  index_t layer_cells = 0;  ///< cells of the kept layer
+};
+
+template <class M>
+struct InterfacePillowResult {
+  M mesh;
+  IdVector<CellId, int> material;
+  IdVector<CellId, CellId> cell_origin;  ///< the input cell; a layer cell: its region's cell
+  index_t n_new_nodes = 0;               ///< appended after the input's nodes
+  std::vector<InterfacePillowAttempt> attempts;
+};
+
+/// `fixed`: one flag per node of mesh, nodes that must not move (those with a target); `size`:
+/// the size criterion on mesh's cells.
+template <class M>
+InterfacePillowResult<M> pillow_interfaces(const M& mesh, const IdVector<CellId, int>& material,
+                                           int n_materials, const IdVector<NodeId, char>& fixed,
+                                           const SizeCriterion& size,
+                                           const InterfacePillowOptions& options = {});
+
+}  // namespace hexadapt

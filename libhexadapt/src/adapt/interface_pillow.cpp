@@ -1,0 +1,134 @@
+#include "hexadapt/adapt/interface_pillow.h"
+
+#include <algorithm>
+#include <string>
+
+#include "hexadapt/core/error.h"
+
+namespace hexadapt {
+
+namespace {
+
+// The pillowed mesh of one attempt, the size criterion on its cells, and the ids (in the
+// mesh before pillowing) of the cells the failing cells come from.
+template <class M>
+struct Attempt {
+  PillowResult<M> p;
+  SizeCriterion size;
+  std::vector<CellId> failing_origins;
+};
+
+// Nodes the smoothing may move: the new ones and the free nodes of the cells around them.
+template <class M>
+IdVector<NodeId, char> layer_movable(const PillowResult<M>& p, index_t n_old,
+                                     const IdVector<NodeId, char>& fixed) {
+  const M& pm = p.mesh;
+  IdVector<NodeId, char> movable(static_cast<std::size_t>(pm.n_nodes()), 0);
+  for (NodeId v : id_range<NodeId>(pm.n_nodes())) {
+    if (v.value() < n_old) continue;
+    for (CellId c : pm.node_cells(v))
+      for (NodeId o : pm.cell_nodes(c)) movable[o] = o.value() >= n_old || !fixed[o];
+  }
+  return movable;
+}
+
+template <class M>
+Attempt<M> try_pillow(const M& mesh, const IdVector<CellId, char>& set,
+                      const IdVector<NodeId, char>& fixed, const SizeCriterion& size,
+                      const InterfacePillowOptions& o) {
+  Attempt<M> a{pillow_cells(mesh, set, boundary_constraints(mesh, o.boundary), o.pillow, size),
+               {}, {}};
+  a.size = size.remapped(a.p.cell_origin.raw());
+  smooth(a.p.mesh, layer_movable(a.p, mesh.n_nodes(), fixed),
+         boundary_constraints(a.p.mesh, o.boundary), o.smooth, nullptr, a.size);
+  for (CellId c : id_range<CellId>(a.p.mesh.n_cells()))
+    if (cell_score(a.p.mesh, c, a.size) < o.threshold) a.failing_origins.push_back(a.p.cell_origin[c]);
+  std::sort(a.failing_origins.begin(), a.failing_origins.end());
+  a.failing_origins.erase(std::unique(a.failing_origins.begin(), a.failing_origins.end()),
+                          a.failing_origins.end());
+  return a;
+}
+
+// Takes out of the set the cells within vertex distance `range` of the failing origins.
+// Returns how many left.
+template <class M>
+index_t carve(const M& mesh, const std::vector<CellId>& origins, int range,
+              IdVector<CellId, char>& set) {
+  std::vector<CellId> front = origins;
+  IdVector<CellId, char> seen(static_cast<std::size_t>(mesh.n_cells()), 0);
+  for (CellId c : front) seen[c] = 1;
+  index_t removed = 0;
+  for (int level = 0; level <= range; ++level) {
+    std::vector<CellId> next;
+    for (CellId c : front) {
+      removed += set[c] != 0;
+      set[c] = 0;
+      if (level == range) continue;
+      for (NodeId n : mesh.cell_nodes(c))
+        for (CellId o : mesh.node_cells(n))
+          if (!seen[o]) {
+            seen[o] = 1;
+            next.push_back(o);
+          }
+    }
+    front = std::move(next);
+  }
+  return removed;
+}
+
+}  // namespace
+
+template <class M>
+InterfacePillowResult<M> pillow_interfaces(const M& mesh, const IdVector<CellId, int>& material,
+                                           int n_materials, const IdVector<NodeId, char>& fixed,
+                                           const SizeCriterion& size,
+                                           const InterfacePillowOptions& options) {
+  if (options.rounds < 0 || options.carve < 0)
+    throw OptionError("interface pillow rounds and carve must be >= 0");
+  if (material.size() != static_cast<std::size_t>(mesh.n_cells()) ||
+      fixed.size() != static_cast<std::size_t>(mesh.n_nodes()))
+    throw InternalError("interface pillow: materials or fixed flags do not match the mesh");
+  InterfacePillowResult<M> r{mesh, material, {}, 0, {}};
+  for (CellId c : id_range<CellId>(mesh.n_cells())) r.cell_origin.push_back(c);
+  IdVector<NodeId, char> still(fixed);
+  SizeCriterion current = size.remapped(r.cell_origin.raw());
+  for (int m = 0; m < n_materials; ++m) {
+    InterfacePillowAttempt log;
+    log.material = m;
+    IdVector<CellId, char> set(static_cast<std::size_t>(r.mesh.n_cells()), 0);
+    for (CellId c : id_range<CellId>(r.mesh.n_cells())) set[c] = r.material[c] == m;
+    while (log.rounds < options.rounds && std::find(set.begin(), set.end(), 1) != set.end()) {
+      ++log.rounds;
+      Attempt<M> a = try_pillow(r.mesh, set, still, current, options);
+      if (a.p.n_new_cells == 0) break;
+      if (a.failing_origins.empty()) {
+        log.kept = true;
+        log.layer_cells = a.p.n_new_cells;
+        for (CellId c : id_range<CellId>(a.p.mesh.n_cells()))
+          if (c.value() >= r.mesh.n_cells()) {
+            r.cell_origin.push_back(r.cell_origin[a.p.cell_origin[c]]);
+            r.material.push_back(m);
+          }
+        r.n_new_nodes += a.p.n_new_nodes;
+        still.resize(static_cast<std::size_t>(a.p.mesh.n_nodes()), 0);
+        current = std::move(a.size);
+        r.mesh = std::move(a.p.mesh);
+        break;
+      }
+      const index_t removed = carve(r.mesh, a.failing_origins, options.carve, set);
+      if (removed == 0) break;  // the failures are not the layer's: it cannot help
+      log.left_out += removed;
+    }
+    r.attempts.push_back(log);
+  }
+  return r;
+}
+
+template InterfacePillowResult<QuadMesh> pillow_interfaces<QuadMesh>(
+    const QuadMesh&, const IdVector<CellId, int>&, int, const IdVector<NodeId, char>&,
+    const SizeCriterion&, const InterfacePillowOptions&);
+template InterfacePillowResult<HexMesh> pillow_interfaces<HexMesh>(
+    const HexMesh&, const IdVector<CellId, int>&, int, const IdVector<NodeId, char>&,
+    const SizeCriterion&, const InterfacePillowOptions&);
+
+}  // namespace hexadapt
