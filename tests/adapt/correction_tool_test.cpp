@@ -36,7 +36,7 @@ TEST(CorrectionTool, AsteroidWithAndWithoutTheModel) {
                                    "a.model.vtk"),
             0);
   ASSERT_EQ(run("adapt", d + "a.assign.vtu -q -o " + d + "with.vtu --json " + d +
-                             "with.json --model " + d + "a.model.vtk"),
+                             "with.json --correction --model " + d + "a.model.vtk"),
             0);
   const auto with = load(dir / "with.json");
   EXPECT_EQ(with["model"], d + "a.model.vtk");
@@ -51,10 +51,17 @@ TEST(CorrectionTool, AsteroidWithAndWithoutTheModel) {
   EXPECT_TRUE(step);
   EXPECT_GE(with["result"]["min_quality"].get<double>(), 0.3);
 
-  ASSERT_EQ(run("adapt", d + "a.assign.vtu -q -o " + d + "without.vtu --json " + d + "without.json"), 0);
+  ASSERT_EQ(run("adapt", d + "a.assign.vtu -q -o " + d + "without.vtu --correction --json " + d +
+                             "without.json"),
+            0);
   const auto without = load(dir / "without.json");
   EXPECT_FALSE(without["result"]["correction"]["ran"].get<bool>());
   EXPECT_EQ(without["result"]["correction"]["skipped"], "no model given");
+  // Off by default, model or not.
+  ASSERT_EQ(run("adapt", d + "a.assign.vtu -q -o " + d + "off.vtu --json " + d + "off.json --model " +
+                             d + "a.model.vtk"),
+            0);
+  EXPECT_EQ(load(dir / "off.json")["result"]["correction"]["skipped"], "disabled");
 
   // A model of other materials is refused as bad input.
   std::ifstream in(d + "a.model.vtk");

@@ -30,7 +30,10 @@ void check_guaranteed(const M& grid, const AdaptResult<M>& r, double threshold =
                           << check.inverted_cells << " nonmanifold " << check.nonmanifold_nodes;
   ASSERT_EQ(r.material.size(), static_cast<std::size_t>(r.mesh.n_cells()));
   for (int m : r.material) EXPECT_TRUE(m >= 0);
-  EXPECT_EQ(r.mesh.n_cells(), grid.n_cells() + r.n_cells_added);
+  EXPECT_EQ(r.mesh.n_cells(), grid.n_cells() + r.n_interface_layer_cells + r.n_cells_added);
+  index_t layer = 0;
+  for (const auto& a : r.interface_pillows) layer += a.layer_cells;
+  EXPECT_EQ(layer, r.n_interface_layer_cells);
   index_t published = 0;
   for (const auto& a : r.cavities) published += a.published;
   EXPECT_EQ(published, r.n_cavities_published);

@@ -249,9 +249,12 @@ TEST(TargetCorrection, SphereTargetsLieOnTheReconstructedModel) {
   }
 }
 
-TEST(TargetCorrection, GuaranteedPipelineRunsItWithAModelOnly) {
+TEST(TargetCorrection, GuaranteedPipelineRunsItWhenAskedWithAModelOnly) {
   const SphereCase s = sphere_case(7, 2.2);
   AdaptOptions o;
+  EXPECT_EQ(adapt(s.in.mesh, s.in.fractions, s.material, o, &s.rec.model).correction.skipped,
+            "disabled");  // off by default
+  o.correction.enabled = true;
   o.cavity_range = 0;  // the wiring is under test here, not the later steps
   o.max_loops = 2;
   const auto with = adapt(s.in.mesh, s.in.fractions, s.material, o, &s.rec.model);

@@ -22,7 +22,6 @@ struct Args {
   std::string input;
   std::string method = "guaranteed";
   std::string model;
-  bool no_correction = false;
   TargetCorrectionOptions correction;
   bool allow_bad_input = false;
   int max_loops = 20;
@@ -211,7 +210,6 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   options.interface_pillow_carve = args.interface_pillow_carve;
   options.near_interface = args.near_interface;
   options.correction = args.correction;
-  options.correction.enabled = !args.no_correction;
 
   Timer clock;
   PhaseTimes times;
@@ -333,11 +331,12 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   app.add_option("--model", args.model,
-                 "guaranteed, 3D: the geometric model of hexadapt-reconstruct --model (its .vtk); "
-                 "the targets are smoothed on it first (paper sec. 5.3). Without it the "
-                 "correction is skipped");
-  app.add_flag("--no-correction", args.no_correction,
-               "guaranteed: do not correct the targets even when --model is given");
+                 "guaranteed, 3D: the geometric model of hexadapt-reconstruct --model (its .vtk), "
+                 "on which --correction smooths the targets first (paper sec. 5.3)");
+  app.add_flag("--correction,!--no-correction", args.correction.enabled,
+               "guaranteed, 3D, with --model: correct the targets on the model (paper sec. "
+               "5.3; off by default: it costs reach and volume once interfaces are pillowed "
+               "first)");
   app.add_option("--correction-iterations", args.correction.iterations,
                  "Target correction: smoothing sweeps")
       ->check(CLI::NonNegativeNumber)

@@ -132,7 +132,7 @@ template <class M>
 void pillow_interfaces_first(M& mesh, IdVector<CellId, int>& material, Targets& targets,
                              SizeCriterion& size, int n_materials, AdaptResult<M>& r,
                              const AdaptOptions& options) {
-  if (options.interface_pillow_rounds < 1) return;
+  if (options.interface_pillow_rounds < 1 || M::dim < options.interface_pillow_min_dim) return;
   InterfacePillowOptions io;
   io.threshold = options.threshold;
   io.rounds = options.interface_pillow_rounds;

@@ -12,9 +12,9 @@
 // holds the input grid unchanged) unless allow_bad_input. Between the first controlled move and the move-smooth
 // loop, cavity pillowing (sec. 5.2, Alg. 5, cavity_pillow.h) gives the nodes left short of
 // their targets new cells to move into; those still short at the end are reported in
-// `blocked`. In 3D, when the reconstruction's geometric model is given, the guaranteed
-// method first corrects the targets (sec. 5.3, target_correction.h); without a model the
-// correction is skipped and the result says why.
+// `blocked`. In 3D, when asked and given the reconstruction's geometric model, the
+// guaranteed method first corrects the targets (sec. 5.3, target_correction.h); otherwise the
+// correction is skipped and the result says why. It is off by default.
 #pragma once
 
 #include <string>
@@ -59,6 +59,10 @@ struct AdaptOptions {
   /// guaranteed: attempts at pillowing each material's interfaces before the first move
   /// (interface_pillow.h); 0 = none.
   int interface_pillow_rounds = 4;
+  /// guaranteed: interfaces are pillowed first in meshes of this dimension or more (3: hexes
+  /// only; in 2D, where the controlled move and cavities already reach the interfaces, a
+  /// first layer costs cells and reach on the cases measured).
+  int interface_pillow_min_dim = 3;
   /// guaranteed: vertex distance of the cells left out of a material's layer around a cell
   /// that fails the criteria.
   int interface_pillow_carve = 1;
