@@ -26,6 +26,7 @@ struct Args {
   bool allow_bad_input = false;
   int max_loops = 20;
   int cavity_range = 3;
+  std::string layers = "automatic";
   int interface_pillow_rounds = 4;
   int interface_pillow_carve = 1;
   double near_interface = 0.05;
@@ -206,6 +207,7 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   options.allow_bad_input = args.allow_bad_input;
   options.max_loops = args.max_loops;
   options.cavity_range = args.cavity_range;
+  options.layers = parse_layer_strategy(args.layers);
   options.interface_pillow_rounds = args.interface_pillow_rounds;
   options.interface_pillow_carve = args.interface_pillow_carve;
   options.near_interface = args.near_interface;
@@ -229,6 +231,7 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   report["method"] = to_string(options.method);
   report["threshold"] = options.threshold;
   report["min_edge"] = options.min_edge;
+  report["layers"] = to_string(options.layers);
   report["steps"] = options.steps;
   report["materials"] = fractions.names();
   report["model"] = args.model;
@@ -314,6 +317,12 @@ int main(int argc, char** argv) {
                  "guaranteed: vertex distance of the cavities pillowed around blocked nodes "
                  "(0: no cavity pillowing)")
       ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--layers", args.layers,
+                 "guaranteed: where nodes get new cells to move into: cavities (around the nodes "
+                 "the first move left short, paper sec. 5.2), first (each material's interfaces "
+                 "pillowed before the move), both; automatic: cavities in 2D, first in 3D")
+      ->check(CLI::IsMember({"automatic", "cavities", "first", "both"}))
       ->capture_default_str();
   app.add_option("--interface-pillow-rounds", args.interface_pillow_rounds,
                  "guaranteed: attempts at pillowing each material's interfaces before the first "

@@ -18,6 +18,24 @@ std::string to_string(AdaptMethod method) {
   return method == AdaptMethod::base ? "base" : "guaranteed";
 }
 
+LayerStrategy parse_layer_strategy(const std::string& name) {
+  for (LayerStrategy s : {LayerStrategy::automatic, LayerStrategy::cavities, LayerStrategy::first,
+                          LayerStrategy::both})
+    if (name == to_string(s)) return s;
+  throw OptionError("unknown layer strategy '" + name +
+                    "' (expected automatic, cavities, first or both)");
+}
+
+std::string to_string(LayerStrategy strategy) {
+  switch (strategy) {
+    case LayerStrategy::automatic: return "automatic";
+    case LayerStrategy::cavities: return "cavities";
+    case LayerStrategy::first: return "first";
+    case LayerStrategy::both: return "both";
+  }
+  return "automatic";
+}
+
 namespace {
 
 void check_options(const AdaptOptions& o) {

@@ -30,6 +30,18 @@ void set_points(M& mesh, const std::vector<Vec3>& p) {
   for (NodeId v : id_range<NodeId>(mesh.n_nodes())) mesh.set_point(v, p[v.idx()]);
 }
 
+// Which layers the strategy makes in meshes of type M.
+template <class M>
+bool pillows_first(LayerStrategy s) {
+  return s == LayerStrategy::first || s == LayerStrategy::both ||
+         (s == LayerStrategy::automatic && M::dim == 3);
+}
+template <class M>
+bool pillows_cavities(LayerStrategy s) {
+  return s == LayerStrategy::cavities || s == LayerStrategy::both ||
+         (s == LayerStrategy::automatic && M::dim == 2);
+}
+
 // Nodes appended by a pillowing get no target.
 template <class M>
 void extend_targets(const M& mesh, Targets& targets) {
@@ -67,13 +79,26 @@ std::vector<NodeId> nodes_around_moves(const M& mesh, const std::vector<Vec3>& b
   return nodes;
 }
 
-// Controlled moves alternating with quality-preserving smoothing until a round no longer
-// brings the nodes closer to their targets by more than the tolerance; keeps the best round.
+// The targets of the nodes not yet on their interface surface (the others are done).
 template <class M>
-int move_smooth_loop(M& mesh, const Targets& targets, MoveResult move,
+Targets off_surface(const M& mesh, const Targets& targets,
+                    const IdVector<NodeId, NodeConstraint>& sliding, const SizeCriterion& size) {
+  Targets pending = targets;
+  for (NodeId v : id_range<NodeId>(mesh.n_nodes()))
+    if (pending.has[v])
+      pending.has[v] = surface_distance(mesh.point(v), targets.position[v], sliding[v]) >
+                       1e-9 * node_local_size(mesh, v, size);
+  return pending;
+}
+
+// Controlled moves (of the nodes still off their interface surface) alternating with
+// quality-preserving smoothing until a round no longer brings the nodes closer to their
+// surfaces by more than the tolerance; keeps the best round.
+template <class M>
+int move_smooth_loop(M& mesh, const Targets& targets,
                      const IdVector<NodeId, NodeConstraint>& sliding, const MoveOptions& mo,
                      const SizeCriterion& size, const AdaptOptions& options) {
-  double best = move.dist;
+  double best = surface_distance_sum(mesh, targets, sliding);
   std::vector<Vec3> best_points = points_of(mesh);
   const IdVector<NodeId, char> movable = loop_movable(targets);
   int loops = 0;
@@ -83,14 +108,13 @@ int move_smooth_loop(M& mesh, const Targets& targets, MoveResult move,
     const SmoothResult s =
         smooth(mesh, movable, sliding, options.smooth, loops == 1 ? nullptr : &start, size);
     const std::vector<Vec3> before = points_of(mesh);
-    move = controlled_move(mesh, targets, mo, size, &sliding);
+    controlled_move(mesh, off_surface(mesh, targets, sliding, size), mo, size, &sliding);
     start = nodes_around_moves(mesh, before, s.unsettled);
-    const bool better = move.dist < best;
-    if (better) {
-      best_points = points_of(mesh);
-    }
-    const bool enough = best - move.dist > options.loop_tolerance * best;
-    if (better) best = move.dist;
+    const double dist = surface_distance_sum(mesh, targets, sliding);
+    const bool better = dist < best;
+    if (better) best_points = points_of(mesh);
+    const bool enough = best - dist > options.loop_tolerance * best;
+    if (better) best = dist;
     if (!enough) break;
   }
   set_points(mesh, best_points);
@@ -108,7 +132,7 @@ std::vector<NodeId> pillow_cavities(M& mesh, IdVector<CellId, int>& material, Ta
   std::vector<NodeId> seeds;
   for (NodeId v : id_range<NodeId>(mesh.n_nodes()))
     if (targets.has[v] && !first.on_surface[v]) seeds.push_back(v);
-  if (seeds.empty() || options.cavity_range < 1) return {};
+  if (seeds.empty() || options.cavity_range < 1 || !pillows_cavities<M>(options.layers)) return {};
   CavityOptions co;
   co.range = options.cavity_range;
   co.threshold = options.threshold;
@@ -132,7 +156,7 @@ template <class M>
 void pillow_interfaces_first(M& mesh, IdVector<CellId, int>& material, Targets& targets,
                              SizeCriterion& size, int n_materials, AdaptResult<M>& r,
                              const AdaptOptions& options) {
-  if (options.interface_pillow_rounds < 1 || M::dim < options.interface_pillow_min_dim) return;
+  if (options.interface_pillow_rounds < 1 || !pillows_first<M>(options.layers)) return;
   InterfacePillowOptions io;
   io.threshold = options.threshold;
   io.rounds = options.interface_pillow_rounds;
@@ -245,7 +269,7 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
   record_step(r, mesh, "cavity", clock, options.progress, 0.5);
 
   const auto sliding = sliding_constraints(boundary_constraints(mesh, options.boundary), targets);
-  r.loops = move_smooth_loop(mesh, targets, first, sliding, mo, size, options);
+  r.loops = move_smooth_loop(mesh, targets, sliding, mo, size, options);
   record_step(r, mesh, "move-smooth", clock, options.progress, 1.0);
 
   r.mesh = std::move(mesh);

@@ -9,12 +9,16 @@
 // or above the threshold S_q, with its shortest edge at least min_edge times its local input
 // size (size_criterion.h), when the input cells all are; an input cell failing either stops
 // it (the result lists them in bad_input_cells and failures, sets stopped_bad_input and
-// holds the input grid unchanged) unless allow_bad_input. Between the first controlled move and the move-smooth
-// loop, cavity pillowing (sec. 5.2, Alg. 5, cavity_pillow.h) gives the nodes left short of
-// their targets new cells to move into; those still short at the end are reported in
-// `blocked`. In 3D, when asked and given the reconstruction's geometric model, the
-// guaranteed method first corrects the targets (sec. 5.3, target_correction.h); otherwise the
-// correction is skipped and the result says why. It is off by default.
+// holds the input grid unchanged) unless allow_bad_input. A node that cannot reach its
+// target slides onto its interface surface (controlled_move.h). Before the first controlled
+// move (3D, by default: LayerStrategy) each material's interfaces are pillowed where every
+// cell keeps both criteria (interface_pillow.h); between the first controlled move and the
+// move-smooth loop (2D, by default), cavity pillowing (sec. 5.2, Alg. 5, cavity_pillow.h)
+// gives the nodes left short new cells to move into. The nodes still farther than
+// near_interface from their surface at the end are reported in `blocked`. In 3D, when asked
+// and given the reconstruction's geometric model, the guaranteed method first corrects the
+// targets (sec. 5.3, target_correction.h); otherwise the correction is skipped and the
+// result says why. It is off by default.
 #pragma once
 
 #include <string>
@@ -36,9 +40,21 @@ namespace hexadapt {
 
 enum class AdaptMethod { base, guaranteed };
 
+/// Where the guaranteed method gives the interface nodes new cells to move into: `cavities`
+/// pillowed around the nodes the first move left short (paper sec. 5.2), each material's
+/// interfaces pillowed `first`, before the move (interface_pillow.h), or `both`. `automatic`:
+/// cavities in 2D, first in 3D. In 2D the move and the cavities reach the interfaces and a
+/// first layer cost cells and reach on the cases measured; in 3D the first layer reaches
+/// them where cavities could not, and cavities after it gained almost nothing at three times
+/// the time (docs/results.md).
+enum class LayerStrategy { automatic, cavities, first, both };
+
 /// "base" / "guaranteed"; throws OptionError for another name.
 AdaptMethod parse_adapt_method(const std::string& name);
 std::string to_string(AdaptMethod method);
+/// "automatic" / "cavities" / "first" / "both"; throws OptionError for another name.
+LayerStrategy parse_layer_strategy(const std::string& name);
+std::string to_string(LayerStrategy strategy);
 
 struct AdaptOptions {
   AdaptMethod method = AdaptMethod::guaranteed;  ///< which pipeline runs
@@ -55,14 +71,11 @@ struct AdaptOptions {
   /// guaranteed: run even when input cells are below the threshold (no guarantee then).
   bool allow_bad_input = false;
   int max_loops = 20;    ///< guaranteed: move-smooth rounds at most
+  LayerStrategy layers = LayerStrategy::automatic;  ///< guaranteed: cavities, first or both
   int cavity_range = 3;  ///< guaranteed: starting vertex distance of a cavity; 0 = no cavities
   /// guaranteed: attempts at pillowing each material's interfaces before the first move
   /// (interface_pillow.h); 0 = none.
   int interface_pillow_rounds = 4;
-  /// guaranteed: interfaces are pillowed first in meshes of this dimension or more (3: hexes
-  /// only; in 2D, where the controlled move and cavities already reach the interfaces, a
-  /// first layer costs cells and reach on the cases measured).
-  int interface_pillow_min_dim = 3;
   /// guaranteed: vertex distance of the cells left out of a material's layer around a cell
   /// that fails the criteria.
   int interface_pillow_carve = 1;
