@@ -100,6 +100,13 @@ Json result_json(const AdaptResult<M>& r, index_t input_cells, double threshold)
   j["input_cells_below_threshold"] = r.bad_input_cells.size();
   j["move_smooth_loops"] = r.loops;
   j["blocked_nodes"] = r.n_blocked;
+  if (r.farthest.valid()) {
+    const Vec3 p = r.mesh.point(r.farthest);
+    j["farthest_node"] = {{"node", r.farthest.value()},
+                          {"surface_distance", r.farthest_distance},
+                          {"local_size", r.farthest_local_size},
+                          {"position", {p.x(), p.y(), p.z()}}};
+  }
   Json pillows = Json::array();
   for (const auto& a : r.interface_pillows)
     pillows.push_back({{"material", a.material},
@@ -176,6 +183,23 @@ reconstruct::ModelFile read_model(const std::string& path, const Fractions& frac
   return m;
 }
 
+// Nodes that stay away from their interface are said even when the run succeeds: how many,
+// their share, and the farthest.
+template <class M>
+void warn_blocked(const AdaptResult<M>& r, double near) {
+  if (r.n_blocked == 0 || !r.farthest.valid()) return;
+  const Vec3 p = r.mesh.point(r.farthest);
+  char text[512];
+  std::snprintf(text, sizeof text,
+                "%d of %d interface nodes (%.1f%%) stay farther than %g local sizes from their "
+                "interface; the farthest, node %d at (%.6g, %.6g, %.6g), by %.4g (%.3g local "
+                "sizes): see the 'blocked' and 'surface_distance' point arrays",
+                r.n_blocked, r.n_interface_nodes, 100.0 * r.n_blocked / r.n_interface_nodes, near,
+                r.farthest.value(), p.x(), p.y(), p.z(), r.farthest_distance,
+                r.farthest_local_size > 0 ? r.farthest_distance / r.farthest_local_size : 0.0);
+  log_warning(text);
+}
+
 // The guaranteed method does not start from cells already failing a criterion: name them.
 int refuse_bad_input(const cli::CommonOptions& common, Json& report, const PhaseTimes& times,
                      const std::vector<CellId>& bad, const std::vector<CellFailure>& worst,
@@ -250,6 +274,7 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
         for (const auto& s : r.steps) times.emplace_back(s.name, s.seconds);
         report["result"] = result_json(r, mesh.n_cells(), options.threshold);
         below = r.n_below_threshold + r.n_below_min_edge;
+        if (!r.stopped_bad_input) warn_blocked(r, options.near_interface);
         out = adapt_mesh_data(r, fractions.names());
       },
       grid);

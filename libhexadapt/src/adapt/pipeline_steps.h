@@ -67,8 +67,13 @@ void finish_result(AdaptResult<M>& r, const IdVector<NodeId, Vec3>& target,
     r.distance[v] = (mesh.point(v) - target[v]).norm();
     r.surface_distance[v] =
         surface ? surface_distance(mesh.point(v), target[v], (*surface)[v]) : r.distance[v];
-    r.near_interface[v] =
-        r.surface_distance[v] <= options.near_interface * node_local_size(mesh, v, size);
+    const double h = node_local_size(mesh, v, size);
+    r.near_interface[v] = r.surface_distance[v] <= options.near_interface * h;
+    if (r.surface_distance[v] > r.farthest_distance) {
+      r.farthest = v;
+      r.farthest_distance = r.surface_distance[v];
+      r.farthest_local_size = h;
+    }
     r.dist_final += r.distance[v];
     r.surface_dist_final += r.surface_distance[v];
     r.n_reached += r.distance[v] == 0;

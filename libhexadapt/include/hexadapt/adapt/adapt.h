@@ -118,6 +118,9 @@ struct AdaptResult {
   index_t n_near_interface = 0;   ///< interface nodes within near_interface of their surface
   double surface_dist_init = 0;   ///< sum of surface distances after the first move
   double surface_dist_final = 0;  ///< sum of surface distances at the end
+  NodeId farthest;                ///< the node with a target farthest from its surface
+  double farthest_distance = 0;   ///< its surface distance
+  double farthest_local_size = 0; ///< the mean local size of its cells
   double dist_init = 0;           ///< sum of distances after the first (controlled or direct) move
   double dist_final = 0;          ///< sum of distances at the end
   double min_quality = 1;         ///< of the output
