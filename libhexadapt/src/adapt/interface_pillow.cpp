@@ -77,26 +77,6 @@ index_t carve(const M& mesh, const std::vector<CellId>& origins, int range,
   return removed;
 }
 
-// The cells of material m that have the other materials across two opposite faces: where the
-// region is one cell thick, a layer from both sides leaves nothing between.
-template <class M>
-std::vector<CellId> thin_cells(const M& mesh, const IdVector<CellId, int>& material, int m) {
-  std::vector<CellId> out;
-  auto other = [&](CellId c, int lf) {
-    const CellId o = mesh.neighbour(c, lf);
-    return o.valid() && material[o] != m;
-  };
-  for (CellId c : id_range<CellId>(mesh.n_cells())) {
-    if (material[c] != m) continue;
-    for (int lf = 0; lf < M::faces_per_cell; lf += 2)
-      if (other(c, lf) && other(c, lf ^ 1)) {
-        out.push_back(c);
-        break;
-      }
-  }
-  return out;
-}
-
 }  // namespace
 
 template <class M>
@@ -118,7 +98,6 @@ InterfacePillowResult<M> pillow_interfaces(const M& mesh, const IdVector<CellId,
     log.material = m;
     IdVector<CellId, char> set(static_cast<std::size_t>(r.mesh.n_cells()), 0);
     for (CellId c : id_range<CellId>(r.mesh.n_cells())) set[c] = r.material[c] == m;
-    log.left_out += carve(r.mesh, thin_cells(r.mesh, r.material, m), options.carve, set);
     while (log.rounds < options.rounds && std::find(set.begin(), set.end(), 1) != set.end()) {
       ++log.rounds;
       std::optional<Attempt<M>> tried;

@@ -8,12 +8,10 @@
 // the base method's global pillowing does (pillow.h): every interface node then only touches
 // layer cells, which bend where the grid's cells would fold. Unlike the base method, a
 // material's layer is kept only when every cell keeps the criteria (threshold and size,
-// size_criterion.h) once the new nodes are smoothed. Where the region is one cell thick (a
-// cell with other materials across two opposite faces) it is left out of the pillowed set
-// from the start, with the cells within vertex distance `carve`; where cells still fail
-// (around the staircase's concave corners), the cells of the region within `carve` of each
-// failing cell's origin are left out too and the material is pillowed again, at most
-// `rounds` times; then, or when what is left of the region touches itself along an edge only
+// size_criterion.h) once the new nodes are smoothed. Where cells fail (around the
+// staircase's concave corners, in sheets one cell thick), the cells of the region within
+// vertex distance `carve` of each failing cell's origin are left out of the pillowed set and
+// the material is pillowed again, at most `rounds` times; then, or when what is left of the region touches itself along an edge only
 // (no layer can follow it: pillow.h), it is left unpillowed. Nodes with a target never
 // move here; the cells outside a kept layer and its ring are the input's.
 #pragma once
