@@ -50,29 +50,29 @@ Attempt<M> try_pillow(const M& mesh, const IdVector<CellId, char>& set,
   return a;
 }
 
-// Takes out of the set the cells within vertex distance `range` of the failing origins.
-// Returns how many left.
+// Takes out of the set the cells within vertex distance `range` of the failing origins
+// (breadth first). Returns how many left.
 template <class M>
 index_t carve(const M& mesh, const std::vector<CellId>& origins, int range,
               IdVector<CellId, char>& set) {
-  std::vector<CellId> front = origins;
-  IdVector<CellId, char> seen(static_cast<std::size_t>(mesh.n_cells()), 0);
-  for (CellId c : front) seen[c] = 1;
+  IdVector<CellId, int> level(static_cast<std::size_t>(mesh.n_cells()), -1);
+  std::vector<index_t> queue;  // cell values: GCC 12 misreads a growing vector of ids here
+  for (CellId c : origins) {
+    level[c] = 0;
+    queue.push_back(c.value());
+  }
   index_t removed = 0;
-  for (int level = 0; level <= range; ++level) {
-    std::vector<CellId> next;
-    for (CellId c : front) {
-      removed += set[c] != 0;
-      set[c] = 0;
-      if (level == range) continue;
-      for (NodeId n : mesh.cell_nodes(c))
-        for (CellId o : mesh.node_cells(n))
-          if (!seen[o]) {
-            seen[o] = 1;
-            next.push_back(o);
-          }
-    }
-    front = std::move(next);
+  for (std::size_t i = 0; i < queue.size(); ++i) {
+    const CellId c(queue[i]);
+    removed += set[c] != 0;
+    set[c] = 0;
+    if (level[c] == range) continue;
+    for (NodeId n : mesh.cell_nodes(c))
+      for (CellId o : mesh.node_cells(n))
+        if (level[o] < 0) {
+          level[o] = level[c] + 1;
+          queue.push_back(o.value());
+        }
   }
   return removed;
 }
