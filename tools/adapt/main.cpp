@@ -115,6 +115,8 @@ Json result_json(const AdaptResult<M>& r, index_t input_cells, double threshold)
                        {"left_out", a.left_out},
                        {"layer_cells", a.layer_cells}});
   j["interface_pillows"] = pillows;
+  j["layers"] = to_string(r.layers);
+  j["other_near_interface"] = r.other_near_interface;
   j["interface_layer_cells"] = r.n_interface_layer_cells;
   j["cavities_tried"] = r.cavities.size();
   j["cavities_published"] = r.n_cavities_published;
@@ -346,7 +348,9 @@ int main(int argc, char** argv) {
   app.add_option("--layers", args.layers,
                  "guaranteed: where nodes get new cells to move into: cavities (around the nodes "
                  "the first move left short, paper sec. 5.2), first (each material's interfaces "
-                 "pillowed before the move), both; automatic: cavities in 2D, first in 3D")
+                 "pillowed before the move), both; automatic: cavities in 2D; in 3D runs with "
+                 "cavities and with first and keeps the result with more nodes near their "
+                 "interface")
       ->check(CLI::IsMember({"automatic", "cavities", "first", "both"}))
       ->capture_default_str();
   app.add_option("--interface-pillow-rounds", args.interface_pillow_rounds,

@@ -30,16 +30,10 @@ void set_points(M& mesh, const std::vector<Vec3>& p) {
   for (NodeId v : id_range<NodeId>(mesh.n_nodes())) mesh.set_point(v, p[v.idx()]);
 }
 
-// Which layers the strategy makes in meshes of type M.
-template <class M>
-bool pillows_first(LayerStrategy s) {
-  return s == LayerStrategy::first || s == LayerStrategy::both ||
-         (s == LayerStrategy::automatic && M::dim == 3);
-}
-template <class M>
+// Which layers a resolved strategy makes.
+bool pillows_first(LayerStrategy s) { return s == LayerStrategy::first || s == LayerStrategy::both; }
 bool pillows_cavities(LayerStrategy s) {
-  return s == LayerStrategy::cavities || s == LayerStrategy::both ||
-         (s == LayerStrategy::automatic && M::dim == 2);
+  return s == LayerStrategy::cavities || s == LayerStrategy::both;
 }
 
 // Nodes appended by a pillowing get no target.
@@ -132,7 +126,7 @@ std::vector<NodeId> pillow_cavities(M& mesh, IdVector<CellId, int>& material, Ta
   std::vector<NodeId> seeds;
   for (NodeId v : id_range<NodeId>(mesh.n_nodes()))
     if (targets.has[v] && !first.on_surface[v]) seeds.push_back(v);
-  if (seeds.empty() || options.cavity_range < 1 || !pillows_cavities<M>(options.layers)) return {};
+  if (seeds.empty() || options.cavity_range < 1 || !pillows_cavities(r.layers)) return {};
   CavityOptions co;
   co.range = options.cavity_range;
   co.threshold = options.threshold;
@@ -150,27 +144,59 @@ std::vector<NodeId> pillow_cavities(M& mesh, IdVector<CellId, int>& material, Ta
   return c.failed_seeds;
 }
 
-// Pillows the interfaces of every material where the criteria hold (interface_pillow.h). The
-// interface nodes keep their ids and targets; the new nodes have none.
+// What the first controlled move leaves, with or without the interfaces pillowed first
+// (interface_pillow.h: the interface nodes keep their ids and targets, the new nodes have
+// none; the layer cells take their region's local size).
 template <class M>
-void pillow_interfaces_first(M& mesh, IdVector<CellId, int>& material, Targets& targets,
-                             SizeCriterion& size, int n_materials, AdaptResult<M>& r,
-                             const AdaptOptions& options) {
-  if (options.interface_pillow_rounds < 1 || !pillows_first<M>(options.layers)) return;
-  InterfacePillowOptions io;
-  io.threshold = options.threshold;
-  io.rounds = options.interface_pillow_rounds;
-  io.carve = options.interface_pillow_carve;
-  io.pillow = options.pillow;
-  io.smooth = options.smooth;
-  io.boundary = options.boundary;
-  InterfacePillowResult<M> p = pillow_interfaces(mesh, material, n_materials, targets.has, size, io);
-  r.interface_pillows = std::move(p.attempts);
-  r.n_interface_layer_cells = p.mesh.n_cells() - mesh.n_cells();
-  size = size.remapped(p.cell_origin.raw());
-  mesh = std::move(p.mesh);
-  material = std::move(p.material);
-  extend_targets(mesh, targets);
+struct FirstMove {
+  M mesh;
+  IdVector<CellId, int> material;
+  Targets targets;
+  SizeCriterion size;
+  MoveResult move;
+  std::vector<InterfacePillowAttempt> pillows;
+  index_t layer_cells = 0;
+  double share = 0;         ///< of the interface nodes, on their surface after the move
+  double surface_dist = 0;  ///< sum of surface distances after the move
+  double pillow_seconds = 0, move_seconds = 0;
+};
+
+template <class M>
+FirstMove<M> first_move(const M& mesh, const IdVector<CellId, int>& material,
+                        const Targets& targets, const SizeCriterion& size, bool pillow_first,
+                        int n_materials, const MoveOptions& mo, const AdaptOptions& options) {
+  FirstMove<M> f{mesh, material, targets, size, {}, {}, 0, 0, 0, 0, 0};
+  Timer clock;
+  if (pillow_first && options.interface_pillow_rounds > 0) {
+    InterfacePillowOptions io;
+    io.threshold = options.threshold;
+    io.rounds = options.interface_pillow_rounds;
+    io.carve = options.interface_pillow_carve;
+    io.pillow = options.pillow;
+    io.smooth = options.smooth;
+    io.boundary = options.boundary;
+    InterfacePillowResult<M> p =
+        pillow_interfaces(f.mesh, f.material, n_materials, f.targets.has, f.size, io);
+    f.pillows = std::move(p.attempts);
+    f.layer_cells = p.mesh.n_cells() - f.mesh.n_cells();
+    f.size = f.size.remapped(p.cell_origin.raw());
+    f.mesh = std::move(p.mesh);
+    f.material = std::move(p.material);
+    extend_targets(f.mesh, f.targets);
+  }
+  f.pillow_seconds = clock.seconds();
+  clock.restart();
+  const auto sliding =
+      sliding_constraints(boundary_constraints(f.mesh, options.boundary), f.targets);
+  f.move = controlled_move(f.mesh, f.targets, mo, f.size, &sliding);
+  index_t on = 0;
+  for (NodeId v : id_range<NodeId>(f.mesh.n_nodes())) on += f.targets.has[v] && f.move.on_surface[v];
+  f.share = targets.n_interface_nodes > 0
+                ? static_cast<double>(on) / static_cast<double>(targets.n_interface_nodes)
+                : 1.0;
+  f.surface_dist = surface_distance_sum(f.mesh, f.targets, sliding);
+  f.move_seconds = clock.seconds();
+  return f;
 }
 
 // Sec. 5.3: smooths the targets on the model in 3D; says why when it does not run.
@@ -217,6 +243,48 @@ void diagnose(AdaptResult<M>& r, const std::vector<NodeId>& failed_seeds) {
   r.blocking_cells = std::move(cells);
 }
 
+// The steps after the targets, with the given (resolved) layer strategy: the first move
+// (after a first layer, for `first` and `both`), cavities (for `cavities` and `both`), the
+// move-smooth loop; fills r.
+template <class M>
+void run_layers(const M& grid, const IdVector<CellId, int>& material, const Targets& grid_targets,
+                const SizeCriterion& grid_size, int n_materials, LayerStrategy layers,
+                AdaptResult<M>& r, const AdaptOptions& options) {
+  MoveOptions mo;
+  mo.threshold = options.threshold;
+  mo.steps = options.steps;
+  r.layers = layers;
+  FirstMove<M> f =
+      first_move(grid, material, grid_targets, grid_size, pillows_first(layers), n_materials, mo,
+                 options);
+  M mesh = std::move(f.mesh);
+  IdVector<CellId, int> out_material = std::move(f.material);
+  Targets targets = std::move(f.targets);
+  SizeCriterion size = std::move(f.size);
+  r.interface_pillows = std::move(f.pillows);
+  r.n_interface_layer_cells = f.layer_cells;
+  r.dist_init = f.move.dist;
+  r.surface_dist_init = f.surface_dist;
+  const MoveResult first = std::move(f.move);
+  r.steps.push_back({"pillow", min_quality(mesh), mesh.n_cells(), f.pillow_seconds});
+  r.steps.push_back({"move", min_quality(mesh), mesh.n_cells(), f.move_seconds});
+  Timer clock;
+  if (options.progress) options.progress("adapt", 0.3);
+
+  const std::vector<NodeId> failed = pillow_cavities(mesh, out_material, targets, size, first,
+                                                     n_materials, r, options);
+  record_step(r, mesh, "cavity", clock, options.progress, 0.5);
+
+  const auto sliding = sliding_constraints(boundary_constraints(mesh, options.boundary), targets);
+  r.loops = move_smooth_loop(mesh, targets, sliding, mo, size, options);
+  record_step(r, mesh, "move-smooth", clock, options.progress, 1.0);
+
+  r.mesh = std::move(mesh);
+  r.material = std::move(out_material);
+  finish_result(r, targets.position, targets.has, size, &sliding, options);
+  diagnose(r, failed);
+}
+
 }  // namespace
 
 template <class M>
@@ -250,32 +318,29 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
   record_step(r, mesh, "targets", clock, options.progress, 0.1);
   correct(mesh, material, grid_boundary, targets, model, r, clock, options);
 
-  IdVector<CellId, int> out_material = material;
-  pillow_interfaces_first(mesh, out_material, targets, size, fractions.n_materials(), r, options);
-  record_step(r, mesh, "pillow", clock, options.progress, 0.2);
-
-  MoveOptions mo;
-  mo.threshold = options.threshold;
-  mo.steps = options.steps;
-  const auto grid_sliding =
-      sliding_constraints(boundary_constraints(mesh, options.boundary), targets);
-  const MoveResult first = controlled_move(mesh, targets, mo, size, &grid_sliding);
-  r.dist_init = first.dist;
-  r.surface_dist_init = surface_distance_sum(mesh, targets, grid_sliding);
-  record_step(r, mesh, "move", clock, options.progress, 0.3);
-
-  const std::vector<NodeId> failed = pillow_cavities(mesh, out_material, targets, size, first,
-                                                     fractions.n_materials(), r, options);
-  record_step(r, mesh, "cavity", clock, options.progress, 0.5);
-
-  const auto sliding = sliding_constraints(boundary_constraints(mesh, options.boundary), targets);
-  r.loops = move_smooth_loop(mesh, targets, sliding, mo, size, options);
-  record_step(r, mesh, "move-smooth", clock, options.progress, 1.0);
-
-  r.mesh = std::move(mesh);
-  r.material = std::move(out_material);
-  finish_result(r, targets.position, targets.has, size, &sliding, options);
-  diagnose(r, failed);
+  if (options.layers == LayerStrategy::automatic && M::dim == 3) {
+    // Both ways; the one that brings more interface nodes onto their interface is kept.
+    AdaptResult<M> plain = r, layered = r;
+    run_layers(grid, material, targets, size, fractions.n_materials(), LayerStrategy::cavities,
+               plain, options);
+    run_layers(grid, material, targets, size, fractions.n_materials(), LayerStrategy::first,
+               layered, options);
+    const bool take = layered.n_near_interface > plain.n_near_interface ||
+                      (layered.n_near_interface == plain.n_near_interface &&
+                       layered.surface_dist_final < plain.surface_dist_final);
+    AdaptResult<M>& other = take ? plain : layered;
+    double seconds = 0;
+    for (std::size_t k = r.steps.size(); k < other.steps.size(); ++k)
+      seconds += other.steps[k].seconds;
+    r = std::move(take ? layered : plain);
+    r.other_near_interface = other.n_near_interface;
+    r.steps.push_back({"other-layers", r.min_quality, r.mesh.n_cells(), seconds});
+  } else {
+    run_layers(grid, material, targets, size, fractions.n_materials(),
+               options.layers == LayerStrategy::automatic ? LayerStrategy::cavities
+                                                          : options.layers,
+               r, options);
+  }
   if (good_input && (r.n_below_threshold > 0 || r.n_below_min_edge > 0))
     throw InternalError("guaranteed pipeline left " + std::to_string(r.n_below_threshold) +
                         " cells below the threshold " + std::to_string(options.threshold) +

@@ -43,10 +43,12 @@ enum class AdaptMethod { base, guaranteed };
 /// Where the guaranteed method gives the interface nodes new cells to move into: `cavities`
 /// pillowed around the nodes the first move left short (paper sec. 5.2), each material's
 /// interfaces pillowed `first`, before the move (interface_pillow.h), or `both`. `automatic`:
-/// cavities in 2D, first in 3D. In 2D the move and the cavities reach the interfaces and a
-/// first layer cost cells and reach on the cases measured; in 3D the first layer reaches
-/// them where cavities could not, and cavities after it gained almost nothing at three times
-/// the time (docs/results.md).
+/// cavities in 2D; in 3D the method runs both with cavities and with a first layer, and
+/// keeps the result that brings more interface nodes near their interface (the time is then
+/// that of both). In 2D, and on extruded 2D cases, the move and the cavities reach the
+/// interfaces and a first layer cost reach (half the nodes blocked on the extruded ones); on
+/// curved 3D surfaces the first layer reaches them where cavities could not, and cavities
+/// after it gained almost nothing at three times the time (docs/results.md).
 enum class LayerStrategy { automatic, cavities, first, both };
 
 /// "base" / "guaranteed"; throws OptionError for another name.
@@ -142,6 +144,10 @@ struct AdaptResult {
   /// The worst cells next to blocked nodes, lowest quality first (at most 10).
   std::vector<std::pair<CellId, double>> blocking_cells;
   int loops = 0;                        ///< move-smooth rounds run
+  LayerStrategy layers = LayerStrategy::cavities;  ///< guaranteed: the strategy that ran
+  /// automatic, 3D: interface nodes the other strategy (the one not kept) brought near
+  /// their interface.
+  index_t other_near_interface = 0;
   std::vector<InterfacePillowAttempt> interface_pillows;  ///< per material, before the move
   index_t n_interface_layer_cells = 0;  ///< cells the interface pillowing added
   std::vector<CavityAttempt> cavities;  ///< every cavity tried, in order
