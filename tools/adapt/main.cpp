@@ -27,6 +27,7 @@ struct Args {
   int max_loops = 20;
   int cavity_range = 3;
   std::string layers = "automatic";
+  double enough_share = 0.98;
   int interface_pillow_rounds = 4;
   int interface_pillow_carve = 1;
   double near_interface = 0.05;
@@ -234,6 +235,7 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   options.max_loops = args.max_loops;
   options.cavity_range = args.cavity_range;
   options.layers = parse_layer_strategy(args.layers);
+  options.enough_share = args.enough_share;
   options.interface_pillow_rounds = args.interface_pillow_rounds;
   options.interface_pillow_carve = args.interface_pillow_carve;
   options.near_interface = args.near_interface;
@@ -348,10 +350,15 @@ int main(int argc, char** argv) {
   app.add_option("--layers", args.layers,
                  "guaranteed: where nodes get new cells to move into: cavities (around the nodes "
                  "the first move left short, paper sec. 5.2), first (each material's interfaces "
-                 "pillowed before the move), both; automatic: cavities in 2D; in 3D runs with "
-                 "cavities and with first and keeps the result with more nodes near their "
-                 "interface")
+                 "pillowed before the move), both; automatic: cavities in 2D; in 3D first, and "
+                 "when fewer than --enough-share of the interface nodes end near their "
+                 "interface, cavities too, keeping the result with more of them")
       ->check(CLI::IsMember({"automatic", "cavities", "first", "both"}))
+      ->capture_default_str();
+  app.add_option("--enough-share", args.enough_share,
+                 "guaranteed, --layers automatic, 3D: the share of interface nodes near their "
+                 "interface with a first layer beyond which cavities are not tried")
+      ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   app.add_option("--interface-pillow-rounds", args.interface_pillow_rounds,
                  "guaranteed: attempts at pillowing each material's interfaces before the first "

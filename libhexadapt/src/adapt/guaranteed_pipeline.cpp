@@ -318,25 +318,31 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
   record_step(r, mesh, "targets", clock, options.progress, 0.1);
   correct(mesh, material, grid_boundary, targets, model, r, clock, options);
 
+  const int n_materials = fractions.n_materials();
   if (options.layers == LayerStrategy::automatic && M::dim == 3) {
-    // Both ways; the one that brings more interface nodes onto their interface is kept.
-    AdaptResult<M> plain = r, layered = r;
-    run_layers(grid, material, targets, size, fractions.n_materials(), LayerStrategy::cavities,
-               plain, options);
-    run_layers(grid, material, targets, size, fractions.n_materials(), LayerStrategy::first,
-               layered, options);
-    const bool take = layered.n_near_interface > plain.n_near_interface ||
-                      (layered.n_near_interface == plain.n_near_interface &&
-                       layered.surface_dist_final < plain.surface_dist_final);
-    AdaptResult<M>& other = take ? plain : layered;
-    double seconds = 0;
-    for (std::size_t k = r.steps.size(); k < other.steps.size(); ++k)
-      seconds += other.steps[k].seconds;
-    r = std::move(take ? layered : plain);
-    r.other_near_interface = other.n_near_interface;
-    r.steps.push_back({"other-layers", r.min_quality, r.mesh.n_cells(), seconds});
+    // A first layer; when it leaves more than 1 - enough_share of the interface nodes off
+    // their interface, cavities too, keeping the result that brings more nodes onto it.
+    AdaptResult<M> layered = r;
+    run_layers(grid, material, targets, size, n_materials, LayerStrategy::first, layered, options);
+    if (layered.n_near_interface >= options.enough_share * layered.n_interface_nodes) {
+      r = std::move(layered);
+    } else {
+      AdaptResult<M> plain = r;
+      run_layers(grid, material, targets, size, n_materials, LayerStrategy::cavities, plain,
+                 options);
+      const bool take = layered.n_near_interface > plain.n_near_interface ||
+                        (layered.n_near_interface == plain.n_near_interface &&
+                         layered.surface_dist_final < plain.surface_dist_final);
+      AdaptResult<M>& other = take ? plain : layered;
+      double seconds = 0;
+      for (std::size_t k = r.steps.size(); k < other.steps.size(); ++k)
+        seconds += other.steps[k].seconds;
+      r = std::move(take ? layered : plain);
+      r.other_near_interface = other.n_near_interface;
+      r.steps.push_back({"other-layers", r.min_quality, r.mesh.n_cells(), seconds});
+    }
   } else {
-    run_layers(grid, material, targets, size, fractions.n_materials(),
+    run_layers(grid, material, targets, size, n_materials,
                options.layers == LayerStrategy::automatic ? LayerStrategy::cavities
                                                           : options.layers,
                r, options);

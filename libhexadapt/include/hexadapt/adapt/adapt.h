@@ -43,9 +43,9 @@ enum class AdaptMethod { base, guaranteed };
 /// Where the guaranteed method gives the interface nodes new cells to move into: `cavities`
 /// pillowed around the nodes the first move left short (paper sec. 5.2), each material's
 /// interfaces pillowed `first`, before the move (interface_pillow.h), or `both`. `automatic`:
-/// cavities in 2D; in 3D the method runs both with cavities and with a first layer, and
-/// keeps the result that brings more interface nodes near their interface (the time is then
-/// that of both). In 2D, and on extruded 2D cases, the move and the cavities reach the
+/// cavities in 2D; in 3D a first layer, and when that leaves more than 1 - enough_share of
+/// the interface nodes away from their interface, cavities too, keeping the result that
+/// brings more nodes near their interface (the time is then that of both). In 2D, and on extruded 2D cases, the move and the cavities reach the
 /// interfaces and a first layer cost reach (half the nodes blocked on the extruded ones); on
 /// curved 3D surfaces the first layer reaches them where cavities could not, and cavities
 /// after it gained almost nothing at three times the time (docs/results.md).
@@ -74,6 +74,9 @@ struct AdaptOptions {
   bool allow_bad_input = false;
   int max_loops = 20;    ///< guaranteed: move-smooth rounds at most
   LayerStrategy layers = LayerStrategy::automatic;  ///< guaranteed: cavities, first or both
+  /// guaranteed, automatic, 3D: the share of interface nodes near their interface with a
+  /// first layer beyond which cavities are not tried.
+  double enough_share = 0.98;
   int cavity_range = 3;  ///< guaranteed: starting vertex distance of a cavity; 0 = no cavities
   /// guaranteed: attempts at pillowing each material's interfaces before the first move
   /// (interface_pillow.h); 0 = none.
@@ -145,7 +148,7 @@ struct AdaptResult {
   std::vector<std::pair<CellId, double>> blocking_cells;
   int loops = 0;                        ///< move-smooth rounds run
   LayerStrategy layers = LayerStrategy::cavities;  ///< guaranteed: the strategy that ran
-  /// automatic, 3D: interface nodes the other strategy (the one not kept) brought near
+  /// automatic, 3D, when both strategies ran: interface nodes the one not kept brought near
   /// their interface.
   index_t other_near_interface = 0;
   std::vector<InterfacePillowAttempt> interface_pillows;  ///< per material, before the move
