@@ -73,21 +73,11 @@ std::vector<NodeId> nodes_around_moves(const M& mesh, const std::vector<Vec3>& b
   return nodes;
 }
 
-// The targets of the nodes not yet on their interface surface (the others are done).
-template <class M>
-Targets off_surface(const M& mesh, const Targets& targets,
-                    const IdVector<NodeId, NodeConstraint>& sliding, const SizeCriterion& size) {
-  Targets pending = targets;
-  for (NodeId v : id_range<NodeId>(mesh.n_nodes()))
-    if (pending.has[v])
-      pending.has[v] = surface_distance(mesh.point(v), targets.position[v], sliding[v]) >
-                       1e-9 * node_local_size(mesh, v, size);
-  return pending;
-}
-
-// Controlled moves (of the nodes still off their interface surface) alternating with
-// quality-preserving smoothing until a round no longer brings the nodes closer to their
-// surfaces by more than the tolerance; keeps the best round.
+// Controlled moves alternating with quality-preserving smoothing until a round no longer
+// brings the nodes closer to their interface surfaces by more than the tolerance; keeps the
+// best round. Nodes that slid onto their surface still try their target each round: moving
+// only the nodes off their surface was three times faster in 3D, but left the 2D cases'
+// discrepancy 9 % higher and ten times the distance to the targets.
 template <class M>
 int move_smooth_loop(M& mesh, const Targets& targets,
                      const IdVector<NodeId, NodeConstraint>& sliding, const MoveOptions& mo,
@@ -102,7 +92,7 @@ int move_smooth_loop(M& mesh, const Targets& targets,
     const SmoothResult s =
         smooth(mesh, movable, sliding, options.smooth, loops == 1 ? nullptr : &start, size);
     const std::vector<Vec3> before = points_of(mesh);
-    controlled_move(mesh, off_surface(mesh, targets, sliding, size), mo, size, &sliding);
+    controlled_move(mesh, targets, mo, size, &sliding);
     start = nodes_around_moves(mesh, before, s.unsettled);
     const double dist = surface_distance_sum(mesh, targets, sliding);
     const bool better = dist < best;
