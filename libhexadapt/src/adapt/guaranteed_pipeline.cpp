@@ -146,7 +146,6 @@ struct FirstMove {
   MoveResult move;
   std::vector<InterfacePillowAttempt> pillows;
   index_t layer_cells = 0;
-  double share = 0;         ///< of the interface nodes, on their surface after the move
   double surface_dist = 0;  ///< sum of surface distances after the move
   double pillow_seconds = 0, move_seconds = 0;
 };
@@ -155,7 +154,7 @@ template <class M>
 FirstMove<M> first_move(const M& mesh, const IdVector<CellId, int>& material,
                         const Targets& targets, const SizeCriterion& size, bool pillow_first,
                         int n_materials, const MoveOptions& mo, const AdaptOptions& options) {
-  FirstMove<M> f{mesh, material, targets, size, {}, {}, 0, 0, 0, 0, 0};
+  FirstMove<M> f{mesh, material, targets, size, {}, {}, 0, 0, 0, 0};
   Timer clock;
   if (pillow_first && options.interface_pillow_rounds > 0) {
     InterfacePillowOptions io;
@@ -179,11 +178,6 @@ FirstMove<M> first_move(const M& mesh, const IdVector<CellId, int>& material,
   const auto sliding =
       sliding_constraints(boundary_constraints(f.mesh, options.boundary), f.targets);
   f.move = controlled_move(f.mesh, f.targets, mo, f.size, &sliding);
-  index_t on = 0;
-  for (NodeId v : id_range<NodeId>(f.mesh.n_nodes())) on += f.targets.has[v] && f.move.on_surface[v];
-  f.share = targets.n_interface_nodes > 0
-                ? static_cast<double>(on) / static_cast<double>(targets.n_interface_nodes)
-                : 1.0;
   f.surface_dist = surface_distance_sum(f.mesh, f.targets, sliding);
   f.move_seconds = clock.seconds();
   return f;
