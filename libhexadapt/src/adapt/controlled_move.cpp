@@ -48,20 +48,6 @@ std::vector<Vec3> ring_directions(const std::vector<Vec3>& basis) {
   return out;
 }
 
-// The ring radii's unit: the mean local size of n's cells when the size criterion carries
-// them, else the mean length of n's edges.
-template <class M>
-double ring_unit(const M& mesh, NodeId n, const std::vector<NodeId>& around,
-                 const SizeCriterion& size) {
-  double h = 0;
-  if (!size.local_size.empty()) {
-    for (CellId c : mesh.node_cells(n)) h += size.local_size[c];
-    return h / static_cast<double>(mesh.node_cells(n).size());
-  }
-  for (NodeId o : around) h += (mesh.point(o) - mesh.point(n)).norm();
-  return h / static_cast<double>(around.size());
-}
-
 // Puts n on the nearest ring of points of its surface around its target that holds a point
 // where every cell around n keeps the criteria (the best such point of the ring). Returns
 // false and leaves n where it was when no ring does.
@@ -73,7 +59,9 @@ bool slide(M& mesh, NodeId n, const Vec3& target, const NodeConstraint& surface,
   const std::vector<NodeId> around = edge_neighbours(mesh, n);
   if (around.empty()) return false;
   const Vec3 old = mesh.point(n);
-  const double h = ring_unit(mesh, n, around, size);
+  // The radii's unit: the local size of n's cells, or its mean edge length without sizes.
+  const double h = size.local_size.empty() ? mean_edge_length(mesh, n, around)
+                                           : node_local_size(mesh, n, size);
   const std::vector<Vec3> directions = ring_directions(basis);
   for (double r : {0.0625, 0.125, 0.25, 0.375, 0.5}) {
     double best = threshold;

@@ -30,18 +30,6 @@ double surface_distance_sum(const M& mesh, const Targets& targets,
   return s;
 }
 
-// Mean local size of the cells around n.
-template <class M>
-double node_local_size(const M& mesh, NodeId n, const SizeCriterion& size) {
-  double h = 0;
-  int count = 0;
-  for (CellId c : mesh.node_cells(n)) {
-    h += size.local_size[c];
-    ++count;
-  }
-  return count ? h / count : 0.0;
-}
-
 // Fills the distances, quality and size figures of the output r.mesh; `size`: the size
 // criterion on its cells; `surface`: each node's interface surface (nullptr: the target
 // point itself).

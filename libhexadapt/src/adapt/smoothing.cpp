@@ -10,14 +10,6 @@ namespace hexadapt {
 
 namespace {
 
-// Mean distance from n to its edge neighbours: the node's length scale.
-template <class M>
-double mean_edge_length(const M& mesh, NodeId n, const std::vector<NodeId>& around) {
-  double len = 0;
-  for (NodeId o : around) len += (mesh.point(o) - mesh.point(n)).norm();
-  return len / static_cast<double>(around.size());
-}
-
 // One node: the largest halving of the Laplacian displacement that does not lower the local
 // minimum quality. Returns the gain in local minimum (0 when the node did not move). `q`: the
 // local minimum, on entry and on return (each evaluation costs the cells around the node).

@@ -1,6 +1,6 @@
 // Navigation around a node that the adaptation steps share (paper sec. 5): the corner of a
-// cell a node is, the nodes joined to it by a cell edge, the outward normal of a cell face,
-// and a conflict-free colouring of nodes for parallel moves.
+// cell a node is, the nodes joined to it by a cell edge and their mean distance, the outward
+// normal of a cell face, and a conflict-free colouring of nodes for parallel moves.
 //
 // The only dimensional facts live here: a quad corner's edge neighbours are the previous and
 // next corners, a hex corner's (binary numbering) are the corners one bit away.
@@ -37,6 +37,14 @@ int corner_of(const M& mesh, CellId c, NodeId n) {
 /// Nodes sharing a cell edge with n, increasing ids, without repeats.
 template <class M>
 std::vector<NodeId> edge_neighbours(const M& mesh, NodeId n);
+
+/// Mean distance from n to `around` (its edge_neighbours, not empty): the node's length scale.
+template <class M>
+double mean_edge_length(const M& mesh, NodeId n, const std::vector<NodeId>& around) {
+  double len = 0;
+  for (NodeId o : around) len += (mesh.point(o) - mesh.point(n)).norm();
+  return len / static_cast<double>(around.size());
+}
 
 /// Unit normal of local face lf of c, pointing out of c (2D: in the xy plane).
 template <class M>

@@ -57,6 +57,18 @@ SizeCriterion size_criterion(const M& grid, double min_edge) {
   return {min_edge, mean_edge_lengths(grid)};
 }
 
+/// Mean local size of the cells around n (0 when it has none); `size` must carry the sizes.
+template <class M>
+double node_local_size(const M& mesh, NodeId n, const SizeCriterion& size) {
+  double h = 0;
+  int count = 0;
+  for (CellId c : mesh.node_cells(n)) {
+    h += size.local_size[c];
+    ++count;
+  }
+  return count ? h / count : 0.0;
+}
+
 /// Shortest edge / (min_edge x local size): below 1 breaks the criterion (+inf when off).
 template <class M>
 double size_ratio(const M& mesh, CellId c, const SizeCriterion& size);
@@ -64,10 +76,9 @@ double size_ratio(const M& mesh, CellId c, const SizeCriterion& size);
 /// The scaled Jacobian, or -2 + size_ratio in [-2, -1) when the size criterion fails.
 template <class M>
 double cell_score(const M& mesh, CellId c, const SizeCriterion& size) {
-  const double q = mesh.cell_quality(c);
-  if (!size.on()) return q;
+  if (!size.on()) return mesh.cell_quality(c);
   const double r = size_ratio(mesh, c, size);
-  return r < 1 ? -2.0 + r : q;
+  return r < 1 ? -2.0 + r : mesh.cell_quality(c);
 }
 
 /// Smallest score of the cells around n (1 when n has no cell).
