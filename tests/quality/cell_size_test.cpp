@@ -4,8 +4,11 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
+#include <vector>
 
 #include "hexadapt/quality/cell_size.h"
+#include "hexadapt/quality/scaled_jacobian.h"
 
 namespace hexadapt {
 namespace {
@@ -63,6 +66,36 @@ TEST(CellSize, InvertedOrNanCellsHaveNoTimeStep) {
   h[7].x() = std::nan("");
   EXPECT_EQ(hex_time_step_length(h), 0);
   EXPECT_EQ(hex_edge_lengths(h).min, 0);
+}
+
+// The one-pass metrics of the adaptation's cell score give exactly the two apart, on boxes
+// with corners jittered up to inversion, a collapsed edge and a NaN.
+TEST(CellSize, ShapeAndSizeInOnePassAreTheTwoApart) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> jitter(-0.6, 0.6);
+  std::vector<std::array<Vec3, 8>> hexes;
+  for (int k = 0; k < 200; ++k) {
+    std::array<Vec3, 8> p = box(1, 2, 0.5);
+    for (Vec3& x : p) x += Vec3(jitter(rng), jitter(rng), jitter(rng));
+    hexes.push_back(p);
+  }
+  hexes.push_back(box(1, 1, 1));
+  hexes.back()[3] = hexes.back()[1];
+  hexes.push_back(box(1, 1, 1));
+  hexes.back()[6].z() = std::nan("");
+  int inverted = 0;
+  for (const auto& p : hexes) {
+    const HexShapeAndSize m = hex_shape_and_size(p);
+    const EdgeLengths e = hex_edge_lengths(p);
+    EXPECT_EQ(m.scaled_jacobian, hex_scaled_jacobian(p));
+    EXPECT_EQ(m.edges.min, e.min);
+    EXPECT_EQ(m.edges.max, e.max);
+    EXPECT_EQ(m.edges.mean, e.mean);
+    inverted += m.scaled_jacobian < 0;
+  }
+  EXPECT_GT(inverted, 10);  // the sample reaches inverted cells, not only good ones
+  EXPECT_EQ(hex_shape_and_size(hexes[200]).scaled_jacobian, -1);
+  EXPECT_EQ(hex_shape_and_size(hexes[201]).edges.min, 0);
 }
 
 }  // namespace

@@ -12,14 +12,18 @@ namespace hexadapt {
 
 namespace {
 
-// Tries to put n at p; keeps it there when the cells around it stay acceptable.
+// Tries to put n at p; keeps it there when the cells around it stay acceptable: at or above
+// the threshold, or, where they were below it (a bad input), no worse than they were.
 template <class M>
 bool try_position(M& mesh, NodeId n, const Vec3& p, double threshold, const SizeCriterion& size) {
   const Vec3 old = mesh.point(n);
+  mesh.set_point(n, p);
+  if (min_score_around(mesh, n, size, threshold) >= threshold) return true;
+  mesh.set_point(n, old);
+  if (min_score_around(mesh, n, size, threshold) >= threshold) return false;
   const double before = min_score_around(mesh, n, size);
   mesh.set_point(n, p);
-  const double after = min_score_around(mesh, n, size);
-  if (after >= threshold || after >= before) return true;
+  if (min_score_around(mesh, n, size, before) >= before) return true;
   mesh.set_point(n, old);
   return false;
 }
@@ -70,7 +74,7 @@ bool slide(M& mesh, NodeId n, const Vec3& target, const NodeConstraint& surface,
     for (const Vec3& d : directions) {
       const Vec3 p = target + r * h * d;
       mesh.set_point(n, p);
-      const double s = min_score_around(mesh, n, size);
+      const double s = min_score_around(mesh, n, size, best);
       if (s >= best && (!found || s > best)) {
         best = s;
         best_p = p;

@@ -28,7 +28,7 @@ double laplacian_step(M& mesh, NodeId n, const std::vector<NodeId>& around,
   const double before = q;
   for (int h = 0; h <= options.halvings; ++h, d *= 0.5) {
     mesh.set_point(n, p + d);
-    const double after = min_score_around(mesh, n, size);
+    const double after = min_score_around(mesh, n, size, before);
     if (after >= before) {
       q = after;
       return after - before;
@@ -58,7 +58,7 @@ double pattern_search(M& mesh, NodeId n, const std::vector<NodeId>& around,
           const Vec3 d = constraint.project(sign * h * Vec3::Unit(axis));
           if (!(d.norm() > 1e-3 * h)) continue;
           mesh.set_point(n, p + d);
-          const double trial = min_score_around(mesh, n, size);
+          const double trial = min_score_around(mesh, n, size, best + 1e-9);
           if (trial > best + 1e-9) {
             best = trial;
             best_p = p + d;

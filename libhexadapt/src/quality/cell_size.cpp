@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "frames.h"
 #include "hexadapt/quality/scaled_jacobian.h"
 
 namespace hexadapt {
@@ -13,13 +14,11 @@ namespace {
 // Below this share of the longest edge an edge counts as collapsed (as in scaled_jacobian).
 constexpr double degenerate_share = 1e-13;
 
-template <std::size_t N, std::size_t E>
-EdgeLengths edge_lengths(const std::array<Vec3, N>& p,
-                         const std::array<std::array<int, 2>, E>& edges) {
+template <std::size_t E>
+EdgeLengths edge_lengths(const std::array<double, E>& lengths) {
   EdgeLengths out;
   out.min = std::numeric_limits<double>::infinity();
-  for (const auto& e : edges) {
-    const double len = (p[static_cast<std::size_t>(e[1])] - p[static_cast<std::size_t>(e[0])]).norm();
+  for (double len : lengths) {
     if (!std::isfinite(len)) return EdgeLengths{};
     out.min = std::min(out.min, len);
     out.max = std::max(out.max, len);
@@ -37,11 +36,18 @@ double EdgeLengths::ratio() const {
 }
 
 EdgeLengths hex_edge_lengths(const std::array<Vec3, 8>& p) {
-  return edge_lengths(p, ref_hex::edges);
+  return edge_lengths(quality_detail::hex_edges(p).length);
+}
+
+HexShapeAndSize hex_shape_and_size(const std::array<Vec3, 8>& p) {
+  const quality_detail::HexEdges e = quality_detail::hex_edges(p);
+  return {quality_detail::hex_scaled_jacobian(p, e), edge_lengths(e.length)};
 }
 
 EdgeLengths quad_edge_lengths(const std::array<Vec3, 4>& p) {
-  return edge_lengths(p, ref_quad::face_nodes);
+  std::array<double, 4> lengths;
+  for (std::size_t v = 0; v < 4; ++v) lengths[v] = (p[(v + 1) % 4] - p[v]).norm();
+  return edge_lengths(lengths);
 }
 
 double hex_time_step_length(const std::array<Vec3, 8>& p) {

@@ -34,6 +34,35 @@ inline std::array<Vec3, 3> hex_principal_axes(const std::array<Vec3, 8>& p) {
           (p[4] + p[5] + p[6] + p[7]) - (p[0] + p[1] + p[2] + p[3])};
 }
 
+/// The 12 edges of a hex (ref_hex::edges order, from the lower to the upper corner), their
+/// lengths and the longest, computed once for the metrics that all need them.
+struct HexEdges {
+  std::array<Vec3, 12> vec;
+  std::array<double, 12> length;
+  double longest = 0;
+};
+
+inline HexEdges hex_edges(const std::array<Vec3, 8>& p) {
+  HexEdges e;
+  for (std::size_t k = 0; k < 12; ++k) {
+    const auto& ends = ref_hex::edges[k];
+    e.vec[k] = p[static_cast<std::size_t>(ends[1])] - p[static_cast<std::size_t>(ends[0])];
+    e.length[k] = e.vec[k].norm();
+    e.longest = std::max(e.longest, e.length[k]);
+  }
+  return e;
+}
+
+/// The index in ref_hex::edges of the edge leaving corner v along axis 0, 1 or 2.
+inline std::size_t hex_edge_index(std::size_t v, int axis) {
+  if (axis == 0) return (v & 6u) >> 1;
+  if (axis == 1) return 4 + ((v & 1u) | ((v >> 1) & 2u));
+  return 8 + (v & 3u);
+}
+
+/// hex_scaled_jacobian(p) from p's edges (scaled_jacobian.cpp).
+double hex_scaled_jacobian(const std::array<Vec3, 8>& p, const HexEdges& e);
+
 /// The longest of the 12 edges: the length unit of the degeneracy test.
 inline double hex_scale(const std::array<Vec3, 8>& p) {
   double s = 0;

@@ -21,19 +21,39 @@ bool scaled_det(const Vec3& a, const Vec3& b, const Vec3& c, double scale, doubl
 
 }  // namespace
 
-double hex_scaled_jacobian(const std::array<Vec3, 8>& p) {
-  const double scale = quality_detail::hex_scale(p);
+double quality_detail::hex_scaled_jacobian(const std::array<Vec3, 8>& p,
+                                           const quality_detail::HexEdges& e) {
+  const double scale = e.longest;
   if (!(scale > 0) || !std::isfinite(scale)) return -1.0;
   const auto axes = quality_detail::hex_principal_axes(p);
   double worst;
   if (!scaled_det(axes[0], axes[1], axes[2], 4 * scale, worst)) return -1.0;
+  // Every edge is in some corner frame, so one collapsed edge makes the cell degenerate.
+  const double tiny = quality_detail::degenerate_length * scale;
+  std::array<Vec3, 12> unit;
+  for (std::size_t k = 0; k < 12; ++k) {
+    if (!(e.length[k] > tiny)) return -1.0;  // also catches NaN
+    unit[k] = e.vec[k] / e.length[k];
+  }
+  // Corner v's frame (hex_corner_frame): its edges along x, y, z pointing away from v,
+  // x and y swapped at the corners of odd parity.
   for (std::size_t v = 0; v < 8; ++v) {
-    const auto f = quality_detail::hex_corner_frame(p, v);
-    double j;
-    if (!scaled_det(f[0], f[1], f[2], scale, j)) return -1.0;
+    std::array<Vec3, 3> f;
+    for (int axis = 0; axis < 3; ++axis) {
+      const Vec3& u = unit[quality_detail::hex_edge_index(v, axis)];
+      f[static_cast<std::size_t>(axis)] = (v >> axis) & 1u ? Vec3(-u) : u;
+    }
+    const unsigned parity = (v & 1u) ^ ((v >> 1) & 1u) ^ ((v >> 2) & 1u);
+    if (parity) std::swap(f[0], f[1]);
+    const double j = f[0].dot(f[1].cross(f[2]));
+    if (!std::isfinite(j)) return -1.0;
     worst = std::min(worst, j);
   }
   return std::clamp(worst, -1.0, 1.0);
+}
+
+double hex_scaled_jacobian(const std::array<Vec3, 8>& p) {
+  return quality_detail::hex_scaled_jacobian(p, quality_detail::hex_edges(p));
 }
 
 double hex_volume(const std::array<Vec3, 8>& p) {

@@ -18,6 +18,7 @@
 // with min_edge 0 (off) the score is the scaled Jacobian.
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include "hexadapt/core/ids.h"
@@ -77,15 +78,27 @@ double size_ratio(const M& mesh, CellId c, const SizeCriterion& size);
 template <class M>
 double cell_score(const M& mesh, CellId c, const SizeCriterion& size) {
   if (!size.on()) return mesh.cell_quality(c);
-  const double r = size_ratio(mesh, c, size);
-  return r < 1 ? -2.0 + r : mesh.cell_quality(c);
+  if constexpr (M::dim == 3) {  // the hex's edges once for both criteria
+    const HexShapeAndSize m = hex_shape_and_size(mesh.cell_points(c));
+    const double r = m.edges.min / size.min_length(c);
+    return r < 1 ? -2.0 + r : m.scaled_jacobian;
+  } else {
+    const double r = size_ratio(mesh, c, size);
+    return r < 1 ? -2.0 + r : mesh.cell_quality(c);
+  }
 }
 
-/// Smallest score of the cells around n (1 when n has no cell).
+/// Smallest score of the cells around n (1 when n has no cell). With `stop_below`, returns
+/// as soon as a cell scores below it: the result is then below it, but not always the
+/// smallest (a trial position that must reach a bound is refused at its first bad cell).
 template <class M>
-double min_score_around(const M& mesh, NodeId n, const SizeCriterion& size) {
+double min_score_around(const M& mesh, NodeId n, const SizeCriterion& size,
+                        double stop_below = -std::numeric_limits<double>::infinity()) {
   double s = 1.0;
-  for (CellId c : mesh.node_cells(n)) s = std::min(s, cell_score(mesh, c, size));
+  for (CellId c : mesh.node_cells(n)) {
+    s = std::min(s, cell_score(mesh, c, size));
+    if (s < stop_below) break;
+  }
   return s;
 }
 

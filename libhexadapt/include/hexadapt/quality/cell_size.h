@@ -28,6 +28,14 @@ struct EdgeLengths {
 EdgeLengths hex_edge_lengths(const std::array<Vec3, 8>& p);
 EdgeLengths quad_edge_lengths(const std::array<Vec3, 4>& p);
 
+/// A hex's scaled Jacobian (scaled_jacobian.h) and edge lengths from one pass over its
+/// edges: the two apart cost twice as much.
+struct HexShapeAndSize {
+  double scaled_jacobian = -1;
+  EdgeLengths edges;
+};
+HexShapeAndSize hex_shape_and_size(const std::array<Vec3, 8>& p);
+
 /// Hex volume / largest face area (0 for an inverted or degenerate hex).
 double hex_time_step_length(const std::array<Vec3, 8>& p);
 /// Quad area (xy plane) / longest edge (0 for an inverted or degenerate quad).
