@@ -307,9 +307,10 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
 int main(int argc, char** argv) {
   CLI::App app{
       "Adapts an assigned grid (material + vf_* cell arrays, from hexadapt-assign) into a\n"
-      "conformal mesh whose cells each hold one material, with point arrays 'target' and\n"
-      "'distance', 'blocked' (1: the node stopped short of its target because of the quality of\n"
-      "the cells around it; 2: and no cavity around it could be pillowed), and the cell array\n"
+      "conformal mesh whose cells each hold one material, with point arrays 'target',\n"
+      "'distance', 'surface_distance', 'blocked' (1: the node ended farther than\n"
+      "--near-interface local sizes from its interface surface, the cells around it refusing\n"
+      "the move; 2: and no cavity around it could be pillowed), and the cell array\n"
       "'local_size'. Exit code 3 when output cells end below --threshold or with an edge\n"
       "shorter than --min-edge x local_size, or when input cells do (guaranteed method,\n"
       "nothing written).",
