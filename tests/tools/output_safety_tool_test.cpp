@@ -141,6 +141,23 @@ TEST_F(OutputSafety, DirectoriesFifosAndDevicesAsInputsAreBadInput) {
   EXPECT_EQ(run("assign", path("adir") + " -o " + path("o.vtu")).code, 2);
 }
 
+// The mesh is written to its temporary file, then --json blocks on a FIFO nobody reads:
+// SIGTERM at that moment must remove the temporary file and end the tool by SIGTERM.
+TEST_F(OutputSafety, SigtermDuringTheWritesLeavesNoTemporaryFile) {
+  ASSERT_EQ(::mkfifo(path("fifo").c_str(), 0600), 0);
+  const std::string tool = tools + "/hexadapt-generate disk --dims 8,8 -q -o " + path("out.vtu") +
+                           " --json " + path("fifo");
+  const std::string script = tool + " & p=$!; for i in $(seq 300); do ls " + path(".out.vtu.") +
+                             "*.tmp >/dev/null 2>&1 && break; sleep 0.1; done; kill -TERM $p; "
+                             "wait $p; echo $? > " +
+                             path("status");
+  ASSERT_EQ(std::system(("bash -c '" + script + "'").c_str()), 0);
+  EXPECT_EQ(content(dir_ / "status"), "143\n");  // 128 + SIGTERM
+  EXPECT_FALSE(fs::exists(dir_ / "out.vtu"));
+  for (const auto& e : fs::directory_iterator(dir_))
+    EXPECT_NE(e.path().extension(), ".tmp") << e.path();
+}
+
 TEST_F(OutputSafety, ThreadsAboveTheLimitAreAUsageError) {
   const ToolRun r = run("measure", path("in.vtu") + " --threads 70000");
   EXPECT_EQ(r.code, 1);
