@@ -223,7 +223,8 @@ int refuse_bad_input(const cli::CommonOptions& common, Json& report, const Phase
 }
 
 int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& common) {
-  cli::refuse_overwrite(common.output, {args.input, args.model});
+  cli::check_files({{"input", args.input}, {"--model", args.model}},
+                   {{"-o", common.output}, {"--json", common.json}});
   AdaptOptions options;
   options.method = parse_adapt_method(args.method);
   options.threshold = args.threshold;

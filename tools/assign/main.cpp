@@ -116,8 +116,8 @@ std::string failure_message(const assign::CorrectionFailure& f, const Fractions&
 }
 
 int run_assign(const CLI::App& app, Options& o) {
-  cli::refuse_overwrite(o.common.output, {o.input});
-  if (!o.partial.empty()) cli::refuse_overwrite(o.partial, {o.input});
+  cli::check_files({{"input", o.input}},
+                   {{"-o", o.common.output}, {"--partial", o.partial}, {"--json", o.common.json}});
   o.correction.spare_neighbours = !o.paper_order;
   o.correction.progress = cli::terminal_progress(o.common);
   PhaseTimes times;

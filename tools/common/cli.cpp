@@ -1,7 +1,6 @@
 #include "cli.h"
 
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 
 #include <unistd.h>
@@ -9,6 +8,7 @@
 #include "hexadapt/core/error.h"
 #include "hexadapt/core/parallel.h"
 #include "hexadapt/io/atomic_file.h"
+#include "hexadapt/io/temp_files.h"
 
 namespace hexadapt::cli {
 
@@ -21,8 +21,8 @@ void add_common_options(CLI::App& app, CommonOptions& options, bool with_output)
   app.add_option("--json", options.json, "Write a machine-readable report (JSON) to this file");
   app.add_flag("-q,--quiet", options.quiet, "Only print errors");
   app.add_flag("-v,--verbose", options.verbose, "More messages on stderr (repeat for debug)");
-  app.add_option("--threads", options.threads, "Number of threads (0: all cores)")
-      ->check(CLI::NonNegativeNumber);
+  app.add_option("--threads", options.threads, "Number of threads (0: all cores; at most 1024)")
+      ->check(CLI::Range(0, max_threads));
 }
 
 void add_input_options(CLI::App& app, InputOptions& options) {
@@ -74,9 +74,13 @@ int run(CLI::App& app, int argc, char** argv, CommonOptions& options,
                     : options.verbose >= 2 ? LogLevel::debug
                     : options.verbose == 1 ? LogLevel::info
                                            : LogLevel::warning);
+  io::remove_temp_files_on_signals();
   try {
     set_threads(options.threads);
-    return body();
+    io::OutputBatch outputs;
+    const int code = body();
+    outputs.commit();
+    return code;
   } catch (const OptionError& e) {
     std::cerr << tool << ": error: " << e.what() << '\n';
     return usage;
@@ -136,17 +140,12 @@ Json phase_times_json(const PhaseTimes& times) {
 
 void write_report(const CommonOptions& options, const Json& report) {
   if (options.json.empty()) return;
-  io::write_file_atomically(options.json, report.dump(2) + "\n");
-}
-
-void refuse_overwrite(const std::string& output, const std::vector<std::string>& inputs) {
-  namespace fs = std::filesystem;
-  for (const auto& in : inputs) {
-    std::error_code ec;
-    if (fs::exists(output, ec) && fs::equivalent(output, in, ec))
-      throw OptionError("output " + output + " is the input file " + in +
-                        ": refusing to overwrite an input");
+  if (options.json == "-") {
+    std::cout << report.dump(2) << '\n' << std::flush;
+    if (!std::cout) throw IoError("--json -: cannot write to standard output");
+    return;
   }
+  io::write_file_atomically(options.json, report.dump(2) + "\n");
 }
 
 }  // namespace hexadapt::cli

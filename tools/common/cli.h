@@ -14,6 +14,7 @@
 #include "hexadapt/core/timer.h"
 #include "hexadapt/io/mesh_file.h"
 #include "hexadapt/mesh/fractions.h"
+#include "file_checks.h"
 
 namespace hexadapt::cli {
 
@@ -51,7 +52,9 @@ struct InputOptions {
 void add_input_options(CLI::App& app, InputOptions& options);
 
 /// Parses the command line, applies -q/-v/--threads, runs `body` and maps exceptions to exit
-/// codes with a one-line message on stderr. `body` returns the exit code.
+/// codes with a one-line message on stderr. `body` returns the exit code. The files `body`
+/// writes form one io::OutputBatch: they appear when `body` returns, and none does when it
+/// throws or a signal (SIGTERM, SIGINT, SIGHUP) ends the run.
 int run(CLI::App& app, int argc, char** argv, CommonOptions& options,
         const std::function<int()>& body);
 
@@ -78,10 +81,10 @@ std::vector<std::pair<std::string, std::string>> provenance(const CLI::App& app)
 Json report_header(const CLI::App& app);
 Json phase_times_json(const PhaseTimes& times);
 
-/// Writes the report to --json (atomically) when it was given.
+/// Writes the report to --json (atomically; `-` is standard output) when it was given.
 void write_report(const CommonOptions& options, const Json& report);
 
-/// Throws hexadapt::OptionError when `output` names the same file as one of `inputs`.
-void refuse_overwrite(const std::string& output, const std::vector<std::string>& inputs);
+/// Largest --threads accepted; more is a usage error (the OpenMP runtime fails far above).
+constexpr int max_threads = 1024;
 
 }  // namespace hexadapt::cli

@@ -210,14 +210,16 @@ void print_size(const SizeReport& s) {
 }
 
 int measure(const CLI::App& app, const cli::CommonOptions& common, const Args& a) {
-  if (!a.quality_field.empty()) cli::refuse_overwrite(a.quality_field, {a.input, a.reference});
   if (app.count("--max-volume-error") > 0 && a.reference.empty())
     throw OptionError("--max-volume-error needs --reference (the input volumes)");
   if (!a.discrepancy_field.empty()) {
     if (a.reference.empty())
       throw OptionError("--discrepancy-field needs --reference (the grid the field lives on)");
-    cli::refuse_overwrite(a.discrepancy_field, {a.input, a.reference});
   }
+  cli::check_files({{"input", a.input}, {"--reference", a.reference}},
+                   {{"--quality-field", a.quality_field},
+                    {"--discrepancy-field", a.discrepancy_field},
+                    {"--json", common.json}});
   PhaseTimes times;
   const Progress bar = cli::terminal_progress(common);
   const io::MeshData data = cli::timed_phase(

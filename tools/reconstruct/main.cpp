@@ -225,8 +225,10 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   return cli::run(app, argc, argv, common, [&] {
     lib.mip.seed = lib.annealing.seed;
-    if (!o.model.empty()) cli::refuse_overwrite(model_stem(o.model) + ".vtk", {o.input});
-    cli::refuse_overwrite(common.output, {o.input});
+    cli::check_files({{"input", o.input}},
+                     {{"-o", common.output},
+                      {"--model", o.model.empty() ? "" : model_stem(o.model) + ".vtk"},
+                      {"--json", common.json}});
     const Timer read;
     io::MeshData data = io::read_mesh(o.input, o.in.read_options());
     const Fractions f = extract_fractions(data, o.in.fractions, nullptr, o.input);

@@ -102,7 +102,8 @@ std::string default_title(const Args& a, const io::MeshData& d, const std::strin
 
 int render_mesh(const CLI::App& app, const cli::CommonOptions& common, Args& a) {
   if (common.output.empty()) throw OptionError("-o OUT.png is required");
-  cli::refuse_overwrite(common.output, {a.input, a.overlay});
+  cli::check_files({{"input", a.input}, {"--overlay", a.overlay}},
+                   {{"-o", common.output}, {"--json", common.json}});
   render::PictureOptions options = picture_options(a);
   PhaseTimes times;
   const Progress bar = cli::terminal_progress(common);

@@ -1,0 +1,170 @@
+// What the tools do with hostile file arguments: outputs that name inputs or each other,
+// symlinks, `--json -`, outputs in missing directories, directories, FIFOs and devices as
+// inputs, and absurd thread counts. Nothing may be lost, and no answer is exit 4.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+namespace hexadapt {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string tools = HEXADAPT_TOOLS_DIR;
+
+struct ToolRun {
+  int code = -1;
+  std::string out, err;
+};
+
+std::string content(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+class OutputSafety : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("hexadapt_output_safety_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    ASSERT_EQ(run("generate", "disk --dims 8,8 -q -o " + path("in.vtu")).code, 0);
+    input_ = content(dir_ / "in.vtu");
+  }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  // Runs hexadapt-<tool> with a time limit (a FIFO input must not hang the test).
+  ToolRun run(const std::string& tool, const std::string& args) const {
+    const std::string cmd = "timeout 60 " + tools + "/hexadapt-" + tool + " " + args + " >" +
+                            path("stdout.txt") + " 2>" + path("stderr.txt");
+    const int status = std::system(cmd.c_str());
+    ToolRun r;
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = content(dir_ / "stdout.txt");
+    r.err = content(dir_ / "stderr.txt");
+    fs::remove(dir_ / "stdout.txt");
+    fs::remove(dir_ / "stderr.txt");
+    return r;
+  }
+  bool input_intact() const { return content(dir_ / "in.vtu") == input_; }
+
+  fs::path dir_;
+  std::string input_;
+};
+
+TEST_F(OutputSafety, JsonNamingTheInputIsAUsageErrorAndTheInputSurvives) {
+  for (const char* tool : {"assign", "measure"}) {
+    const std::string out = std::string(tool) == "assign" ? " -o " + path("o.vtu") : "";
+    const ToolRun r = run(tool, path("in.vtu") + out + " --json " + path("in.vtu"));
+    EXPECT_EQ(r.code, 1) << tool;
+    EXPECT_NE(r.err.find("--json"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("input"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(path("in.vtu")), std::string::npos) << r.err;
+    EXPECT_TRUE(input_intact()) << tool;
+    EXPECT_FALSE(fs::exists(dir_ / "o.vtu"));
+  }
+}
+
+TEST_F(OutputSafety, TwoOutputsNamingOneFileAreAUsageError) {
+  std::ofstream(dir_ / "o.vtu") << "keep";
+  const ToolRun r =
+      run("assign", path("in.vtu") + " -o " + path("o.vtu") + " --json " + path("./o.vtu"));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("-o"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--json"), std::string::npos) << r.err;
+  EXPECT_EQ(content(dir_ / "o.vtu"), "keep");
+  // Also when the file does not exist yet, and through a symlink to the input.
+  EXPECT_EQ(
+      run("assign", path("in.vtu") + " -o " + path("new.vtu") + " --partial " + path("new.vtu"))
+          .code,
+      1);
+  fs::create_symlink("in.vtu", dir_ / "alias.vtu");
+  EXPECT_EQ(run("assign", path("in.vtu") + " -o " + path("alias.vtu")).code, 1);
+  EXPECT_TRUE(input_intact());
+}
+
+TEST_F(OutputSafety, OutputsGoThroughSymlinksAndJsonDashIsStandardOutput) {
+  fs::create_directories(dir_ / "real");
+  std::ofstream(dir_ / "real" / "out.vtu") << "old";
+  fs::create_symlink("real/out.vtu", dir_ / "out.vtu");
+  const ToolRun r = run("assign", path("in.vtu") + " -q -o " + path("out.vtu") + " --json -");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(fs::is_symlink(dir_ / "out.vtu"));
+  EXPECT_NE(content(dir_ / "real" / "out.vtu"), "old");
+  EXPECT_FALSE(fs::exists(dir_ / "-"));
+  const auto report = nlohmann::json::parse(r.out);
+  EXPECT_EQ(report["tool"], "hexadapt-assign");
+  // /dev/stdout is written, not replaced, whatever standard output is (here a file).
+  const ToolRun s =
+      run("assign", path("in.vtu") + " -q -o " + path("out.vtu") + " --json /dev/stdout");
+  ASSERT_EQ(s.code, 0) << s.err;
+  EXPECT_EQ(nlohmann::json::parse(s.out)["tool"], "hexadapt-assign");
+}
+
+TEST_F(OutputSafety, AnOutputInAMissingDirectoryStopsTheRunBeforeAnyOutput) {
+  const ToolRun r =
+      run("assign", path("in.vtu") + " -o " + path("out.vtu") + " --json " + path("nodir/r.json"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("nodir"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out.vtu"));
+  EXPECT_EQ(
+      run("generate", "disk --dims 8,8 -o " + path("g.vtu") + " --json " + path("nodir/g.json"))
+          .code,
+      2);
+  EXPECT_FALSE(fs::exists(dir_ / "g.vtu"));
+  for (const auto& e : fs::directory_iterator(dir_))  // no temporary file left behind
+    EXPECT_NE(e.path().extension(), ".tmp") << e.path();
+}
+
+TEST_F(OutputSafety, DirectoriesFifosAndDevicesAsInputsAreBadInput) {
+  fs::create_directories(dir_ / "adir");
+  ASSERT_EQ(::mkfifo(path("fifo").c_str(), 0600), 0);
+  const std::pair<std::string, std::string> cases[] = {
+      {path("adir"), "directory"}, {path("fifo"), "FIFO"}, {"/dev/null", "character device"}};
+  for (const auto& [input, kind] : cases) {
+    const ToolRun r = run("measure", input);
+    EXPECT_EQ(r.code, 2) << input;
+    EXPECT_NE(r.err.find(input), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(kind), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(run("assign", path("adir") + " -o " + path("o.vtu")).code, 2);
+}
+
+// The mesh is written to its temporary file, then --json blocks on a FIFO nobody reads:
+// SIGTERM at that moment must remove the temporary file and end the tool by SIGTERM.
+TEST_F(OutputSafety, SigtermDuringTheWritesLeavesNoTemporaryFile) {
+  ASSERT_EQ(::mkfifo(path("fifo").c_str(), 0600), 0);
+  const std::string tool = tools + "/hexadapt-generate disk --dims 8,8 -q -o " + path("out.vtu") +
+                           " --json " + path("fifo");
+  const std::string script = tool + " & p=$!; for i in $(seq 300); do ls " + path(".out.vtu.") +
+                             "*.tmp >/dev/null 2>&1 && break; sleep 0.1; done; kill -TERM $p; "
+                             "wait $p; echo $? > " +
+                             path("status");
+  ASSERT_EQ(std::system(("bash -c '" + script + "'").c_str()), 0);
+  EXPECT_EQ(content(dir_ / "status"), "143\n");  // 128 + SIGTERM
+  EXPECT_FALSE(fs::exists(dir_ / "out.vtu"));
+  for (const auto& e : fs::directory_iterator(dir_))
+    EXPECT_NE(e.path().extension(), ".tmp") << e.path();
+}
+
+TEST_F(OutputSafety, ThreadsAboveTheLimitAreAUsageError) {
+  const ToolRun r = run("measure", path("in.vtu") + " --threads 70000");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("--threads"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("1024"), std::string::npos) << r.err;
+  EXPECT_EQ(run("measure", path("in.vtu") + " -q --threads 1024").code, 0);
+}
+
+}  // namespace
+}  // namespace hexadapt
