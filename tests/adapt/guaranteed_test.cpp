@@ -106,6 +106,28 @@ TEST(GuaranteedMethod, InterfacesPillowedFirstReachWhereCavitiesDoNot) {
   });
 }
 
+// --layers automatic in 3D: a first layer leaves many nodes of an extruded 2D case off their
+// interface, so cavities run too and, reaching more, are kept; with an enough_share of 0
+// the first layer is kept without trying them.
+TEST(GuaranteedMethod, AutomaticLayersFallBackToCavitiesWhereTheFirstLayerFallsShort) {
+  test::with_generated_case({"triple-point", {35, 15}, 2.0, 3}, [](const auto& grid,
+                                                                   const Fractions& f,
+                                                                   const IdVector<CellId, int>& m) {
+    AdaptOptions o = guaranteed_options();
+    const auto r = adapt(grid, f, m, o);
+    check_guaranteed(grid, r);
+    EXPECT_EQ(r.layers, LayerStrategy::cavities);
+    EXPECT_LT(r.other_near_interface, o.enough_share * r.n_interface_nodes);
+    EXPECT_GT(r.n_near_interface, r.other_near_interface);
+    o.enough_share = 0;
+    const auto first = adapt(grid, f, m, o);
+    check_guaranteed(grid, first);
+    EXPECT_EQ(first.layers, LayerStrategy::first);
+    EXPECT_EQ(first.other_near_interface, 0);
+    EXPECT_EQ(first.n_near_interface, r.other_near_interface);
+  });
+}
+
 // Where the base method of Fig. 10-a inverts cells (adapt_test.cpp: the extruded triple
 // point 35x15x3 at t = 2 ends at -0.004), the guaranteed one keeps the threshold.
 TEST(GuaranteedMethod, HoldsWhereTheBaseMethodInvertsCells) {

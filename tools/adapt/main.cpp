@@ -27,7 +27,7 @@ struct Args {
   int max_loops = 20;
   int cavity_range = 3;
   std::string layers = "automatic";
-  double enough_share = 0.98;
+  double enough_share = AdaptOptions{}.enough_share;
   int interface_pillow_rounds = 4;
   int interface_pillow_carve = 1;
   double near_interface = 0.05;

@@ -75,8 +75,10 @@ struct AdaptOptions {
   int max_loops = 20;    ///< guaranteed: move-smooth rounds at most
   LayerStrategy layers = LayerStrategy::automatic;  ///< guaranteed: cavities, first or both
   /// guaranteed, automatic, 3D: the share of interface nodes near their interface with a
-  /// first layer beyond which cavities are not tried.
-  double enough_share = 0.98;
+  /// first layer beyond which cavities are not tried. Measured: a first layer brings 94-100 %
+  /// of them near on the curved 3D cases, where cavities then never did better, and 51-72 %
+  /// on the extruded ones, where cavities bring 99-100 %.
+  double enough_share = 0.9;
   int cavity_range = 3;  ///< guaranteed: starting vertex distance of a cavity; 0 = no cavities
   /// guaranteed: attempts at pillowing each material's interfaces before the first move
   /// (interface_pillow.h); 0 = none.
