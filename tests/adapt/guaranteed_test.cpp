@@ -128,6 +128,33 @@ TEST(GuaranteedMethod, AutomaticLayersFallBackToCavitiesWhereTheFirstLayerFallsS
   });
 }
 
+// The same grid in another unit: every coordinate times `scale`.
+template <class M>
+M scaled(const M& mesh, double scale) {
+  std::vector<Vec3> points;
+  std::vector<typename M::CellNodes> cells;
+  for (NodeId v : id_range<NodeId>(mesh.n_nodes())) points.push_back(scale * mesh.point(v));
+  for (CellId c : id_range<CellId>(mesh.n_cells())) cells.push_back(mesh.cell_nodes(c));
+  return M(std::move(points), std::move(cells));
+}
+
+// The guarantee and the mesh do not depend on the unit: the triple point in units from
+// 1e-20 to 1e20 gives the same cells, materials and smallest scaled Jacobian.
+TEST(GuaranteedMethod, TheSameMeshInAnyUnit) {
+  test::with_generated_case({"triple-point", {35, 15}, 2.0}, [](const auto& grid,
+                                                              const Fractions& f,
+                                                              const IdVector<CellId, int>& m) {
+    const auto r = adapt(grid, f, m, guaranteed_options());
+    for (double scale : {1e-20, 1e-6, 1e6, 1e20}) {
+      const auto s = adapt(scaled(grid, scale), f, m, guaranteed_options());
+      EXPECT_EQ(s.mesh.n_cells(), r.mesh.n_cells()) << scale;
+      EXPECT_EQ(s.material.raw(), r.material.raw()) << scale;
+      EXPECT_NEAR(s.min_quality, r.min_quality, 1e-9) << scale;
+      EXPECT_EQ(s.n_near_interface, r.n_near_interface) << scale;
+    }
+  });
+}
+
 // Where the base method of Fig. 10-a inverts cells (adapt_test.cpp: the extruded triple
 // point 35x15x3 at t = 2 ends at -0.004), the guaranteed one keeps the threshold.
 TEST(GuaranteedMethod, HoldsWhereTheBaseMethodInvertsCells) {

@@ -92,6 +92,26 @@ TEST(Targets, DiskTargetsLieCloseToTheCircle) {
   EXPECT_LT(worst, 0.06);  // measured 0.038
 }
 
+// The targets follow the grid's unit: the same disk on a grid in units 1e20 times larger or
+// smaller gets the same targets, scaled (the fraction gradients are per unit length, and a
+// flat gradient is judged by the fraction change across a cell, not by its size).
+TEST(Targets, TheSameInAnyUnit) {
+  const Vec3 centre(6.1, 5.9, 0);
+  const QuadMesh unit = make_quad_grid(12, 12);
+  const auto f = sample_fractions(
+      unit, [&](const Vec3& p) { return (p - centre).norm() < 3.7; }, 2);
+  const Targets t = targets_of(unit, f);
+  for (double scale : {1e-6, 1e6, 1e20}) {
+    const QuadMesh scaled = make_quad_grid(12, 12, Vec3::Zero(), Vec3(scale, scale, 1));
+    const Targets s = targets_of(scaled, f);
+    ASSERT_EQ(s.faces.size(), t.faces.size());
+    for (std::size_t i = 0; i < t.faces.size(); ++i)
+      EXPECT_NEAR((t.faces[i].normal - s.faces[i].normal).norm(), 0, 1e-12) << scale;
+    for (NodeId n : id_range<NodeId>(unit.n_nodes()))
+      EXPECT_NEAR((s.position[n] / scale - t.position[n]).norm(), 0, 1e-12) << scale;
+  }
+}
+
 TEST(Targets, SphereTargetsLieCloseToTheSphere) {
   const Vec3 centre(4.1, 3.9, 4.05);
   const double r = 2.6;

@@ -217,8 +217,10 @@ Targets compute_targets(const M& mesh, const Fractions& fractions,
     const auto u0 = static_cast<std::size_t>(m0), u1 = static_cast<std::size_t>(m1);
     const Vec3 n = (1 - t) * (g0[u0] - g0[u1]) + t * (g1[u0] - g1[u1]);
     // Flat fractions give no gradient: fall back on the direction across the face (towards
-    // m0, as the gradient of f_m0 - f_m1 points).
-    f.normal = n.norm() > 1e-12 ? Vec3(n.normalized()) : Vec3((p0 - p1).normalized());
+    // m0, as the gradient of f_m0 - f_m1 points). The gradient is per unit length: the test
+    // takes the change in fraction across the face, so that it holds in any unit.
+    f.normal = n.norm() * (p1 - p0).norm() > 1e-12 ? Vec3(n.normalized())
+                                                   : Vec3((p0 - p1).normalized());
     if (!is_mixed(f.c0, m0) && !is_mixed(f.c1, m0)) {
       // Both cells pure: the interface is the face itself.
       std::tie(f.point, f.normal) = face_plane(mesh, f.c0, f.lf);

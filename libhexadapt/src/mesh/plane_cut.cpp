@@ -101,8 +101,11 @@ std::optional<double> plane_offset_for_share(const M& mesh, CellId c, const Vec3
   const double whole = volume_above_plane(mesh, c, n, lo);
   if (!(whole > 0) || !(hi > lo)) return std::nullopt;
   const double goal = share * whole;
-  // volume_above_plane decreases from `whole` at lo to 0 at hi.
-  for (int it = 0; it < 200 && hi - lo > 1e-15 * (1 + std::abs(lo) + std::abs(hi)); ++it) {
+  // volume_above_plane decreases from `whole` at lo to 0 at hi. Down to the rounding of the
+  // offsets, relative to the cell's extent and its distance from the origin: the same in
+  // any unit.
+  const double span = hi - lo;
+  for (int it = 0; it < 200 && hi - lo > 1e-15 * (span + std::abs(lo) + std::abs(hi)); ++it) {
     const double mid = 0.5 * (lo + hi);
     if (volume_above_plane(mesh, c, n, mid) > goal)
       lo = mid;
