@@ -128,29 +128,34 @@ TEST(GuaranteedMethod, AutomaticLayersFallBackToCavitiesWhereTheFirstLayerFallsS
   });
 }
 
-// The same grid in another unit: every coordinate times `scale`.
+// The same grid in another unit and place: every coordinate times `scale`, plus `offset`.
 template <class M>
-M scaled(const M& mesh, double scale) {
+M scaled(const M& mesh, double scale, double offset = 0) {
   std::vector<Vec3> points;
   std::vector<typename M::CellNodes> cells;
-  for (NodeId v : id_range<NodeId>(mesh.n_nodes())) points.push_back(scale * mesh.point(v));
+  for (NodeId v : id_range<NodeId>(mesh.n_nodes()))
+    points.push_back(scale * mesh.point(v) + Vec3(offset, offset, M::dim == 3 ? offset : 0));
   for (CellId c : id_range<CellId>(mesh.n_cells())) cells.push_back(mesh.cell_nodes(c));
   return M(std::move(points), std::move(cells));
 }
 
-// The guarantee and the mesh do not depend on the unit: the triple point in units from
-// 1e-20 to 1e20 gives the same cells, materials and smallest scaled Jacobian.
-TEST(GuaranteedMethod, TheSameMeshInAnyUnit) {
+// The guarantee and the mesh do not depend on the unit or the place: the triple point in
+// units from 1e-20 to 1e20, or moved 1e6 away, gives the same cells, materials and smallest
+// scaled Jacobian.
+TEST(GuaranteedMethod, TheSameMeshInAnyUnitAndPlace) {
   test::with_generated_case({"triple-point", {35, 15}, 2.0}, [](const auto& grid,
                                                               const Fractions& f,
                                                               const IdVector<CellId, int>& m) {
     const auto r = adapt(grid, f, m, guaranteed_options());
-    for (double scale : {1e-20, 1e-6, 1e6, 1e20}) {
-      const auto s = adapt(scaled(grid, scale), f, m, guaranteed_options());
-      EXPECT_EQ(s.mesh.n_cells(), r.mesh.n_cells()) << scale;
-      EXPECT_EQ(s.material.raw(), r.material.raw()) << scale;
-      EXPECT_NEAR(s.min_quality, r.min_quality, 1e-9) << scale;
-      EXPECT_EQ(s.n_near_interface, r.n_near_interface) << scale;
+    for (auto [scale, offset] : {std::pair{1e-20, 0.0}, {1e-6, 0.0}, {1e6, 0.0}, {1e20, 0.0},
+                                 {1.0, 1e6}}) {
+      const auto s = adapt(scaled(grid, scale, offset), f, m, guaranteed_options());
+      EXPECT_EQ(s.mesh.n_cells(), r.mesh.n_cells()) << scale << " " << offset;
+      EXPECT_EQ(s.material.raw(), r.material.raw()) << scale << " " << offset;
+      EXPECT_NEAR(s.min_quality, r.min_quality, 1e-9) << scale << " " << offset;
+      EXPECT_EQ(s.n_near_interface, r.n_near_interface) << scale << " " << offset;
+      EXPECT_NEAR(s.mesh.point(NodeId(0)).x(), scale * r.mesh.point(NodeId(0)).x() + offset,
+                  1e-9 * scale + 1e-6 * offset);
     }
   });
 }

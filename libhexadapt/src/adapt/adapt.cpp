@@ -1,6 +1,9 @@
 #include "hexadapt/adapt/adapt.h"
 
+#include <limits>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "base_pipeline.h"
 #include "guaranteed_pipeline.h"
@@ -73,6 +76,52 @@ void check_model(const reconstruct::InterfaceModel* model, int dim, int n_materi
                              std::to_string(n_materials) + ")");
 }
 
+// A grid farther from the origin than its own size is meshed with its lowest corner moved to
+// the origin: there (cells of 0.1 at 1e6) every difference of coordinates would lose digits,
+// and the grid would not mesh as the same grid at the origin does. The result is moved back.
+template <class M>
+M translated(const M& mesh, const Vec3& by) {
+  std::vector<Vec3> points;
+  std::vector<typename M::CellNodes> cells;
+  points.reserve(static_cast<std::size_t>(mesh.n_nodes()));
+  cells.reserve(static_cast<std::size_t>(mesh.n_cells()));
+  for (NodeId v : id_range<NodeId>(mesh.n_nodes())) points.push_back(mesh.point(v) + by);
+  for (CellId c : id_range<CellId>(mesh.n_cells())) cells.push_back(mesh.cell_nodes(c));
+  return M(std::move(points), std::move(cells));
+}
+
+template <class M>
+Vec3 local_origin(const M& mesh) {
+  Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
+  for (NodeId v : id_range<NodeId>(mesh.n_nodes())) {
+    low = low.cwiseMin(mesh.point(v));
+    high = high.cwiseMax(mesh.point(v));
+  }
+  const bool far = mesh.n_nodes() > 0 && low.allFinite() && high.allFinite() &&
+                   low.norm() > (high - low).norm();
+  return far ? low : Vec3(Vec3::Zero());
+}
+
+template <class M>
+void translate_result(AdaptResult<M>& r, const Vec3& by) {
+  r.mesh = translated(r.mesh, by);
+  for (Vec3& t : r.target.raw()) t += by;
+  for (CellFailure& f : r.failures) f.centroid += by;
+}
+
+template <class M>
+AdaptResult<M> run_pipeline(const M& grid, const Fractions& fractions,
+                            const IdVector<CellId, int>& material, const AdaptOptions& options,
+                            const reconstruct::InterfaceModel* model) {
+  switch (options.method) {
+    case AdaptMethod::base:
+      return detail::run_base_pipeline(grid, fractions, material, options);
+    case AdaptMethod::guaranteed:
+      return detail::run_guaranteed_pipeline(grid, fractions, material, options, model);
+  }
+  throw InternalError("unhandled adaptation method");
+}
+
 }  // namespace
 
 template <class M>
@@ -81,13 +130,17 @@ AdaptResult<M> adapt(const M& grid, const Fractions& fractions,
                      const reconstruct::InterfaceModel* model) {
   check_options(options);
   check_model(model, M::dim, fractions.n_materials());
-  switch (options.method) {
-    case AdaptMethod::base:
-      return detail::run_base_pipeline(grid, fractions, material, options);
-    case AdaptMethod::guaranteed:
-      return detail::run_guaranteed_pipeline(grid, fractions, material, options, model);
+  const Vec3 origin = local_origin(grid);
+  if (origin == Vec3::Zero()) return run_pipeline(grid, fractions, material, options, model);
+  std::optional<reconstruct::InterfaceModel> local_model;
+  if (model) {
+    local_model = *model;
+    for (Vec3& p : local_model->points) p -= origin;
   }
-  throw InternalError("unhandled adaptation method");
+  AdaptResult<M> r = run_pipeline(translated(grid, Vec3(-origin)), fractions, material, options,
+                                  local_model ? &*local_model : nullptr);
+  translate_result(r, origin);
+  return r;
 }
 
 template AdaptResult<QuadMesh> adapt<QuadMesh>(const QuadMesh&, const Fractions&,
