@@ -101,7 +101,7 @@ TEST(PixelMesh, RefusesBeyondTheMemoryLimitBeforeAllocating) {
   const auto c = testcase::sphere(6, 2.2);
   PixelOptions o;
   o.max_memory = 1e4;
-  EXPECT_THROW(build_pixel_mesh(c.mesh, c.fractions, c.majority, o), OptionError);
+  EXPECT_THROW(build_pixel_mesh(c.mesh, c.fractions, c.majority, o), ResourceError);
   const PixelPlan plan = plan_pixels(c.mesh, c.fractions, c.majority, {});
   EXPECT_EQ(plan.nsub, 4);
   EXPECT_EQ(plan.n_pixels, 64 * plan.n_blocks);

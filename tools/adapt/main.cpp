@@ -245,6 +245,9 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   Timer clock;
   PhaseTimes times;
   io::MeshData in = io::read_mesh(args.input, args.in.read_options());
+  cli::check_memory("adapting " + std::to_string(in.n_cells()) + " cells",
+                    static_cast<double>(in.n_cells()) * cli::adapt_bytes_per_cell,
+                    common.memory_limit());
   const Fractions fractions = extract_fractions(in, args.in.fractions, nullptr, args.input);
   const IdVector<CellId, int> material =
       read_material_array(in, fractions.n_materials(), args.input);

@@ -123,6 +123,9 @@ int run_assign(const CLI::App& app, Options& o) {
   PhaseTimes times;
   Timer t;
   io::MeshData data = io::read_mesh(o.input, o.in.read_options());
+  cli::check_memory("assigning " + std::to_string(data.n_cells()) + " cells",
+                    static_cast<double>(data.n_cells()) * cli::assign_bytes_per_cell,
+                    o.common.memory_limit());
   times.emplace_back("read", t.seconds());
   t.restart();
   FractionReport fr;

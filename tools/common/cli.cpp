@@ -1,5 +1,6 @@
 #include "cli.h"
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -23,6 +24,9 @@ void add_common_options(CLI::App& app, CommonOptions& options, bool with_output)
   app.add_flag("-v,--verbose", options.verbose, "More messages on stderr (repeat for debug)");
   app.add_option("--threads", options.threads, "Number of threads (0: all cores; at most 1024)")
       ->check(CLI::Range(0, max_threads));
+  app.add_option("--max-memory", options.max_memory,
+                 "Stop before the work when its memory estimate exceeds this (e.g. 8G, 500M; "
+                 "default: the machine's memory); exit 5");
 }
 
 void add_input_options(CLI::App& app, InputOptions& options) {
@@ -77,6 +81,7 @@ int run(CLI::App& app, int argc, char** argv, CommonOptions& options,
   io::remove_temp_files_on_signals();
   try {
     set_threads(options.threads);
+    (void)options.memory_limit();  // a bad --max-memory is a usage error before any work
     io::OutputBatch outputs;
     const int code = body();
     outputs.commit();
@@ -93,9 +98,18 @@ int run(CLI::App& app, int argc, char** argv, CommonOptions& options,
   } catch (const IoError& e) {
     std::cerr << tool << ": error: " << e.what() << '\n';
     return bad_input;
+  } catch (const ResourceError& e) {
+    std::cerr << tool << ": error: " << e.what() << '\n';
+    return out_of_memory;
   } catch (const std::bad_alloc&) {
-    std::cerr << tool << ": error: out of memory\n";
-    return internal;
+    const double estimate = last_memory_estimate();
+    std::cerr << tool << ": error: out of memory"
+              << (estimate > 0 ? " (the estimate for this run was about " +
+                                     size_text(estimate) + ")"
+                               : std::string())
+              << ": give the tool more memory (ulimit -v, a larger machine) or a smaller "
+                 "input; --max-memory stops a run whose estimate is too large before it starts\n";
+    return out_of_memory;
   } catch (const std::exception& e) {
     std::cerr << tool << ": internal error: " << e.what() << '\n';
     return internal;

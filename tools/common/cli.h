@@ -15,6 +15,7 @@
 #include "hexadapt/io/mesh_file.h"
 #include "hexadapt/mesh/fractions.h"
 #include "file_checks.h"
+#include "memory.h"
 
 namespace hexadapt::cli {
 
@@ -28,6 +29,7 @@ enum Exit : int {
   bad_input = 2,     ///< unreadable or invalid input, or an output that cannot be written
   target_missed = 3, ///< ran, but the requested target (e.g. quality) was not met
   internal = 4,      ///< a bug
+  out_of_memory = 5, ///< the estimate exceeds --max-memory, or an allocation failed
 };
 
 struct CommonOptions {
@@ -36,9 +38,12 @@ struct CommonOptions {
   bool quiet = false;       ///< -q
   int verbose = 0;          ///< -v (repeatable)
   int threads = 0;          ///< --threads, 0 = all cores
+  std::string max_memory;   ///< --max-memory, empty = the machine's memory
+  /// --max-memory in bytes.
+  double memory_limit() const { return parse_memory_size(max_memory); }
 };
 
-/// Adds -o (when `with_output`), --json, -q, -v and --threads to `app`.
+/// Adds -o (when `with_output`), --json, -q, -v, --threads and --max-memory to `app`.
 void add_common_options(CLI::App& app, CommonOptions& options, bool with_output = true);
 
 /// How a stage reads its input grid and fractions, with the same flags and meaning in every

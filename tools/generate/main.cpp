@@ -106,6 +106,12 @@ int main(int argc, char** argv) {
     if (!bounds.empty()) o.bounds = parse_bounds(bounds);
     if (time_opt->count() > 0) o.time = time;
     o.progress = hx::cli::terminal_progress(common);
+    if (!o.dims.empty()) {
+      double cells = std::max(o.extrude, 1);
+      for (int n : o.dims) cells *= std::max(n, 0);
+      hx::cli::check_memory("generating " + std::to_string(std::llround(cells)) + " cells",
+                            cells * hx::cli::generate_bytes_per_cell, common.memory_limit());
+    }
     gen::GenerateResult r = gen::generate(o);
     // after the case keys: a legacy .vtk title line keeps only the first 256 characters
     for (auto& kv : hx::cli::provenance(app)) r.data.metadata.push_back(std::move(kv));

@@ -140,11 +140,14 @@ struct DiscrepancyRun {
 // Imprints the mesh's materials onto the reference grid; material m of the mesh is the
 // reference's m-th fraction array.
 DiscrepancyRun measure_discrepancy(const Args& a, const io::MeshData& mesh, const Progress& bar,
-                                   PhaseTimes& times) {
+                                   PhaseTimes& times, double memory_limit) {
   DiscrepancyRun run;
   run.reference = cli::timed_phase(times, bar, "read_reference", [&] {
     return io::read_mesh(a.reference, a.in.read_options());
   });
+  const index_t cells = mesh.n_cells() + run.reference.n_cells();
+  cli::check_memory("measuring " + std::to_string(cells) + " cells of mesh and reference",
+                    static_cast<double>(cells) * cli::measure_bytes_per_cell, memory_limit);
   Fractions fractions;
   try {
     fractions = extract_fractions(run.reference, a.in.fractions, nullptr, a.reference);
@@ -224,6 +227,9 @@ int measure(const CLI::App& app, const cli::CommonOptions& common, const Args& a
   const Progress bar = cli::terminal_progress(common);
   const io::MeshData data = cli::timed_phase(
       times, bar, "read", [&] { return io::read_mesh(a.input, a.in.read_options()); });
+  cli::check_memory("measuring " + std::to_string(data.n_cells()) + " cells",
+                    static_cast<double>(data.n_cells()) * cli::measure_bytes_per_cell,
+                    common.memory_limit());
   Timer timer;
   QualityReport report;
   try {
@@ -241,7 +247,7 @@ int measure(const CLI::App& app, const cli::CommonOptions& common, const Args& a
   }
   times.emplace_back("quality", timer.seconds());
   DiscrepancyRun disc;
-  if (!a.reference.empty()) disc = measure_discrepancy(a, data, bar, times);
+  if (!a.reference.empty()) disc = measure_discrepancy(a, data, bar, times, common.memory_limit());
   timer.restart();
   SizeReport size;
   try {

@@ -19,32 +19,12 @@ using namespace hexadapt;
 using reconstruct::Method;
 
 struct Options {
-  std::string input, model, method = "greedy", max_memory = "8G", model_format = "om";
+  std::string input, model, method = "greedy", model_format = "om";
   cli::InputOptions in;
   bool majority = false;
   reconstruct::ReconstructOptions lib;
   double read_seconds = 0;  ///< reading the input, for the report
 };
-
-/// "123", "500M", "8G", "1.5T" (powers of 1000) -> bytes.
-double parse_bytes(const std::string& s) {
-  std::size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(s, &used);
-  } catch (const std::exception&) {
-    throw OptionError("--max-memory: '" + s + "' is not a size (e.g. 8G, 500M)");
-  }
-  const std::string unit = s.substr(used);
-  const double scale = unit.empty() || unit == "B" ? 1
-                       : unit == "K"              ? 1e3
-                       : unit == "M"              ? 1e6
-                       : unit == "G"              ? 1e9
-                       : unit == "T"              ? 1e12
-                                                  : -1;
-  if (scale < 0 || !(v > 0)) throw OptionError("--max-memory: '" + s + "' is not a size (e.g. 8G, 500M)");
-  return v * scale;
-}
 
 std::vector<int> read_assignment(const io::MeshData& data, const Fractions& f,
                                  const Options& o) {
@@ -113,7 +93,7 @@ int run(const M& mesh, const Fractions& f, const std::vector<int>& assignment,
         Options& o, const cli::CommonOptions& common, const CLI::App& app) {
   auto& lib = o.lib;
   lib.method = reconstruct::parse_method(o.method);
-  lib.pixels.max_memory = parse_bytes(o.max_memory);
+  lib.pixels.max_memory = common.memory_limit();
   lib.pixels.output_bytes_per_pixel = reconstruct::pixel_output_bytes_per_pixel(M::dim);
   lib.extract_model = !o.model.empty();
   lib.progress = cli::terminal_progress(common);
@@ -204,8 +184,6 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"greedy", "annealing", "graphcut", "mip"}))
       ->capture_default_str();
   app.add_option("--nsub", lib.pixels.nsub, "Pixels per axis and cell (0: 10 in 2D, 4 in 3D)")
-      ->capture_default_str();
-  app.add_option("--max-memory", o.max_memory, "Refuse to build pixels beyond this (e.g. 8G)")
       ->capture_default_str();
   cli::add_input_options(app, o.in);
   app.add_flag("--majority", o.majority, "Use the majority material instead of a `material` array");

@@ -245,7 +245,7 @@ PixelMesh build_pixel_mesh(const M& mesh, const Fractions& fractions,
            " cells (" + std::to_string(plan.n_free_pixels) + " free), nsub " +
            std::to_string(plan.nsub) + ", estimated memory " + megabytes(plan.bytes));
   if (plan.bytes > options.max_memory)
-    throw OptionError("the sub-pixel mesh needs about " + megabytes(plan.bytes) + " (" +
+    throw ResourceError("the sub-pixel mesh needs about " + megabytes(plan.bytes) + " (" +
                       std::to_string(plan.n_pixels) + " pixels, nsub " +
                       std::to_string(plan.nsub) + "), more than the allowed " +
                       megabytes(options.max_memory) + ": lower --nsub or raise --max-memory");

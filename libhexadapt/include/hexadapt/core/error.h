@@ -51,6 +51,12 @@ class OptionError : public Error {
   explicit OptionError(const std::string& what) : Error(what) {}
 };
 
+/// The work would need more memory than allowed (an estimate above the given limit).
+class ResourceError : public Error {
+ public:
+  explicit ResourceError(const std::string& what) : Error(what) {}
+};
+
 /// A broken invariant inside the library: a bug, never the user's fault.
 class InternalError : public Error {
  public:

@@ -12,7 +12,7 @@
 // take their assigned material; they have no pixels.
 //
 // The memory the pixels need is estimated before anything is allocated and the build is
-// refused (OptionError) beyond PixelOptions::max_memory: memory is the known limit of
+// refused (ResourceError) beyond PixelOptions::max_memory: memory is the known limit of
 // these methods (paper sec. 4.2).
 #pragma once
 
@@ -132,7 +132,7 @@ PixelPlan plan_pixels(const M& mesh, const Fractions& fractions,
                       const std::vector<int>& assignment, const PixelOptions& options);
 
 /// Builds the pixel mesh; fixed pixels get their cell's assigned material, free ones
-/// PixelMesh::unassigned. Throws OptionError when the plan exceeds options.max_memory.
+/// PixelMesh::unassigned. Throws ResourceError when the plan exceeds options.max_memory.
 template <class M>
 PixelMesh build_pixel_mesh(const M& mesh, const Fractions& fractions,
                            const std::vector<int>& assignment, const PixelOptions& options,

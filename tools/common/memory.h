@@ -1,0 +1,37 @@
+// Memory: the limit every tool checks its estimate against before the big allocations
+// (--max-memory), and the estimates.
+//
+// A stage's peak memory grows with its input cells; the bytes per cell below are the peaks
+// measured on the 3D cases of docs/benchmarks.md (the real3d series: sphere 128^3, 2.1 M
+// cells), rounded up. Beyond the limit the tool stops before the work with exit 5, naming
+// the estimate; an allocation that fails anyway is exit 5 too, never exit 4.
+#pragma once
+
+#include <string>
+
+namespace hexadapt::cli {
+
+/// Peak bytes per input cell of each stage, measured.
+inline constexpr double generate_bytes_per_cell = 200;
+inline constexpr double assign_bytes_per_cell = 400;
+inline constexpr double adapt_bytes_per_cell = 1500;
+inline constexpr double measure_bytes_per_cell = 500;  ///< per cell of mesh and reference
+
+/// "123", "500M", "8G", "1.5T" (powers of 1000) -> bytes; "" -> the machine's memory.
+/// Throws OptionError naming --max-memory.
+double parse_memory_size(const std::string& text);
+
+/// The machine's physical memory in bytes (0 when unknown).
+double physical_memory();
+
+/// Throws ResourceError when `bytes` exceed `limit`, naming `what`, the estimate and the
+/// limit; records the estimate for the out-of-memory message.
+void check_memory(const std::string& what, double bytes, double limit);
+
+/// The last estimate checked (0 when none): what an out-of-memory message can name.
+double last_memory_estimate();
+
+/// A size for people: "512 kB", "43 MB", "25.3 GB".
+std::string size_text(double bytes);
+
+}  // namespace hexadapt::cli
