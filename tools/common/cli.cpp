@@ -26,7 +26,7 @@ void add_common_options(CLI::App& app, CommonOptions& options, bool with_output)
       ->check(CLI::Range(0, max_threads));
   app.add_option("--max-memory", options.max_memory,
                  "Stop before the work when its memory estimate exceeds this (e.g. 8G, 500M; "
-                 "default: the machine's memory); exit 5");
+                 "default: the machine's memory, or ulimit -v when lower); exit 5");
 }
 
 void add_input_options(CLI::App& app, InputOptions& options) {

@@ -1,7 +1,9 @@
 #include "memory.h"
 
+#include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 
@@ -38,7 +40,13 @@ double parse_memory_size(const std::string& text) {
 
 double physical_memory() {
   const long pages = ::sysconf(_SC_PHYS_PAGES), size = ::sysconf(_SC_PAGESIZE);
-  return pages > 0 && size > 0 ? static_cast<double>(pages) * static_cast<double>(size) : 0.0;
+  double bytes = pages > 0 && size > 0 ? static_cast<double>(pages) * static_cast<double>(size) : 0.0;
+  rlimit limit{};
+  if (::getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
+    const auto as = static_cast<double>(limit.rlim_cur);
+    bytes = bytes > 0 ? std::min(bytes, as) : as;
+  }
+  return bytes;
 }
 
 void check_memory(const std::string& what, double bytes, double limit) {

@@ -17,11 +17,12 @@ inline constexpr double assign_bytes_per_cell = 400;
 inline constexpr double adapt_bytes_per_cell = 1500;
 inline constexpr double measure_bytes_per_cell = 500;  ///< per cell of mesh and reference
 
-/// "123", "500M", "8G", "1.5T" (powers of 1000) -> bytes; "" -> the machine's memory.
+/// "123", "500M", "8G", "1.5T" (powers of 1000) -> bytes; "" -> physical_memory().
 /// Throws OptionError naming --max-memory.
 double parse_memory_size(const std::string& text);
 
-/// The machine's physical memory in bytes (0 when unknown).
+/// The machine's physical memory in bytes, or the process's address-space limit (ulimit -v)
+/// when lower (0 when neither is known).
 double physical_memory();
 
 /// Throws ResourceError when `bytes` exceed `limit`, naming `what`, the estimate and the
