@@ -10,7 +10,7 @@ std::string join(const std::string& file, const std::string& where, const std::s
 }
 }  // namespace
 
-std::string quoted(std::string_view token, std::size_t max_chars) {
+std::string quote_token(std::string_view token, std::size_t max_chars) {
   static const char* const hex = "0123456789abcdef";
   std::string out = "'";
   for (const char c : token.substr(0, max_chars)) {

@@ -18,7 +18,7 @@ struct Section {
 void add_array(LegacyScanner& s, MeshData& data, const Section& sec, DataArray a) {
   if ((sec.cells ? data.find_cell_array(a.name) : data.find_point_array(a.name)) != nullptr)
     s.fail(std::string("two ") + (sec.cells ? "CELL_DATA" : "POINT_DATA") + " arrays named " +
-           quoted(a.name));
+           quote_token(a.name));
   if (sec.cells)
     data.set_cell_array(std::move(a));
   else
@@ -118,7 +118,7 @@ void read_field(LegacyScanner& s, MeshData& data, const Section& sec) {
     if (read_field_array(s, a, nullptr)) {
       if (a.n_tuples() != sec.n_tuples ||
           a.values.size() != sec.n_tuples * static_cast<std::size_t>(a.n_components))
-        s.fail_at(at, "field array " + quoted(a.name) + " has " + std::to_string(a.n_tuples()) +
+        s.fail_at(at, "field array " + quote_token(a.name) + " has " + std::to_string(a.n_tuples()) +
                           " tuples, expected " + std::to_string(sec.n_tuples));
       add_array(s, data, sec, std::move(a));
     }
@@ -153,7 +153,7 @@ void read_attributes(LegacyScanner& s, MeshData& data) {
       continue;
     }
     if (!started)
-      s.fail_at(at, "expected CELL_DATA or POINT_DATA, found " + quoted(key));
+      s.fail_at(at, "expected CELL_DATA or POINT_DATA, found " + quote_token(key));
     if (keyword_is(key, "SCALARS")) {
       read_scalars(s, data, sec);
     } else if (keyword_is(key, "VECTORS") || keyword_is(key, "NORMALS")) {
@@ -179,7 +179,7 @@ void read_attributes(LegacyScanner& s, MeshData& data) {
     } else if (keyword_is(key, "METADATA")) {
       s.skip_block();
     } else {
-      s.fail_at(at, "unknown keyword " + quoted(key) +
+      s.fail_at(at, "unknown keyword " + quote_token(key) +
                         " in a data section (expected SCALARS, VECTORS, NORMALS, TENSORS, "
                         "FIELD, CELL_DATA or POINT_DATA)");
     }

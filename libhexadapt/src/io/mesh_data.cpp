@@ -17,7 +17,7 @@ const DataArray* find(const Array& arrays, const std::string& name) {
 
 void set(std::vector<DataArray>& arrays, DataArray a, std::size_t n_tuples, const char* kind) {
   if (a.n_components < 1 || a.values.size() != n_tuples * static_cast<std::size_t>(a.n_components))
-    throw Error(std::string(kind) + " array " + quoted(a.name) + " has " +
+    throw Error(std::string(kind) + " array " + quote_token(a.name) + " has " +
                 std::to_string(a.values.size()) + " values, expected " +
                 std::to_string(n_tuples) + " x " + std::to_string(a.n_components));
   for (auto& old : arrays)

@@ -27,7 +27,7 @@ ScalarType type_of(const VtkXmlDocument& doc, const pugi::xml_node& e) {
   const auto t = scalar_type_of(name);
   if (!t)
     throw InputError(doc.file, place(e),
-                     "unknown or unsupported data type " + quoted(name) +
+                     "unknown or unsupported data type " + quote_token(name) +
                          " (expected Int8..UInt64, Float32 or Float64)");
   return *t;
 }
@@ -57,7 +57,7 @@ std::string format_of(const VtkXmlDocument& doc, const pugi::xml_node& e) {
   const std::string f = e.attribute("format").as_string("ascii");
   if (f != "ascii" && f != "binary" && f != "appended")
     throw InputError(doc.file, place(e),
-                     "format " + quoted(f) + ": expected ascii, binary or appended");
+                     "format " + quote_token(f) + ": expected ascii, binary or appended");
   return f;
 }
 
