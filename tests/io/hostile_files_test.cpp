@@ -90,8 +90,9 @@ TEST(HostileFiles, StructuredGridWithAHugeExtentAndShortPointsIsRefused) {
 }
 
 TEST(HostileFiles, NanAndInfiniteCoordinatesAreRefusedWithThePointNumber) {
-  const std::string quad = "DATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n0 0 0 1 0 0 1 X 0 0 1 0\n"
-                           "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n9\n";
+  const std::string quad =
+      "DATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n0 0 0 1 0 0 1 X 0 0 1 0\n"
+      "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n9\n";
   for (const char* bad : {"nan", "inf", "-inf"}) {
     std::string file = kHead + quad;
     file.replace(file.find('X'), 1, bad);
@@ -100,8 +101,9 @@ TEST(HostileFiles, NanAndInfiniteCoordinatesAreRefusedWithThePointNumber) {
     EXPECT_NE(m.find("point 2"), std::string::npos) << bad << ": " << m;
     EXPECT_NE(m.find("finite"), std::string::npos) << bad << ": " << m;
   }
-  const std::string sp = kHead + "DATASET STRUCTURED_POINTS\nDIMENSIONS 3 2 1\nSPACING 1 1 1\n"
-                                 "ORIGIN 0 nan 0\n";
+  const std::string sp = kHead +
+                         "DATASET STRUCTURED_POINTS\nDIMENSIONS 3 2 1\nSPACING 1 1 1\n"
+                         "ORIGIN 0 nan 0\n";
   const std::string m = legacy_error(sp, "sp.vtk");
   EXPECT_NE(m.find("point 0"), std::string::npos) << m;
   const std::string vtu = R"(<VTKFile type="UnstructuredGrid" version="1.0">

@@ -56,8 +56,8 @@ class HostileValues : public ::testing::Test {
 
 TEST_F(HostileValues, AbsurdOrNonFiniteFlowTimesAreUsageErrors) {
   for (const char* t : {"1e9", "nan", "inf", "-inf"}) {
-    const ToolRun r = run("generate", std::string("vortex --dims 4,4 -q --time ") + t + " -o " +
-                                          path("g.vtu"));
+    const ToolRun r =
+        run("generate", std::string("vortex --dims 4,4 -q --time ") + t + " -o " + path("g.vtu"));
     EXPECT_EQ(r.code, 1) << t << ": " << r.err;
     EXPECT_NE(r.err.find("flow time"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir_ / "g.vtu")) << t;
@@ -97,8 +97,9 @@ TEST_F(HostileValues, AHugeExtentInATinyFileIsBadInputAtOnce) {
 
 TEST_F(HostileValues, NanCoordinatesAndRepeatedNodesAreBadInputNamingTheFile) {
   const std::string head = "# vtk DataFile Version 3.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\n";
-  const std::string cells = "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n9\nCELL_DATA 1\n"
-                            "SCALARS vf_a double 1\nLOOKUP_TABLE default\n1\n";
+  const std::string cells =
+      "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n9\nCELL_DATA 1\n"
+      "SCALARS vf_a double 1\nLOOKUP_TABLE default\n1\n";
   write("nan.vtk", head + "POINTS 4 double\n0 0 0 1 0 0 1 nan 0 0 1 0\n" + cells);
   ToolRun r = run("assign", path("nan.vtk") + " -o " + path("o.vtu"));
   EXPECT_EQ(r.code, 2) << r.err;

@@ -118,8 +118,9 @@ void read_field(LegacyScanner& s, MeshData& data, const Section& sec) {
     if (read_field_array(s, a, nullptr)) {
       if (a.n_tuples() != sec.n_tuples ||
           a.values.size() != sec.n_tuples * static_cast<std::size_t>(a.n_components))
-        s.fail_at(at, "field array " + quote_token(a.name) + " has " + std::to_string(a.n_tuples()) +
-                          " tuples, expected " + std::to_string(sec.n_tuples));
+        s.fail_at(at, "field array " + quote_token(a.name) + " has " +
+                          std::to_string(a.n_tuples()) + " tuples, expected " +
+                          std::to_string(sec.n_tuples));
       add_array(s, data, sec, std::move(a));
     }
     skip_metadata(s);
@@ -152,8 +153,7 @@ void read_attributes(LegacyScanner& s, MeshData& data) {
       started = true;
       continue;
     }
-    if (!started)
-      s.fail_at(at, "expected CELL_DATA or POINT_DATA, found " + quote_token(key));
+    if (!started) s.fail_at(at, "expected CELL_DATA or POINT_DATA, found " + quote_token(key));
     if (keyword_is(key, "SCALARS")) {
       read_scalars(s, data, sec);
     } else if (keyword_is(key, "VECTORS") || keyword_is(key, "NORMALS")) {

@@ -136,8 +136,7 @@ MeshData read_text_case(std::string_view content, const std::string& file) {
   std::vector<double> sums(static_cast<std::size_t>(numbering.n_cells), 0.0);
   std::vector<std::int64_t> indices;
   for (std::int64_t m = 0; m < n_mat; ++m) read_material(s, numbering, sums, data, indices);
-  if (!s.at_end())
-    s.fail("unexpected " + quote_token(s.peek_token()) + " after the last material");
+  if (!s.at_end()) s.fail("unexpected " + quote_token(s.peek_token()) + " after the last material");
   return data;
 }
 

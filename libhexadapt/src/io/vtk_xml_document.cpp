@@ -77,8 +77,9 @@ void load_vtk_xml(VtkXmlDocument& doc, std::string_view content, const std::stri
   if (doc.has_appended) {
     const std::string encoding = doc.root.child("AppendedData").attribute("encoding").as_string();
     if (encoding != "raw" && encoding != "base64")
-      throw InputError(file, place(doc.root.child("AppendedData")),
-                       "AppendedData encoding " + quote_token(encoding) + ": expected raw or base64");
+      throw InputError(
+          file, place(doc.root.child("AppendedData")),
+          "AppendedData encoding " + quote_token(encoding) + ": expected raw or base64");
     doc.appended_base64 = encoding == "base64";
   }
 }
