@@ -5,6 +5,8 @@
 #include <cmath>
 #include <memory>
 
+#include "hexadapt/core/error.h"
+
 namespace hexadapt::generate {
 namespace {
 
@@ -78,6 +80,13 @@ TEST(Flows, StillOutsideTheSupport) {
   EXPECT_FALSE(both.still_in(Vec3(3, 0, 0), 0.1));
   EXPECT_TRUE(both.still_in(Vec3(1.5, 5, 0), 0.1));
   EXPECT_FALSE(SingleVortex(8).still_in(Vec3(0.5, 0.5, 0), 0.01));
+}
+
+TEST(Flows, AbsurdOrNonFiniteTimesAreRefusedNotCast) {
+  const SingleVortex f(8);
+  EXPECT_GE(automatic_steps(f, 8), 1);
+  for (const double t : {1e9, -1e9, 1e300, std::nan(""), HUGE_VAL, -HUGE_VAL})
+    EXPECT_THROW(automatic_steps(f, t), OptionError) << t;
 }
 
 }  // namespace

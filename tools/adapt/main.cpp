@@ -251,7 +251,7 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   const Fractions fractions = extract_fractions(in, args.in.fractions, nullptr, args.input);
   const IdVector<CellId, int> material =
       read_material_array(in, fractions.n_materials(), args.input);
-  const AnyMesh grid = io::to_mesh(in);
+  const AnyMesh grid = io::to_mesh(in, args.input);
   reconstruct::ModelFile model;
   if (!args.model.empty()) model = read_model(args.model, fractions);
   times.emplace_back("read", clock.seconds());

@@ -130,7 +130,7 @@ int run_assign(const CLI::App& app, Options& o) {
   t.restart();
   FractionReport fr;
   const Fractions fractions = extract_fractions(data, o.in.fractions, &fr, o.input);
-  const AnyMesh mesh = io::to_mesh(data);
+  const AnyMesh mesh = io::to_mesh(data, o.input);
   times.emplace_back("fractions", t.seconds());
   const assign::AssignResult r = std::visit(
       [&](const auto& m) { return assign::assign_materials(m, fractions, o.correction); }, mesh);

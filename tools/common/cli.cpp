@@ -15,7 +15,17 @@ namespace hexadapt::cli {
 
 namespace {
 std::vector<std::string> g_args;  // the command line as given, for provenance
-}
+
+// A tolerance or threshold: a finite number >= 0. CLI11 names the flag in the usage error.
+const CLI::Validator finite_non_negative(
+    [](std::string& text) -> std::string {
+      double v = 0;
+      if (!CLI::detail::lexical_cast(text, v) || !std::isfinite(v) || v < 0)
+        return "expected a finite number >= 0, got " + text;
+      return {};
+    },
+    "NUMBER>=0");
+}  // namespace
 
 void add_common_options(CLI::App& app, CommonOptions& options, bool with_output) {
   if (with_output) app.add_option("-o,--output", options.output, "Output file")->required();
@@ -37,11 +47,14 @@ void add_input_options(CLI::App& app, InputOptions& options) {
   app.add_option("--void", f.void_material, "Name a material that receives 1 - sum of the others");
   app.add_option("--value-tolerance", f.value_tolerance,
                  "How far outside [0,1] a fraction may be and still be clipped")
+      ->check(finite_non_negative)
       ->capture_default_str();
   app.add_option("--sum-tolerance", f.sum_tolerance,
                  "How far from 1 a cell's sum may be and still be rescaled")
+      ->check(finite_non_negative)
       ->capture_default_str();
   app.add_option("--zero-below", f.zero_below, "Fractions below this are traces (set to 0)")
+      ->check(finite_non_negative)
       ->capture_default_str();
   app.add_option("--plane", options.plane, "Plane of 2D data: auto, xy, yz, xz")
       ->check(CLI::IsMember({"auto", "xy", "yz", "xz"}))

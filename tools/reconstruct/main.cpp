@@ -211,7 +211,7 @@ int main(int argc, char** argv) {
     io::MeshData data = io::read_mesh(o.input, o.in.read_options());
     const Fractions f = extract_fractions(data, o.in.fractions, nullptr, o.input);
     const std::vector<int> assignment = read_assignment(data, f, o);
-    const AnyMesh mesh = io::to_mesh(data);
+    const AnyMesh mesh = io::to_mesh(data, o.input);
     o.read_seconds = read.seconds();
     return std::visit([&](const auto& m) { return run(m, f, assignment, o, common, app); },
                       mesh);

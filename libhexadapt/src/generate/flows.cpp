@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "hexadapt/core/error.h"
 
@@ -125,7 +126,15 @@ Vec3 trace_back(const Flow& flow, const Vec3& p, double t, int steps) {
 }
 
 int automatic_steps(const Flow& flow, double t) {
-  return std::max(1, static_cast<int>(std::ceil(4 * flow.rate() * std::abs(t))));
+  if (!std::isfinite(t)) throw OptionError("flow time must be a finite number");
+  // In double first: the cast to int of a value beyond its range is undefined.
+  const double steps = std::ceil(4 * flow.rate() * std::abs(t));
+  if (!(steps <= max_rk4_steps)) {
+    std::ostringstream m;
+    m << "flow time " << t << " needs " << steps << " RK4 steps, more than " << max_rk4_steps;
+    throw OptionError(m.str());
+  }
+  return std::max(1, static_cast<int>(steps));
 }
 
 }  // namespace hexadapt::generate

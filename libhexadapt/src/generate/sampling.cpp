@@ -203,6 +203,7 @@ SamplingResult sample_fractions(const io::MeshData& mesh, const Scene& scene,
   if (materials.empty() || materials.size() > max_materials)
     throw OptionError("a scene needs 1 to 16 materials");
   if (options.steps < 0) throw OptionError("RK4 steps must be >= 0");
+  if (!std::isfinite(options.time)) throw OptionError("flow time must be a finite number");
   if (scene.layout.max_material() >= static_cast<int>(materials.size()))
     throw InternalError("the scene paints a material index beyond its material list");
   const Timer timer;

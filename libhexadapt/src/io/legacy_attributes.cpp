@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "hexadapt/core/error.h"
+
 namespace hexadapt::io::detail {
 
 namespace {
@@ -11,7 +13,12 @@ struct Section {
   std::size_t n_tuples = 0;
 };
 
-void add_array(MeshData& data, const Section& sec, DataArray a) {
+// Two arrays of one section with the same name are refused, as the XML reader does: keeping
+// either would silently drop the other.
+void add_array(LegacyScanner& s, MeshData& data, const Section& sec, DataArray a) {
+  if ((sec.cells ? data.find_cell_array(a.name) : data.find_point_array(a.name)) != nullptr)
+    s.fail(std::string("two ") + (sec.cells ? "CELL_DATA" : "POINT_DATA") + " arrays named " +
+           quote_token(a.name));
   if (sec.cells)
     data.set_cell_array(std::move(a));
   else
@@ -45,7 +52,7 @@ void read_scalars(LegacyScanner& s, MeshData& data, const Section& sec) {
   a.n_components = n_comp;
   a.type = t.type;
   a.values = s.reals(t, sec.n_tuples * static_cast<std::size_t>(n_comp), "array values");
-  add_array(data, sec, std::move(a));
+  add_array(s, data, sec, std::move(a));
 }
 
 // COLOR_SCALARS are floats in [0,1] in ASCII files and unsigned chars in binary ones.
@@ -62,7 +69,7 @@ void read_color_scalars(LegacyScanner& s, MeshData& data, const Section& sec) {
                      "color values");
   if (s.binary())
     for (double& v : a.values) v /= 255.0;
-  add_array(data, sec, std::move(a));
+  add_array(s, data, sec, std::move(a));
 }
 
 // A stand-alone LOOKUP_TABLE section: size RGBA entries, floats (ASCII) or bytes (binary).
@@ -111,9 +118,10 @@ void read_field(LegacyScanner& s, MeshData& data, const Section& sec) {
     if (read_field_array(s, a, nullptr)) {
       if (a.n_tuples() != sec.n_tuples ||
           a.values.size() != sec.n_tuples * static_cast<std::size_t>(a.n_components))
-        s.fail_at(at, "field array '" + a.name + "' has " + std::to_string(a.n_tuples()) +
-                          " tuples, expected " + std::to_string(sec.n_tuples));
-      add_array(data, sec, std::move(a));
+        s.fail_at(at, "field array " + quote_token(a.name) + " has " +
+                          std::to_string(a.n_tuples()) + " tuples, expected " +
+                          std::to_string(sec.n_tuples));
+      add_array(s, data, sec, std::move(a));
     }
     skip_metadata(s);
   }
@@ -145,23 +153,23 @@ void read_attributes(LegacyScanner& s, MeshData& data) {
       started = true;
       continue;
     }
-    if (!started)
-      s.fail_at(at, "expected CELL_DATA or POINT_DATA, found '" + std::string(key) + "'");
+    if (!started) s.fail_at(at, "expected CELL_DATA or POINT_DATA, found " + quote_token(key));
     if (keyword_is(key, "SCALARS")) {
       read_scalars(s, data, sec);
     } else if (keyword_is(key, "VECTORS") || keyword_is(key, "NORMALS")) {
       std::string name = decode_name(s.expect_token("an array name"));
-      add_array(data, sec, read_array(s, sec, std::move(name), 3));
+      add_array(s, data, sec, read_array(s, sec, std::move(name), 3));
     } else if (keyword_is(key, "TENSORS") || keyword_is(key, "TENSORS6")) {
       std::string name = decode_name(s.expect_token("an array name"));
-      add_array(data, sec, read_array(s, sec, std::move(name), keyword_is(key, "TENSORS") ? 9 : 6));
+      add_array(s, data, sec,
+                read_array(s, sec, std::move(name), keyword_is(key, "TENSORS") ? 9 : 6));
     } else if (keyword_is(key, "TEXTURE_COORDINATES")) {
       std::string name = decode_name(s.expect_token("an array name"));
       const int dim = static_cast<int>(s.integer("a texture dimension", 1, 3));
-      add_array(data, sec, read_array(s, sec, std::move(name), dim));
+      add_array(s, data, sec, read_array(s, sec, std::move(name), dim));
     } else if (keyword_is(key, "GLOBAL_IDS") || keyword_is(key, "PEDIGREE_IDS")) {
       std::string name = decode_name(s.expect_token("an array name"));
-      add_array(data, sec, read_array(s, sec, std::move(name), 1));
+      add_array(s, data, sec, read_array(s, sec, std::move(name), 1));
     } else if (keyword_is(key, "COLOR_SCALARS")) {
       read_color_scalars(s, data, sec);
     } else if (keyword_is(key, "LOOKUP_TABLE")) {
@@ -171,8 +179,8 @@ void read_attributes(LegacyScanner& s, MeshData& data) {
     } else if (keyword_is(key, "METADATA")) {
       s.skip_block();
     } else {
-      s.fail_at(at, "unknown keyword '" + std::string(key) +
-                        "' in a data section (expected SCALARS, VECTORS, NORMALS, TENSORS, "
+      s.fail_at(at, "unknown keyword " + quote_token(key) +
+                        " in a data section (expected SCALARS, VECTORS, NORMALS, TENSORS, "
                         "FIELD, CELL_DATA or POINT_DATA)");
     }
   }

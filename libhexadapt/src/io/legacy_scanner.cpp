@@ -153,7 +153,7 @@ std::int64_t LegacyScanner::integer(const char* what, std::int64_t lo, std::int6
   std::int64_t v = 0;
   const auto r = std::from_chars(number_start(t), t.data() + t.size(), v);
   if (r.ec != std::errc() || r.ptr != t.data() + t.size())
-    fail(std::string("expected ") + what + " (an integer), found '" + std::string(t) + "'");
+    fail(std::string("expected ") + what + " (an integer), found " + quote_token(t));
   if (v < lo || v > hi)
     fail(std::string(what) + " " + std::to_string(v) + " out of range [" + std::to_string(lo) +
          ", " + std::to_string(hi) + "]");
@@ -165,7 +165,7 @@ double LegacyScanner::real(const char* what) {
   double v = 0;
   const auto r = std::from_chars(number_start(t), t.data() + t.size(), v);
   if (r.ec != std::errc() || r.ptr != t.data() + t.size())
-    fail(std::string("expected ") + what + " (a number), found '" + std::string(t) + "'");
+    fail(std::string("expected ") + what + " (a number), found " + quote_token(t));
   return v;
 }
 
@@ -188,8 +188,8 @@ const LegacyType& LegacyScanner::data_type() {
   for (const LegacyType& d : kTypes)
     if (keyword_is(t, d.name)) return d;
   if (keyword_is(t, "bit")) fail_at(at, "bit arrays are not supported");
-  fail_at(at, "unknown data type '" + std::string(t) +
-                  "' (expected char, short, int, long, float, double and their unsigned "
+  fail_at(at, "unknown data type " + quote_token(t) +
+                  " (expected char, short, int, long, float, double and their unsigned "
                   "forms, vtkIdType or vtktypeint64)");
 }
 

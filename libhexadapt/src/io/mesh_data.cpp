@@ -17,7 +17,7 @@ const DataArray* find(const Array& arrays, const std::string& name) {
 
 void set(std::vector<DataArray>& arrays, DataArray a, std::size_t n_tuples, const char* kind) {
   if (a.n_components < 1 || a.values.size() != n_tuples * static_cast<std::size_t>(a.n_components))
-    throw Error(std::string(kind) + " array '" + a.name + "' has " +
+    throw Error(std::string(kind) + " array " + quote_token(a.name) + " has " +
                 std::to_string(a.values.size()) + " values, expected " +
                 std::to_string(n_tuples) + " x " + std::to_string(a.n_components));
   for (auto& old : arrays)
@@ -69,6 +69,17 @@ AnyMesh to_mesh(const MeshData& data) {
   if (data.dim == 2) return QuadMesh(data.points, group<4>(data.cells));
   if (data.dim == 3) return HexMesh(data.points, group<8>(data.cells));
   throw InputError("", "", "the data set has no quad or hex cells");
+}
+
+AnyMesh to_mesh(const MeshData& data, const std::string& file) {
+  try {
+    return to_mesh(data);
+  } catch (const MeshError& e) {
+    throw MeshError(file + ": " + e.what());
+  } catch (const InputError& e) {
+    if (!e.file().empty()) throw;
+    throw InputError(file, e.where(), e.message());
+  }
 }
 
 MeshData from_mesh(const QuadMesh& mesh) { return from_kernel(mesh); }

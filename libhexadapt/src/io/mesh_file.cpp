@@ -61,8 +61,8 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
   const std::string ext = extension_of(path);
   const bool xml = ext == ".vtu" || ext == ".vti" || ext == ".vtr" || ext == ".vts";
   if (ext != ".vtk" && ext != ".txt" && !xml)
-    throw OptionError(path + ": unknown mesh file extension '" + ext +
-                      "' (supported for reading: .vtk .vtu .vti .vtr .vts .txt)");
+    throw OptionError(path + ": unknown mesh file extension " + quote_token(ext) +
+                      " (supported for reading: .vtk .vtu .vti .vtr .vts .txt)");
   const std::string content = read_whole_file(path);
   if (ext == ".vtk") return read_vtk_legacy(content, path, options);
   if (ext == ".txt") return read_text_case(content, path);
@@ -74,8 +74,8 @@ void write_mesh(const MeshData& data, const std::string& path, const WriteOption
   if (ext == ".vtu") return write_vtu(data, path, options);
   if (ext == ".vts") return write_vts(data, path, options);
   if (ext == ".vtk") return write_vtk_legacy(data, path);
-  throw OptionError(path + ": unknown mesh file extension '" + ext +
-                    "' (supported for writing: .vtu .vts .vtk)");
+  throw OptionError(path + ": unknown mesh file extension " + quote_token(ext) +
+                    " (supported for writing: .vtu .vts .vtk)");
 }
 
 }  // namespace hexadapt::io

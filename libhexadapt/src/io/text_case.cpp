@@ -98,7 +98,7 @@ void read_material(LegacyScanner& s, const CellNumbering& numbering, std::vector
   DataArray a;
   a.name = "vf_" + std::string(s.expect_token("a material name"));
   if (data.find_cell_array(a.name))
-    s.fail_at(at, "material '" + a.name.substr(3) + "' listed twice");
+    s.fail_at(at, "material " + quote_token(a.name.substr(3)) + " listed twice");
   a.values.assign(static_cast<std::size_t>(numbering.n_cells), 0.0);
   std::vector<bool> seen(a.values.size(), false);
   const auto n = s.integer("a number of listed cells", 0, numbering.n_cells);
@@ -107,7 +107,7 @@ void read_material(LegacyScanner& s, const CellNumbering& numbering, std::vector
         static_cast<std::size_t>(numbering(s.integer("a cell index", 0, numbering.n_cells - 1)));
     const double f = s.real("a volume fraction");
     if (!(f >= 0.0 && f <= 1.0)) s.fail("volume fraction " + std::to_string(f) + " outside [0, 1]");
-    if (seen[c]) s.fail("cell listed twice for material '" + a.name.substr(3) + "'");
+    if (seen[c]) s.fail("cell listed twice for material " + quote_token(a.name.substr(3)));
     seen[c] = true;
     a.values[c] = f;
     sums[c] += f;
@@ -136,8 +136,7 @@ MeshData read_text_case(std::string_view content, const std::string& file) {
   std::vector<double> sums(static_cast<std::size_t>(numbering.n_cells), 0.0);
   std::vector<std::int64_t> indices;
   for (std::int64_t m = 0; m < n_mat; ++m) read_material(s, numbering, sums, data, indices);
-  if (!s.at_end())
-    s.fail("unexpected '" + std::string(s.peek_token()) + "' after the last material");
+  if (!s.at_end()) s.fail("unexpected " + quote_token(s.peek_token()) + " after the last material");
   return data;
 }
 

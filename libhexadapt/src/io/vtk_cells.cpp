@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "hexadapt/core/error.h"
 #include "hexadapt/core/log.h"
@@ -38,6 +39,20 @@ double signed_area(const MeshData& d, std::size_t c) {
   return 0.5 * ((p2.x() - p0.x()) * (p3.y() - p1.y()) - (p3.x() - p1.x()) * (p2.y() - p0.y()));
 }
 
+// Every reader's points pass here: a NaN or infinite coordinate is refused with its point
+// number (it would only surface later as a quality failure far from its cause).
+void check_finite(const std::vector<Vec3>& points, const std::string& file) {
+  for (std::size_t p = 0; p < points.size(); ++p)
+    for (int a = 0; a < 3; ++a)
+      if (!std::isfinite(points[p][a])) {
+        std::ostringstream value;
+        value << points[p][a];
+        throw InputError(file, "point " + std::to_string(p),
+                         std::string("coordinate ") + "xyz"[a] + " is " + value.str() +
+                             ": coordinates must be finite numbers");
+      }
+}
+
 }  // namespace
 
 void fill_structured(MeshData& data, std::array<std::int64_t, 3> dims, std::vector<Vec3> points,
@@ -50,6 +65,7 @@ void fill_structured(MeshData& data, std::array<std::int64_t, 3> dims, std::vect
   if (static_cast<std::int64_t>(points.size()) != n)
     throw InputError(file, "points", "expected " + std::to_string(n) + " points, found " +
                                          std::to_string(points.size()));
+  check_finite(points, file);
   const int flat = static_cast<int>(std::count(dims.begin(), dims.end(), 1));
   if (flat >= 2)
     throw InputError(file, "DIMENSIONS", "a structured data set with a single row of points has "
@@ -116,6 +132,7 @@ void append_vtk_cell(MeshData& data, int type, const std::int64_t* ids, std::siz
 }
 
 void finish_unstructured(MeshData& data, const ReadOptions& options, const std::string& file) {
+  check_finite(data.points, file);
   if (data.dim != 2) return;
   Plane plane = options.plane;
   if (plane == Plane::automatic) {

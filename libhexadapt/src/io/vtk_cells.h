@@ -17,7 +17,8 @@ enum VtkCellType : int { vtk_pixel = 8, vtk_quad = 9, vtk_voxel = 11, vtk_hexahe
 
 /// Points and cells of a structured data set with dims[0] x dims[1] x dims[2] points (i
 /// fastest). One axis with a single point makes it 2D (quads in the two other axes, mapped
-/// to the xy plane); more than one, or an axis with no point, is an InputError.
+/// to the xy plane); more than one, or an axis with no point, is an InputError, and so is a
+/// NaN or infinite coordinate (naming the point).
 void fill_structured(MeshData& data, std::array<std::int64_t, 3> dims, std::vector<Vec3> points,
                      const ReadOptions& options, const std::string& file);
 

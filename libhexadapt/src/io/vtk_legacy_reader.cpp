@@ -235,7 +235,7 @@ Kind read_header(LegacyScanner& s, MeshData& data) {
   if (keyword_is(mode, "BINARY"))
     s.set_binary(true);
   else if (!keyword_is(mode, "ASCII"))
-    s.fail_at(at, "expected ASCII or BINARY on line 3, found '" + std::string(mode) + "'");
+    s.fail_at(at, "expected ASCII or BINARY on line 3, found " + quote_token(mode));
   const std::size_t at_set = s.mark();
   if (!keyword_is(s.token(), "DATASET")) s.fail_at(at_set, "expected DATASET");
   const std::size_t at_kind = s.mark();
@@ -244,8 +244,8 @@ Kind read_header(LegacyScanner& s, MeshData& data) {
   if (keyword_is(kind, "RECTILINEAR_GRID")) return Kind::rectilinear;
   if (keyword_is(kind, "STRUCTURED_GRID")) return Kind::structured;
   if (keyword_is(kind, "UNSTRUCTURED_GRID")) return Kind::unstructured;
-  s.fail_at(at_kind, "unsupported data set type '" + std::string(kind) +
-                         "' (expected STRUCTURED_POINTS, RECTILINEAR_GRID, STRUCTURED_GRID or "
+  s.fail_at(at_kind, "unsupported data set type " + quote_token(kind) +
+                         " (expected STRUCTURED_POINTS, RECTILINEAR_GRID, STRUCTURED_GRID or "
                          "UNSTRUCTURED_GRID)");
 }
 
@@ -268,8 +268,8 @@ MeshData read_vtk_legacy(std::string_view content, const std::string& file,
     else if (keyword_is(key, "METADATA"))
       s.skip_block();
     else
-      s.fail_at(at, "unknown or misplaced keyword '" + std::string(key) +
-                        "' in the geometry of the data set");
+      s.fail_at(at, "unknown or misplaced keyword " + quote_token(key) +
+                        " in the geometry of the data set");
   }
   build_geometry(s, g, data, options);
   detail::read_attributes(s, data);

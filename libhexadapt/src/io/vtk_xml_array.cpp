@@ -27,8 +27,8 @@ ScalarType type_of(const VtkXmlDocument& doc, const pugi::xml_node& e) {
   const auto t = scalar_type_of(name);
   if (!t)
     throw InputError(doc.file, place(e),
-                     "unknown or unsupported data type '" + name +
-                         "' (expected Int8..UInt64, Float32 or Float64)");
+                     "unknown or unsupported data type " + quote_token(name) +
+                         " (expected Int8..UInt64, Float32 or Float64)");
   return *t;
 }
 
@@ -56,7 +56,8 @@ ByteReader payload_reader(const VtkXmlDocument& doc, const pugi::xml_node& e,
 std::string format_of(const VtkXmlDocument& doc, const pugi::xml_node& e) {
   const std::string f = e.attribute("format").as_string("ascii");
   if (f != "ascii" && f != "binary" && f != "appended")
-    throw InputError(doc.file, place(e), "format '" + f + "': expected ascii, binary or appended");
+    throw InputError(doc.file, place(e),
+                     "format " + quote_token(f) + ": expected ascii, binary or appended");
   return f;
 }
 

@@ -27,8 +27,8 @@ struct Tokens {
 [[noreturn]] void bad_value(std::string_view token, std::size_t offset, ScalarType t, std::size_t k,
                             const std::string& file, const std::string& what) {
   throw InputError(file, "byte " + std::to_string(offset),
-                   what + ": value " + std::to_string(k) + " '" + std::string(token.substr(0, 40)) +
-                       "' is not a valid " + vtk_name(t));
+                   what + ": value " + std::to_string(k) + " " + quote_token(token) +
+                       " is not a valid " + vtk_name(t));
 }
 
 template <class T>

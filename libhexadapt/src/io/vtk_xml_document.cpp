@@ -40,18 +40,19 @@ void read_layout(VtkXmlDocument& doc) {
   const std::string where = place(r);
   const std::string header = r.attribute("header_type").as_string("UInt32");
   if (header != "UInt32" && header != "UInt64")
-    throw InputError(doc.file, where, "header_type '" + header + "': expected UInt32 or UInt64");
+    throw InputError(doc.file, where,
+                     "header_type " + quote_token(header) + ": expected UInt32 or UInt64");
   doc.layout.header64 = header == "UInt64";
   const std::string order = r.attribute("byte_order").as_string("LittleEndian");
   if (order != "LittleEndian" && order != "BigEndian")
     throw InputError(doc.file, where,
-                     "byte_order '" + order + "': expected LittleEndian or BigEndian");
+                     "byte_order " + quote_token(order) + ": expected LittleEndian or BigEndian");
   doc.layout.big_endian = order == "BigEndian";
   const std::string compressor = r.attribute("compressor").as_string();
   if (!compressor.empty() && compressor != "vtkZLibDataCompressor")
     throw InputError(
         doc.file, where,
-        "compressor '" + compressor + "' is not supported (only vtkZLibDataCompressor)");
+        "compressor " + quote_token(compressor) + " is not supported (only vtkZLibDataCompressor)");
   doc.layout.zlib = !compressor.empty();
 }
 
@@ -59,6 +60,7 @@ void read_layout(VtkXmlDocument& doc) {
 
 void load_vtk_xml(VtkXmlDocument& doc, std::string_view content, const std::string& file) {
   doc.file = file;
+  doc.size = content.size();
   std::string cut;
   const bool appended = cut_appended(doc, content, cut);
   const std::string_view text = appended ? std::string_view(cut) : content;
@@ -75,8 +77,9 @@ void load_vtk_xml(VtkXmlDocument& doc, std::string_view content, const std::stri
   if (doc.has_appended) {
     const std::string encoding = doc.root.child("AppendedData").attribute("encoding").as_string();
     if (encoding != "raw" && encoding != "base64")
-      throw InputError(file, place(doc.root.child("AppendedData")),
-                       "AppendedData encoding '" + encoding + "': expected raw or base64");
+      throw InputError(
+          file, place(doc.root.child("AppendedData")),
+          "AppendedData encoding " + quote_token(encoding) + ": expected raw or base64");
     doc.appended_base64 = encoding == "base64";
   }
 }
@@ -98,7 +101,7 @@ std::uint64_t count_attribute(const VtkXmlDocument& doc, const pugi::xml_node& e
   if (!a || r.ec != std::errc() || r.ptr != v.data() + v.size())
     throw InputError(doc.file, place(e),
                      std::string("expected a non-negative integer attribute ") + name +
-                         (a ? ", found '" + std::string(v) + "'" : ""));
+                         (a ? ", found " + quote_token(v) : ""));
   return n;
 }
 

@@ -14,6 +14,7 @@ namespace hexadapt::io::detail {
 
 struct VtkXmlDocument {
   std::string file;
+  std::size_t size = 0;  ///< bytes in the whole file
   pugi::xml_document xml;
   pugi::xml_node root;  ///< the VTKFile element
   std::string type;     ///< its type attribute: "UnstructuredGrid", "ImageData", ...

@@ -37,7 +37,7 @@ void read_arrays(const VtkXmlDocument& doc, const pugi::xml_node& group, std::si
     ++k;
     for (const DataArray& old : out)
       if (old.name == a.name)
-        throw InputError(doc.file, place(e), "two arrays named '" + a.name + "'");
+        throw InputError(doc.file, place(e), "two arrays named " + quote_token(a.name));
     out.push_back(std::move(a));
   }
 }
@@ -91,8 +91,8 @@ MeshData read_vtk_xml(std::string_view content, const std::string& file,
     detail::read_structured(doc, options, data);
   else
     throw InputError(file, detail::place(doc.root),
-                     "data set type '" + doc.type +
-                         "' is not supported (expected UnstructuredGrid, "
+                     "data set type " + quote_token(doc.type) +
+                         " is not supported (expected UnstructuredGrid, "
                          "ImageData, RectilinearGrid or StructuredGrid)");
   return data;
 }

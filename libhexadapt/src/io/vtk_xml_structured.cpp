@@ -58,6 +58,21 @@ Block block_of(const VtkXmlDocument& doc, const pugi::xml_node& dataset,
   return b;
 }
 
+// A lattice (.vti, .vtr) is generated from its extent, not read: millions of points announced
+// by a file without a single array for them and too small to hold one are a lie (or nothing
+// to work on), refused before allocating (as the legacy reader does). Arrays that are present
+// were already checked against the bytes that hold them.
+void refuse_empty_lattice(const VtkXmlDocument& doc, const pugi::xml_node& piece, const Block& b,
+                          const MeshData& data) {
+  if (b.n_points <= (std::size_t{1} << 20) || b.n_points / 8 <= doc.size) return;
+  if (!data.cell_data.empty() || !data.point_data.empty()) return;
+  throw InputError(doc.file, place(piece),
+                   "the extent announces " + std::to_string(b.n_points) + " points and " +
+                       std::to_string(b.n_cells) +
+                       " cells but the file has no point or cell array and only " +
+                       std::to_string(doc.size) + " bytes");
+}
+
 template <class F>
 void for_each_point(const Block& b, F&& f) {
   for (std::int64_t k = 0; k < b.dims[2]; ++k)
@@ -73,6 +88,7 @@ void read_image(const VtkXmlDocument& doc, const ReadOptions& options, MeshData&
   const Block b = block_of(doc, dataset, piece);
   // Arrays first: their sizes are checked against the file before points are allocated.
   read_attributes(doc, dataset, piece, b.n_points, b.n_cells, data);
+  refuse_empty_lattice(doc, piece, b, data);
   const auto origin = numbers<3>(doc, dataset, "Origin", {0, 0, 0});
   const auto spacing = numbers<3>(doc, dataset, "Spacing", {1, 1, 1});
   const auto dir = numbers<9>(doc, dataset, "Direction", {1, 0, 0, 0, 1, 0, 0, 0, 1});
@@ -97,6 +113,7 @@ void read_rectilinear(const VtkXmlDocument& doc, const ReadOptions& options, Mes
   const pugi::xml_node piece = single_piece(doc, dataset);
   const Block b = block_of(doc, dataset, piece);
   read_attributes(doc, dataset, piece, b.n_points, b.n_cells, data);
+  refuse_empty_lattice(doc, piece, b, data);
   const pugi::xml_node coords = piece.child("Coordinates");
   if (!coords) throw InputError(doc.file, place(piece), "no <Coordinates> element");
   std::array<std::vector<double>, 3> axis;

@@ -9,8 +9,13 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace hexadapt {
+
+/// A token from a file, quoted for an error message: control bytes escaped (\x01), and cut
+/// after max_chars characters with "..." (a file may hold a 50 MB "word").
+std::string quote_token(std::string_view token, std::size_t max_chars = 40);
 
 /// Base class of every exception thrown by libhexadapt.
 class Error : public std::runtime_error {

@@ -99,7 +99,11 @@ class SumFlow final : public Flow {
 /// Where the point p at time t was at time 0: `steps` classical RK4 steps backwards in time.
 Vec3 trace_back(const Flow& flow, const Vec3& p, double t, int steps);
 
+/// The most RK4 steps automatic_steps gives (a longer flow time is refused, not truncated).
+inline constexpr int max_rk4_steps = 1'000'000;
+
 /// The automatic step count for tracing over [0, t]: ceil(4 * rate * |t|), at least 1.
+/// Throws OptionError when t is not finite or needs more than max_rk4_steps.
 int automatic_steps(const Flow& flow, double t);
 
 }  // namespace hexadapt::generate

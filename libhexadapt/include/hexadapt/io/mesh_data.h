@@ -59,6 +59,10 @@ struct MeshData {
 /// Builds the kernel for the data's dimension. Throws MeshError (bad topology) or
 /// InputError (no cells). Node and cell ids are those of the data.
 AnyMesh to_mesh(const MeshData& data);
+
+/// to_mesh for the data read from `file`: its errors name the file ("in.vtu: cell 3 repeats
+/// a node"), as every message about an input does.
+AnyMesh to_mesh(const MeshData& data, const std::string& file);
 /// Points and cells of a mesh (no arrays).
 MeshData from_mesh(const QuadMesh& mesh);
 MeshData from_mesh(const HexMesh& mesh);
