@@ -11,48 +11,16 @@
 #include <sstream>
 #include <string>
 
+#include "tools/tool_fixture.h"
+
 namespace hexadapt {
 namespace {
 
 namespace fs = std::filesystem;
 
-const std::string tools = HEXADAPT_TOOLS_DIR;
+using test::ToolRun;
 
-struct ToolRun {
-  int code = -1;
-  std::string err;
-};
-
-class HostileValues : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("hexadapt_hostile_values_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  void write(const std::string& name, const std::string& text) const {
-    std::ofstream(dir_ / name, std::ios::binary) << text;
-  }
-  // Runs hexadapt-<tool> with a time limit (no memory limit: ASan builds reserve terabytes).
-  ToolRun run(const std::string& tool, const std::string& args) const {
-    const std::string cmd = "timeout 60 " + tools + "/hexadapt-" + tool + " " + args +
-                            " >/dev/null 2>" + path("stderr.txt");
-    const int status = std::system(cmd.c_str());
-    ToolRun r;
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::ifstream in(dir_ / "stderr.txt", std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    r.err = s.str();
-    return r;
-  }
-
-  fs::path dir_;
-};
+class HostileValues : public test::ToolTest {};
 
 TEST_F(HostileValues, AbsurdOrNonFiniteFlowTimesAreUsageErrors) {
   for (const char* t : {"1e9", "nan", "inf", "-inf"}) {

@@ -2,53 +2,20 @@
 // estimate and the limit named, nothing written), and an allocation that fails anyway is
 // exit 5 with a message, never exit 4.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
+
+#include "tools/tool_fixture.h"
 
 namespace hexadapt {
 namespace {
 
 namespace fs = std::filesystem;
 
-const std::string tools = HEXADAPT_TOOLS_DIR;
+using test::ToolRun;
 
-struct ToolRun {
-  int code = -1;
-  std::string err;
-};
-
-class Memory : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("hexadapt_memory_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  // Runs `prefix` hexadapt-<tool> args through the shell.
-  ToolRun run(const std::string& tool, const std::string& args,
-              const std::string& prefix = "") const {
-    const std::string cmd = prefix + "timeout 120 " + tools + "/hexadapt-" + tool + " " + args +
-                            " >/dev/null 2>" + path("stderr.txt");
-    const int status = std::system(cmd.c_str());
-    ToolRun r;
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::ifstream in(path("stderr.txt"));
-    std::stringstream s;
-    s << in.rdbuf();
-    r.err = s.str();
-    return r;
-  }
-  fs::path dir_;
-};
+class Memory : public test::ToolTest {};
 
 TEST_F(Memory, AnEstimateAboveTheLimitStopsEveryStageBeforeItsWork) {
   ASSERT_EQ(run("generate", "disk --dims 16,16 -q -o " + path("vf.vtu")).code, 0);

@@ -13,53 +13,24 @@
 #include <sstream>
 #include <string>
 
+#include "tools/tool_fixture.h"
+
 namespace hexadapt {
 namespace {
 
 namespace fs = std::filesystem;
 
-const std::string tools = HEXADAPT_TOOLS_DIR;
+using test::ToolRun;
 
-struct ToolRun {
-  int code = -1;
-  std::string out, err;
-};
-
-std::string content(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-class OutputSafety : public ::testing::Test {
+class OutputSafety : public test::ToolTest {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("hexadapt_output_safety_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    ToolTest::SetUp();
     ASSERT_EQ(run("generate", "disk --dims 8,8 -q -o " + path("in.vtu")).code, 0);
-    input_ = content(dir_ / "in.vtu");
+    input_ = test::file_content(dir_ / "in.vtu");
   }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  // Runs hexadapt-<tool> with a time limit (a FIFO input must not hang the test).
-  ToolRun run(const std::string& tool, const std::string& args) const {
-    const std::string cmd = "timeout 60 " + tools + "/hexadapt-" + tool + " " + args + " >" +
-                            path("stdout.txt") + " 2>" + path("stderr.txt");
-    const int status = std::system(cmd.c_str());
-    ToolRun r;
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = content(dir_ / "stdout.txt");
-    r.err = content(dir_ / "stderr.txt");
-    fs::remove(dir_ / "stdout.txt");
-    fs::remove(dir_ / "stderr.txt");
-    return r;
-  }
-  bool input_intact() const { return content(dir_ / "in.vtu") == input_; }
+  bool input_intact() const { return test::file_content(dir_ / "in.vtu") == input_; }
 
-  fs::path dir_;
   std::string input_;
 };
 
@@ -83,7 +54,7 @@ TEST_F(OutputSafety, TwoOutputsNamingOneFileAreAUsageError) {
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.err.find("-o"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("--json"), std::string::npos) << r.err;
-  EXPECT_EQ(content(dir_ / "o.vtu"), "keep");
+  EXPECT_EQ(test::file_content(dir_ / "o.vtu"), "keep");
   // Also when the file does not exist yet, and through a symlink to the input.
   EXPECT_EQ(
       run("assign", path("in.vtu") + " -o " + path("new.vtu") + " --partial " + path("new.vtu"))
@@ -101,7 +72,7 @@ TEST_F(OutputSafety, OutputsGoThroughSymlinksAndJsonDashIsStandardOutput) {
   const ToolRun r = run("assign", path("in.vtu") + " -q -o " + path("out.vtu") + " --json -");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_TRUE(fs::is_symlink(dir_ / "out.vtu"));
-  EXPECT_NE(content(dir_ / "real" / "out.vtu"), "old");
+  EXPECT_NE(test::file_content(dir_ / "real" / "out.vtu"), "old");
   EXPECT_FALSE(fs::exists(dir_ / "-"));
   const auto report = nlohmann::json::parse(r.out);
   EXPECT_EQ(report["tool"], "hexadapt-assign");
@@ -145,14 +116,14 @@ TEST_F(OutputSafety, DirectoriesFifosAndDevicesAsInputsAreBadInput) {
 // SIGTERM at that moment must remove the temporary file and end the tool by SIGTERM.
 TEST_F(OutputSafety, SigtermDuringTheWritesLeavesNoTemporaryFile) {
   ASSERT_EQ(::mkfifo(path("fifo").c_str(), 0600), 0);
-  const std::string tool = tools + "/hexadapt-generate disk --dims 8,8 -q -o " + path("out.vtu") +
+  const std::string tool = std::string(HEXADAPT_TOOLS_DIR) + "/hexadapt-generate disk --dims 8,8 -q -o " + path("out.vtu") +
                            " --json " + path("fifo");
   const std::string script = tool + " & p=$!; for i in $(seq 300); do ls " + path(".out.vtu.") +
                              "*.tmp >/dev/null 2>&1 && break; sleep 0.1; done; kill -TERM $p; "
                              "wait $p; echo $? > " +
                              path("status");
   ASSERT_EQ(std::system(("bash -c '" + script + "'").c_str()), 0);
-  EXPECT_EQ(content(dir_ / "status"), "143\n");  // 128 + SIGTERM
+  EXPECT_EQ(test::file_content(dir_ / "status"), "143\n");  // 128 + SIGTERM
   EXPECT_FALSE(fs::exists(dir_ / "out.vtu"));
   for (const auto& e : fs::directory_iterator(dir_))
     EXPECT_NE(e.path().extension(), ".tmp") << e.path();
