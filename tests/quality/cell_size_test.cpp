@@ -2,6 +2,7 @@
 // boxes, a collapsed cell and an inverted one.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -68,8 +69,37 @@ TEST(CellSize, InvertedOrNanCellsHaveNoTimeStep) {
   EXPECT_EQ(hex_edge_lengths(h).min, 0);
 }
 
-// The one-pass metrics of the adaptation's cell score give exactly the two apart, on boxes
-// with corners jittered up to inversion, a collapsed edge and a NaN.
+// Verdict's hex scaled Jacobian the plain way, each corner's three edges normalised on their
+// own: the reference the one-pass computation is checked against.
+double reference_scaled_jacobian(const std::array<Vec3, 8>& p) {
+  double longest = 0;
+  for (const auto& e : ref_hex::edges)
+    longest = std::max(longest, (p[std::size_t(e[1])] - p[std::size_t(e[0])]).norm());
+  if (!(longest > 0) || !std::isfinite(longest)) return -1;
+  std::vector<std::array<Vec3, 3>> frames = {
+      {(p[1] + p[3] + p[5] + p[7]) - (p[0] + p[2] + p[4] + p[6]),
+       (p[2] + p[3] + p[6] + p[7]) - (p[0] + p[1] + p[4] + p[5]),
+       (p[4] + p[5] + p[6] + p[7]) - (p[0] + p[1] + p[2] + p[3])}};
+  for (std::size_t v = 0; v < 8; ++v) {
+    const Vec3 a = p[v ^ 1u] - p[v], b = p[v ^ 2u] - p[v], c = p[v ^ 4u] - p[v];
+    const bool odd = ((v & 1u) ^ ((v >> 1) & 1u) ^ ((v >> 2) & 1u)) != 0;
+    frames.push_back(odd ? std::array<Vec3, 3>{b, a, c} : std::array<Vec3, 3>{a, b, c});
+  }
+  double worst = 1;
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    const auto& [a, b, c] = frames[k];
+    const double tiny = 1e-13 * longest * (k == 0 ? 4 : 1);
+    if (!(a.norm() > tiny && b.norm() > tiny && c.norm() > tiny)) return -1;
+    const double j = (a / a.norm()).dot((b / b.norm()).cross(c / c.norm()));
+    if (!std::isfinite(j)) return -1;
+    worst = std::min(worst, j);
+  }
+  return std::clamp(worst, -1.0, 1.0);
+}
+
+// The one-pass metrics of the adaptation's cell score give the scaled Jacobian computed the
+// plain way and the edge lengths, on boxes with corners jittered up to inversion, a collapsed
+// edge and a NaN.
 TEST(CellSize, ShapeAndSizeInOnePassAreTheTwoApart) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> jitter(-0.6, 0.6);
@@ -88,6 +118,7 @@ TEST(CellSize, ShapeAndSizeInOnePassAreTheTwoApart) {
     const HexShapeAndSize m = hex_shape_and_size(p);
     const EdgeLengths e = hex_edge_lengths(p);
     EXPECT_EQ(m.scaled_jacobian, hex_scaled_jacobian(p));
+    EXPECT_DOUBLE_EQ(m.scaled_jacobian, reference_scaled_jacobian(p));
     EXPECT_EQ(m.edges.min, e.min);
     EXPECT_EQ(m.edges.max, e.max);
     EXPECT_EQ(m.edges.mean, e.mean);
