@@ -290,7 +290,7 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   if (stopped)
     return refuse_bad_input(common, report, times, bad_input, worst, options.threshold);
   for (auto& kv : cli::provenance(app)) out.metadata.push_back(kv);
-  io::write_mesh(out, common.output);
+  io::write_mesh(out, common.output, common.write_options());
   times.emplace_back("write", clock.seconds());
   report["threshold_met"] = below == 0;
   report["exit_code"] = below == 0 ? cli::ok : cli::target_missed;
@@ -405,5 +405,6 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   cli::add_input_options(app, args.in);
   cli::add_common_options(app, common);
+  cli::add_write_options(app, common);
   return cli::run(app, argc, argv, common, [&] { return run_adapt(app, args, common); });
 }

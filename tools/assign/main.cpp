@@ -25,6 +25,7 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("input", o.input, "Grid with volume fractions (.vtu .vtk .vti .vtr .vts .txt)")
       ->required();
   cli::add_common_options(app, o.common);
+  cli::add_write_options(app, o.common);
   cli::add_input_options(app, o.in);
   app.add_option("--keep", o.correction.keep, "Manifold configurations stored per node")
       ->check(CLI::PositiveNumber)
@@ -141,7 +142,7 @@ int run_assign(const CLI::App& app, Options& o) {
   const std::string out = r.correction.solved ? o.common.output : o.partial;
   if (!out.empty())
     io::write_mesh(output_data(std::move(data), fractions, r.majority, r.correction.labels, app),
-                   out);
+                   out, o.common.write_options());
   times.emplace_back("write", t.seconds());
 
   cli::Json report = cli::report_header(app);

@@ -39,6 +39,24 @@ void add_common_options(CLI::App& app, CommonOptions& options, bool with_output)
                  "default: the machine's memory, or ulimit -v when lower); exit 5");
 }
 
+void add_write_options(CLI::App& app, CommonOptions& options) {
+  app.add_option("--exodus-sets", options.exodus_sets,
+                 "Side and node sets of Exodus II outputs (.exo .e .g): the domain sides "
+                 "(xmin, xmax, ...), the material interfaces, both, or none")
+      ->check(CLI::IsMember({"none", "boundary", "interfaces", "all"}))
+      ->capture_default_str();
+  app.add_flag("--no-string-fields", options.no_string_fields,
+               "Leave the material names out of .vtu/.vts field data (a String array, which "
+               "ParaView shows but meshio 5 cannot read)");
+}
+
+io::WriteOptions CommonOptions::write_options() const {
+  io::WriteOptions w;
+  w.exodus_sets = io::parse_exodus_sets(exodus_sets);
+  w.material_names_field = !no_string_fields;
+  return w;
+}
+
 void add_input_options(CLI::App& app, InputOptions& options) {
   FractionOptions& f = options.fractions;
   app.add_option("--fractions", f.arrays,
@@ -59,6 +77,11 @@ void add_input_options(CLI::App& app, InputOptions& options) {
   app.add_option("--plane", options.plane, "Plane of 2D data: auto, xy, yz, xz")
       ->check(CLI::IsMember({"auto", "xy", "yz", "xz"}))
       ->capture_default_str();
+  auto* step = app.add_option("--step", options.step,
+                              "Time step to read from a time series (0-based; default: the last)");
+  auto* time = app.add_option("--time", options.time,
+                              "Time value to read from a time series (instead of --step)");
+  step->excludes(time);
 }
 
 io::ReadOptions InputOptions::read_options() const {
@@ -67,6 +90,8 @@ io::ReadOptions InputOptions::read_options() const {
             : plane == "yz" ? io::Plane::yz
             : plane == "xz" ? io::Plane::xz
                             : io::Plane::automatic;
+  r.step = step;
+  r.time = time;
   return r;
 }
 

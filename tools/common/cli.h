@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -39,18 +40,28 @@ struct CommonOptions {
   int verbose = 0;          ///< -v (repeatable)
   int threads = 0;          ///< --threads, 0 = all cores
   std::string max_memory;   ///< --max-memory, empty = the machine's memory
+  std::string exodus_sets = "all";  ///< --exodus-sets: none, boundary, interfaces, all
+  bool no_string_fields = false;    ///< --no-string-fields
   /// --max-memory in bytes.
   double memory_limit() const { return parse_memory_size(max_memory); }
+  /// How the mesh files of the run are written (--exodus-sets, --no-string-fields).
+  io::WriteOptions write_options() const;
 };
 
 /// Adds -o (when `with_output`), --json, -q, -v, --threads and --max-memory to `app`.
 void add_common_options(CLI::App& app, CommonOptions& options, bool with_output = true);
 
+/// Adds the flags of tools that write mesh files: --exodus-sets, --no-string-fields.
+void add_write_options(CLI::App& app, CommonOptions& options);
+
 /// How a stage reads its input grid and fractions, with the same flags and meaning in every
-/// tool: --fractions, --void, --value-tolerance, --sum-tolerance, --zero-below, --plane.
+/// tool: --fractions, --void, --value-tolerance, --sum-tolerance, --zero-below, --plane,
+/// --step, --time.
 struct InputOptions {
   FractionOptions fractions;
   std::string plane = "auto";  ///< auto, xy, yz or xz
+  std::optional<std::size_t> step;  ///< --step: 0-based time step of a time series
+  std::optional<double> time;       ///< --time: time value of a time series
   io::ReadOptions read_options() const;
 };
 

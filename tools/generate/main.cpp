@@ -79,6 +79,7 @@ int main(int argc, char** argv) {
   app.add_option("case", o.case_name, "Case name (see --list)");
   app.add_option("-o,--output", common.output, "Output mesh file (.vtu or .vtk)");
   hx::cli::add_common_options(app, common, false);
+  hx::cli::add_write_options(app, common);
   app.add_flag("--list", list, "List the cases, one a line, and exit");
   app.add_option("--dims", o.dims, "Cells per axis: nx,ny (2D) or nx,ny,nz (3D)")->delimiter(',');
   app.add_option("--bounds", bounds, "Domain: xmin,ymin,xmax,ymax or xmin,ymin,zmin,xmax,ymax,zmax")
@@ -116,7 +117,7 @@ int main(int argc, char** argv) {
     // after the case keys: a legacy .vtk title line keeps only the first 256 characters
     for (auto& kv : hx::cli::provenance(app)) r.data.metadata.push_back(std::move(kv));
     hx::Timer t;
-    hx::io::write_mesh(r.data, common.output);
+    hx::io::write_mesh(r.data, common.output, common.write_options());
     r.times.emplace_back("write", t.seconds());
     hx::log_info(o.case_name + ": " + std::to_string(r.data.n_cells()) + " cells, " +
                  std::to_string(r.mixed_cells) + " mixed, written to " + common.output);

@@ -118,7 +118,8 @@ void print_summary(const std::string& file, const QualityReport& r) {
                 p.mixed_cells);
 }
 
-void write_quality_field(const CLI::App& app, const io::MeshData& data, const std::string& path) {
+void write_quality_field(const CLI::App& app, const io::MeshData& data, const std::string& path,
+                         const io::WriteOptions& options) {
   const CellQualities q = cell_qualities(data);
   io::MeshData out = data;
   for (auto [name, values] :
@@ -129,7 +130,7 @@ void write_quality_field(const CLI::App& app, const io::MeshData& data, const st
     out.set_cell_array(std::move(a));
   }
   for (const auto& kv : cli::provenance(app)) out.metadata.push_back(kv);
-  io::write_mesh(out, path);
+  io::write_mesh(out, path, options);
 }
 
 struct DiscrepancyRun {
@@ -176,13 +177,14 @@ DiscrepancyRun measure_discrepancy(const Args& a, const io::MeshData& mesh, cons
   return run;
 }
 
-void write_discrepancy_field(const CLI::App& app, DiscrepancyRun& run, const std::string& path) {
+void write_discrepancy_field(const CLI::App& app, DiscrepancyRun& run, const std::string& path,
+                             const io::WriteOptions& options) {
   io::DataArray d;
   d.name = "discrepancy";
   d.values = run.report.per_cell;
   run.reference.set_cell_array(std::move(d));
   for (const auto& kv : cli::provenance(app)) run.reference.metadata.push_back(kv);
-  io::write_mesh(run.reference, path);
+  io::write_mesh(run.reference, path, options);
 }
 
 void print_discrepancy(const DiscrepancyReport& d) {
@@ -261,12 +263,12 @@ int measure(const CLI::App& app, const cli::CommonOptions& common, const Args& a
   times.emplace_back("size", timer.seconds());
   if (!a.discrepancy_field.empty())
     cli::timed_phase(times, bar, "write_discrepancy", [&] {
-      write_discrepancy_field(app, disc, a.discrepancy_field);
+      write_discrepancy_field(app, disc, a.discrepancy_field, common.write_options());
       return 0;
     });
   if (!a.quality_field.empty())
     cli::timed_phase(times, bar, "write_quality", [&] {
-      write_quality_field(app, data, a.quality_field);
+      write_quality_field(app, data, a.quality_field, common.write_options());
       return 0;
     });
   const bool passed =
@@ -318,5 +320,6 @@ int main(int argc, char** argv) {
   Args args;
   add_options(app, args);
   cli::add_common_options(app, common, /*with_output=*/false);
+  cli::add_write_options(app, common);
   return cli::run(app, argc, argv, common, [&] { return measure(app, common, args); });
 }

@@ -117,7 +117,7 @@ int run(const M& mesh, const Fractions& f, const std::vector<int>& assignment,
     for (const auto& n : f.names()) s += (s.empty() ? "" : ",") + n;
     return s;
   }());
-  io::write_mesh(out, common.output);
+  io::write_mesh(out, common.output, common.write_options());
   std::vector<std::string> files{common.output};
   if (!o.model.empty()) {
     const std::string stem = model_stem(o.model);
@@ -176,6 +176,7 @@ int main(int argc, char** argv) {
   app.add_option("input", o.input, "Assigned grid (vf_ arrays and a `material` cell array)")
       ->required();
   cli::add_common_options(app, common);
+  cli::add_write_options(app, common);
   app.add_option("--model", o.model, "Write the geometric model: OUT.vtk, and in 3D OUT.<a>-<b>.om");
   app.add_option("--model-format", o.model_format, "OpenMesh format of the 3D surfaces")
       ->check(CLI::IsMember({"om", "obj"}))

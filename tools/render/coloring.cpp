@@ -19,7 +19,9 @@ std::vector<std::string> split_commas(const std::string& s) {
   std::vector<std::string> out;
   std::stringstream in(s);
   std::string item;
-  while (std::getline(in, item, ',')) out.push_back(item);
+  // A String field-data array is read as one line per string; the metadata entry uses commas.
+  const char separator = s.find('\n') != std::string::npos ? '\n' : ',';
+  while (std::getline(in, item, separator)) out.push_back(item);
   return out;
 }
 

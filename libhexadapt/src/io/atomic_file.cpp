@@ -87,10 +87,12 @@ AtomicFile::~AtomicFile() {
 }
 
 void AtomicFile::finish() {
-  out_.flush();
-  const bool ok = static_cast<bool>(out_);
-  out_.close();
-  if (!ok || out_.fail()) throw IoError(path_ + ": write failed (disk full?)");
+  if (out_.is_open()) {  // closed when a library wrote file_name() itself
+    out_.flush();
+    const bool ok = static_cast<bool>(out_);
+    out_.close();
+    if (!ok || out_.fail()) throw IoError(path_ + ": write failed (disk full?)");
+  }
   if (temp_.empty()) return;
   if (mode_ >= 0 && ::chmod(temp_.c_str(), static_cast<mode_t>(mode_)) != 0)
     throw IoError(path_ + ": cannot keep the file mode: " + std::strerror(errno));

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "hexadapt/core/error.h"
+#include "hexadapt/io/exodus.h"
 #include "hexadapt/io/text_case.h"
 #include "hexadapt/io/vtk_legacy.h"
 #include "hexadapt/io/vtk_xml.h"
@@ -55,14 +56,26 @@ std::string read_whole_file(const std::string& path) {
   return content;
 }
 
+bool is_exodus(const std::string& ext) { return ext == ".exo" || ext == ".e" || ext == ".g"; }
+
 }  // namespace
+
+ExodusSets parse_exodus_sets(const std::string& text) {
+  if (text == "none") return ExodusSets::none;
+  if (text == "boundary") return ExodusSets::boundary;
+  if (text == "interfaces") return ExodusSets::interfaces;
+  if (text == "all") return ExodusSets::all;
+  throw OptionError("unknown Exodus set choice " + quote_token(text) +
+                    " (none, boundary, interfaces or all)");
+}
 
 MeshData read_mesh(const std::string& path, const ReadOptions& options) {
   const std::string ext = extension_of(path);
+  if (is_exodus(ext)) return read_exodus(path, options);
   const bool xml = ext == ".vtu" || ext == ".vti" || ext == ".vtr" || ext == ".vts";
   if (ext != ".vtk" && ext != ".txt" && !xml)
     throw OptionError(path + ": unknown mesh file extension " + quote_token(ext) +
-                      " (supported for reading: .vtk .vtu .vti .vtr .vts .txt)");
+                      " (supported for reading: .vtk .vtu .vti .vtr .vts .txt .exo .e .g)");
   const std::string content = read_whole_file(path);
   if (ext == ".vtk") return read_vtk_legacy(content, path, options);
   if (ext == ".txt") return read_text_case(content, path);
@@ -74,8 +87,9 @@ void write_mesh(const MeshData& data, const std::string& path, const WriteOption
   if (ext == ".vtu") return write_vtu(data, path, options);
   if (ext == ".vts") return write_vts(data, path, options);
   if (ext == ".vtk") return write_vtk_legacy(data, path);
+  if (is_exodus(ext)) return write_exodus(data, path, options);
   throw OptionError(path + ": unknown mesh file extension " + quote_token(ext) +
-                    " (supported for writing: .vtu .vts .vtk)");
+                    " (supported for writing: .vtu .vts .vtk .exo .e .g)");
 }
 
 }  // namespace hexadapt::io

@@ -8,6 +8,7 @@
 #include "hexadapt/io/atomic_file.h"
 #include "hexadapt/io/vtk_xml.h"
 #include "hexadapt/mesh/structured.h"
+#include "material_names.h"
 #include "vtk_xml_comment.h"
 #include "vtk_xml_encode.h"
 #include "vtk_xml_scalar.h"
@@ -103,11 +104,31 @@ class XmlFile {
     }
   }
 
-  // Metadata as one comment before <VTKFile>: meshio 5 rejects String field data.
+  // Metadata as one comment before <VTKFile>: meshio 5 rejects String field data (only the
+  // material names are such an array, and they can be left out).
   void add_metadata(const MeshData& d) {
     if (d.metadata.empty()) return;
     doc_.insert_child_before(pugi::node_comment, root_)
         .set_value(detail::metadata_comment(d.metadata).c_str());
+  }
+
+  // The material names as a String field-data array, the form ParaView shows (Information
+  // panel, spreadsheet view): ascii character codes, each string ended by a 0.
+  void add_material_names(const MeshData& d, const WriteOptions& options) {
+    const std::vector<std::string> names = detail::material_names(d);
+    if (!options.material_names_field || names.empty()) return;
+    std::string codes;
+    for (const std::string& name : names) {
+      for (char c : name) codes += std::to_string(static_cast<unsigned char>(c)) + " ";
+      codes += "0 ";
+    }
+    codes.pop_back();
+    pugi::xml_node a = dataset_.prepend_child("FieldData").append_child("DataArray");
+    a.append_attribute("type") = "String";
+    a.append_attribute("Name") = "material_names";
+    a.append_attribute("NumberOfTuples") = static_cast<unsigned long long>(names.size());
+    a.append_attribute("format") = "ascii";
+    a.append_child(pugi::node_pcdata).set_value(codes.c_str());
   }
 
   void write(const std::string& path) {
@@ -206,6 +227,7 @@ void write_vtu(const MeshData& data, const std::string& path, const WriteOptions
   check_writable(data, path);
   XmlFile f("UnstructuredGrid", options, largest_array(data));
   f.add_metadata(data);
+  f.add_material_names(data, options);
   pugi::xml_node piece = f.dataset().append_child("Piece");
   piece.append_attribute("NumberOfPoints") = static_cast<unsigned long long>(data.points.size());
   piece.append_attribute("NumberOfCells") = static_cast<long long>(data.n_cells());
@@ -228,6 +250,7 @@ void write_vts(const MeshData& data, const std::string& path, const WriteOptions
   XmlFile f("StructuredGrid", options, largest_array(data));
   f.dataset().append_attribute("WholeExtent") = extent.c_str();
   f.add_metadata(data);
+  f.add_material_names(data, options);
   pugi::xml_node piece = f.dataset().append_child("Piece");
   piece.append_attribute("Extent") = extent.c_str();
   add_attributes(f, piece, data);

@@ -36,6 +36,9 @@ class AtomicFile {
   AtomicFile& operator=(const AtomicFile&) = delete;
 
   std::ofstream& stream() { return out_; }
+  /// The file the data goes to (the temporary file, or the target written directly), for a
+  /// library that opens files by name: close stream() first, write this file, then commit().
+  const std::string& file_name() const { return temp_.empty() ? path_ : temp_; }
   /// Flushes, fsyncs and closes the temporary file, then renames it to the target (or hands
   /// it to the open OutputBatch). Throws IoError.
   void commit();

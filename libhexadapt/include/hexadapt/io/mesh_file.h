@@ -3,11 +3,16 @@
 // Read: legacy .vtk (ASCII and binary; STRUCTURED_POINTS, RECTILINEAR_GRID, STRUCTURED_GRID,
 // UNSTRUCTURED_GRID), XML .vtu .vti .vtr .vts (ascii, base64, appended raw or base64, zlib,
 // UInt32/UInt64 headers), and the plain text formats of hand-made cases (.txt, DESIGN 7.1).
-// Write: .vtu (appended binary, zlib-compressed when large) and legacy .vtk (binary).
+// Exodus II .exo .e .g (hex or quad elements; element variables become cell arrays, a time
+// step is chosen by ReadOptions::step or ::time; see exodus.h).
+// Write: .vtu (appended binary, zlib-compressed when large), legacy .vtk (binary) and Exodus II
+// .exo .e .g (one element block per material, side and node sets; see exodus.h).
 // Writes are atomic: a temporary file in the target directory, then a rename, so a failed
 // write never leaves a half file and never clobbers an input.
 #pragma once
 
+#include <cstddef>
+#include <optional>
 #include <string>
 
 #include "hexadapt/io/mesh_data.h"
@@ -20,12 +25,25 @@ enum class Plane { automatic, xy, yz, xz };
 
 struct ReadOptions {
   Plane plane = Plane::automatic;  ///< which coordinate plane 2D cells live in
+  std::optional<std::size_t> step;  ///< 0-based time step to read (time series)
+  std::optional<double> time;  ///< time value to read
 };
+
+/// Which side sets and node sets an Exodus II file gets: the faces of the domain boundary
+/// (xmin, xmax, ymin, ...), the faces between two materials, both, or none.
+enum class ExodusSets { none, boundary, interfaces, all };
 
 struct WriteOptions {
   bool compress = true;              ///< zlib-compress .vtu data blocks
   std::size_t compress_above = 1 << 16;  ///< bytes: smaller arrays are written raw
+  ExodusSets exodus_sets = ExodusSets::all;  ///< side and node sets of .exo/.e/.g files
+  /// .vtu/.vts: the material names as a String field-data array `material_names` (ParaView
+  /// shows it; meshio 5 refuses String arrays and cannot read such a file).
+  bool material_names_field = true;
 };
+
+/// "none", "boundary", "interfaces" or "all"; throws OptionError otherwise.
+ExodusSets parse_exodus_sets(const std::string& text);
 
 /// Throws InputError (malformed content, with file and place), IoError (cannot open/read).
 MeshData read_mesh(const std::string& path, const ReadOptions& options = {});

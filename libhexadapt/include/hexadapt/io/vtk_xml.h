@@ -35,6 +35,13 @@ namespace hexadapt::io {
 //         valid UTF-8; ':' in keys.
 // Everything else, '&' and '>' included, is written as it is. The reader accepts the comment
 // before <VTKFile> or as a child of it.
+//
+// Material names. When the metadata names the materials (`materials` or
+// `hexadapt_materials`, comma-separated), they are also written as a String field-data array
+// `material_names`, one string per material index, so that ParaView shows them next to the
+// `material` index array. meshio 5 refuses String arrays (it cannot read such a file):
+// WriteOptions::material_names_field = false leaves the array out. The reader returns String
+// field-data arrays as metadata entries, one line per string.
 
 /// Parses a whole XML VTK file held in memory; `file` names it in error messages. The data
 /// set type is taken from the VTKFile element; a file must hold one Piece. Cells: quads,

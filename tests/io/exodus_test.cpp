@@ -1,0 +1,224 @@
+#include "hexadapt/io/exodus.h"
+
+#include <exodusII.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "hexadapt/core/error.h"
+#include "hexadapt/io/mesh_file.h"
+#include "hexadapt/mesh/structured.h"
+
+namespace hexadapt::io {
+namespace {
+
+std::string temp_path(const std::string& name) {
+  return (std::filesystem::temp_directory_path() / ("hexadapt_exodus_" + name)).string();
+}
+
+std::string bytes_of(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write_bytes(const std::string& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+
+std::vector<int> ids(const MeshData& d) {
+  std::vector<int> out;
+  for (NodeId n : d.cells) out.push_back(n.value());
+  return out;
+}
+
+// Two materials on a grid, the material index alternating by column, with fractions.
+MeshData two_materials(MeshData d, int nx) {
+  DataArray material{"material", 1, ScalarType::int32, {}};
+  DataArray vf_steel{"vf_steel", 1, ScalarType::float64, {}};
+  DataArray vf_air{"vf_air", 1, ScalarType::float64, {}};
+  for (index_t c = 0; c < d.n_cells(); ++c) {
+    const int m = (c % nx) < nx / 2 ? 0 : 1;
+    material.values.push_back(m);
+    vf_steel.values.push_back(m == 0 ? 0.75 : 0.125);
+    vf_air.values.push_back(m == 0 ? 0.25 : 0.875);
+  }
+  d.set_cell_array(material);
+  d.set_cell_array(vf_steel);
+  d.set_cell_array(vf_air);
+  DataArray target{"target", 3, ScalarType::float64, {}};
+  for (const Vec3& p : d.points)
+    for (int k = 0; k < 3; ++k) target.values.push_back(p[k] + 0.5);
+  d.set_point_array(target);
+  d.metadata = {{"hexadapt_tool", "hexadapt-test"}, {"materials", "steel,air"}};
+  return d;
+}
+
+void expect_round_trip(const MeshData& d, const MeshData& r) {
+  EXPECT_EQ(r.dim, d.dim);
+  EXPECT_EQ(r.points, d.points);
+  EXPECT_EQ(ids(r), ids(d));
+  for (const char* name : {"material", "vf_steel", "vf_air"}) {
+    ASSERT_NE(r.find_cell_array(name), nullptr) << name;
+    EXPECT_EQ(r.find_cell_array(name)->values, d.find_cell_array(name)->values) << name;
+  }
+  ASSERT_NE(r.find_point_array("target_y"), nullptr);
+  for (std::size_t v = 0; v < d.points.size(); ++v)
+    EXPECT_EQ(r.find_point_array("target_y")->values[v], d.points[v].y() + 0.5);
+  bool named = false;
+  for (const auto& [k, v] : r.metadata) named = named || (k == "materials" && v == "steel,air");
+  EXPECT_TRUE(named);
+}
+
+TEST(Exodus, QuadsRoundTripInCellOrder) {
+  const MeshData d = two_materials(from_mesh(make_quad_grid(4, 3)), 4);
+  const std::string path = temp_path("quads.exo");
+  write_mesh(d, path);
+  expect_round_trip(d, read_mesh(path));
+  std::filesystem::remove(path);
+}
+
+TEST(Exodus, HexesRoundTripInCellOrder) {
+  const MeshData d = two_materials(from_mesh(make_hex_grid(4, 2, 3)), 4);
+  for (const char* ext : {".e", ".g"}) {
+    const std::string path = temp_path(std::string("hexes") + ext);
+    write_mesh(d, path);
+    expect_round_trip(d, read_mesh(path));
+    std::filesystem::remove(path);
+  }
+}
+
+// A mesh without a `material` array is one block; read back, the block is the material.
+TEST(Exodus, WithoutMaterialsOneBlock) {
+  const MeshData d = from_mesh(make_quad_grid(2, 2));
+  const std::string path = temp_path("plain.exo");
+  write_mesh(d, path);
+  const MeshData r = read_mesh(path);
+  ASSERT_NE(r.find_cell_array("material"), nullptr);
+  EXPECT_EQ(r.find_cell_array("material")->values, std::vector<double>(4, 0.0));
+  std::filesystem::remove(path);
+}
+
+TEST(Exodus, SameMeshSameBytes) {
+  const MeshData d = two_materials(from_mesh(make_hex_grid(3, 3, 2)), 3);
+  const std::string a = temp_path("det_a.exo"), b = temp_path("det_b.exo");
+  write_mesh(d, a);
+  write_mesh(d, b);
+  EXPECT_EQ(bytes_of(a), bytes_of(b));
+  std::filesystem::remove(a);
+  std::filesystem::remove(b);
+}
+
+TEST(Exodus, SetsOptionChangesTheFile) {
+  const MeshData d = two_materials(from_mesh(make_quad_grid(4, 2)), 4);
+  WriteOptions none;
+  none.exodus_sets = ExodusSets::none;
+  const std::string a = temp_path("sets_none.exo"), b = temp_path("sets_all.exo");
+  write_mesh(d, a, none);
+  write_mesh(d, b);
+  EXPECT_LT(bytes_of(a).size(), bytes_of(b).size());
+  expect_round_trip(d, read_mesh(a));
+  std::filesystem::remove(a);
+  std::filesystem::remove(b);
+}
+
+TEST(Exodus, ParsesSetChoices) {
+  EXPECT_EQ(parse_exodus_sets("boundary"), ExodusSets::boundary);
+  EXPECT_EQ(parse_exodus_sets("interfaces"), ExodusSets::interfaces);
+  EXPECT_THROW(parse_exodus_sets("some"), OptionError);
+}
+
+TEST(Exodus, AFailedWriteLeavesTheOldFile) {
+  const std::string path = temp_path("keep.exo");
+  write_bytes(path, "old");
+  MeshData bad = from_mesh(make_quad_grid(2, 1));
+  bad.set_cell_array({"material", 1, ScalarType::int32, {0, -1}});
+  EXPECT_THROW(write_mesh(bad, path), OptionError);
+  EXPECT_EQ(bytes_of(path), "old");
+  EXPECT_THROW(write_mesh(bad, "/dev/null.exo"), Error);
+  std::filesystem::remove(path);
+}
+
+// A time series made with the Exodus API: fractions as element variables on 2 x 1 quads,
+// the form Sculpt reads, at times 0, 0.5 and 1.
+std::string time_series(const std::string& name) {
+  const std::string path = temp_path(name);
+  int cpu = 8, io = 8;
+  const int id = ex_create(path.c_str(), EX_CLOBBER, &cpu, &io);
+  EXPECT_GE(id, 0);
+  ex_put_init(id, "series", 2, 6, 2, 1, 0, 0);
+  ex_put_block(id, EX_ELEM_BLOCK, 7, "QUAD", 2, 4, 0, 0, 0);
+  const int conn[8] = {1, 2, 5, 4, 2, 3, 6, 5};
+  ex_put_conn(id, EX_ELEM_BLOCK, 7, conn, nullptr, nullptr);
+  const double x[6] = {0, 1, 2, 0, 1, 2}, y[6] = {0, 0, 0, 1, 1, 1};
+  ex_put_coord(id, x, y, nullptr);
+  ex_put_variable_param(id, EX_ELEM_BLOCK, 2);
+  char a[] = "copper", b[] = "water";
+  char* names[2] = {a, b};
+  ex_put_variable_names(id, EX_ELEM_BLOCK, 2, names);
+  for (int step = 1; step <= 3; ++step) {
+    const double t = 0.5 * (step - 1);
+    ex_put_time(id, step, &t);
+    const double copper[2] = {t, 1 - t}, water[2] = {1 - t, t};
+    ex_put_var(id, step, EX_ELEM_BLOCK, 1, 7, 2, copper);
+    ex_put_var(id, step, EX_ELEM_BLOCK, 2, 7, 2, water);
+  }
+  ex_close(id);
+  return path;
+}
+
+TEST(Exodus, ReadsTheChosenTimeStep) {
+  const std::string path = time_series("series.exo");
+  const MeshData last = read_mesh(path);
+  ASSERT_NE(last.find_cell_array("copper"), nullptr);
+  EXPECT_EQ(last.find_cell_array("copper")->values, (std::vector<double>{1, 0}));
+  ReadOptions o;
+  o.step = 1;
+  EXPECT_EQ(read_mesh(path, o).find_cell_array("water")->values, (std::vector<double>{0.5, 0.5}));
+  o.step.reset();
+  o.time = 0.0;
+  EXPECT_EQ(read_mesh(path, o).find_cell_array("copper")->values, (std::vector<double>{0, 1}));
+  const MeshData r = read_mesh(path, o);
+  EXPECT_EQ(r.find_cell_array("material")->values, (std::vector<double>{0, 0}));
+  bool named = false;
+  for (const auto& [k, v] : r.metadata) named = named || (k == "materials" && v == "block_7");
+  EXPECT_TRUE(named);
+  o.time = 0.7;
+  try {
+    read_mesh(path, o);
+    ADD_FAILURE() << "time 0.7 accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("0: 0, 1: 0.5, 2: 1"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+  }
+  o.time.reset();
+  o.step = 3;
+  EXPECT_THROW(read_mesh(path, o), InputError);
+  std::filesystem::remove(path);
+}
+
+TEST(Exodus, BadFilesAreInputErrors) {
+  const MeshData d = two_materials(from_mesh(make_hex_grid(3, 2, 2)), 3);
+  const std::string good = temp_path("good.exo");
+  write_mesh(d, good);
+  const std::string bytes = bytes_of(good);
+  const std::string bad = temp_path("bad.exo");
+  for (std::size_t keep : {std::size_t(0), std::size_t(3), std::size_t(40), bytes.size() / 4,
+                           bytes.size() / 2, bytes.size() - 8}) {
+    write_bytes(bad, bytes.substr(0, keep));
+    EXPECT_THROW(read_mesh(bad), InputError) << "kept " << keep << " bytes";
+  }
+  write_bytes(bad, "CDF\x01 this is not netCDF at all");
+  EXPECT_THROW(read_mesh(bad), InputError);
+  write_bytes(bad, "# vtk DataFile Version 4.2\n");
+  EXPECT_THROW(read_mesh(bad), InputError);
+  EXPECT_THROW(read_mesh(temp_path("missing.exo")), IoError);
+  std::filesystem::remove(good);
+  std::filesystem::remove(bad);
+}
+
+}  // namespace
+}  // namespace hexadapt::io
