@@ -25,6 +25,15 @@ const CLI::Validator finite_non_negative(
       return {};
     },
     "NUMBER>=0");
+
+const CLI::Validator finite_number(
+    [](std::string& text) -> std::string {
+      double v = 0;
+      if (!CLI::detail::lexical_cast(text, v) || !std::isfinite(v))
+        return "expected a finite number, got " + text;
+      return {};
+    },
+    "NUMBER");
 }  // namespace
 
 void add_common_options(CLI::App& app, CommonOptions& options, bool with_output) {
@@ -77,21 +86,26 @@ void add_input_options(CLI::App& app, InputOptions& options) {
   app.add_option("--plane", options.plane, "Plane of 2D data: auto, xy, yz, xz")
       ->check(CLI::IsMember({"auto", "xy", "yz", "xz"}))
       ->capture_default_str();
-  auto* step = app.add_option("--step", options.step,
-                              "Time step to read from a time series (0-based; default: the last)");
-  auto* time = app.add_option("--time", options.time,
-                              "Time value to read from a time series (instead of --step)");
-  step->excludes(time);
+  add_time_options(app, options.time);
+}
+
+void add_time_options(CLI::App& app, io::ReadOptions& options) {
+  auto* step = app.add_option_function<std::size_t>(
+      "--step", [&options](const std::size_t& k) { options.step = k; },
+      "Time step to read from a time series (.exo), counted from 0");
+  app.add_option_function<double>(
+         "--time", [&options](const double& t) { options.time = t; },
+         "Time value of the step to read from a time series (.exo)")
+      ->check(finite_number)
+      ->excludes(step);
 }
 
 io::ReadOptions InputOptions::read_options() const {
-  io::ReadOptions r;
+  io::ReadOptions r = time;
   r.plane = plane == "xy"   ? io::Plane::xy
             : plane == "yz" ? io::Plane::yz
             : plane == "xz" ? io::Plane::xz
                             : io::Plane::automatic;
-  r.step = step;
-  r.time = time;
   return r;
 }
 

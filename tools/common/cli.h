@@ -3,7 +3,6 @@
 #pragma once
 
 #include <functional>
-#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -60,12 +59,14 @@ void add_write_options(CLI::App& app, CommonOptions& options);
 struct InputOptions {
   FractionOptions fractions;
   std::string plane = "auto";  ///< auto, xy, yz or xz
-  std::optional<std::size_t> step;  ///< --step: 0-based time step of a time series
-  std::optional<double> time;       ///< --time: time value of a time series
+  io::ReadOptions time;        ///< --step and --time (its other fields are unused)
   io::ReadOptions read_options() const;
 };
 
 void add_input_options(CLI::App& app, InputOptions& options);
+
+/// --step and --time (the time step of a time series) into `options`.
+void add_time_options(CLI::App& app, io::ReadOptions& options);
 
 /// Parses the command line, applies -q/-v/--threads, runs `body` and maps exceptions to exit
 /// codes with a one-line message on stderr. `body` returns the exit code. The files `body`

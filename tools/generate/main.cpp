@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
   double time = 0;
   bool list = false;
   app.add_option("case", o.case_name, "Case name (see --list)");
-  app.add_option("-o,--output", common.output, "Output mesh file (.vtu or .vtk)");
+  app.add_option("-o,--output", common.output, "Output mesh file (.vtu, .vtk or .exo)");
   hx::cli::add_common_options(app, common, false);
   hx::cli::add_write_options(app, common);
   app.add_flag("--list", list, "List the cases, one a line, and exit");

@@ -14,7 +14,9 @@ namespace {
 
 // The library prints nothing and never aborts (its default may be verbose): errors come
 // back as status codes and the message is fetched with ex_get_err.
-void quiet() { ex_opts(0); }
+void quiet() {
+  ex_opts(0);
+}
 
 std::string last_message() {
   const char* msg = nullptr;

@@ -28,7 +28,8 @@ class ExodusFile {
   void close();
 
  private:
-  ExodusFile(int id, std::string path, bool reading) : id_(id), path_(std::move(path)), reading_(reading) {}
+  ExodusFile(int id, std::string path, bool reading)
+      : id_(id), path_(std::move(path)), reading_(reading) {}
   int id_ = -1;
   std::string path_;
   bool reading_ = true;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/exodus.h"
 #include "hexadapt/mesh/geometry.h"
+#include "netcdf_extent.h"
 #include "time_step.h"
 
 namespace hexadapt::io {
@@ -47,16 +49,32 @@ void check_size(const ExodusFile& f, const std::string& what, long long count, l
                          " entries, more than the file's size can hold (truncated file?)");
 }
 
+// The netCDF library reads a truncated file's missing data as zeros: compare the size its
+// header declares with the file's own.
+void check_not_truncated(const std::string& path) {
+  const long long size = file_bytes(path);
+  std::ifstream in(path, std::ios::binary);
+  std::string head(static_cast<std::size_t>(std::min<long long>(size, 16 << 20)), '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  const std::optional<std::uint64_t> end = detail::netcdf_data_end(head);
+  if (end && *end > static_cast<std::uint64_t>(size))
+    throw InputError(path, "",
+                     "truncated: the netCDF header declares " + std::to_string(*end) +
+                         " bytes of data, the file has " + std::to_string(size));
+}
+
 Header read_header(const ExodusFile& f) {
   char title[MAX_LINE_LENGTH + 1] = {};
   Header h;
   int n_node_sets = 0, n_side_sets = 0;
-  f.check(ex_get_init(f.id(), title, &h.dim, &h.n_nodes, &h.n_elements, &h.n_blocks,
-                      &n_node_sets, &n_side_sets),
+  f.check(ex_get_init(f.id(), title, &h.dim, &h.n_nodes, &h.n_elements, &h.n_blocks, &n_node_sets,
+                      &n_side_sets),
           "header");
   if (h.dim != 2 && h.dim != 3)
-    throw InputError(f.path(), "header",
-                     "num_dim is " + std::to_string(h.dim) + ": only 2 (quads) or 3 (hexes) is read");
+    throw InputError(
+        f.path(), "header",
+        "num_dim is " + std::to_string(h.dim) + ": only 2 (quads) or 3 (hexes) is read");
   if (h.n_elements <= 0 || h.n_blocks <= 0 || h.n_nodes <= 0)
     throw InputError(f.path(), "header", "no elements: nothing to read");
   check_size(f, "nodes", h.n_nodes, h.dim);
@@ -88,13 +106,14 @@ std::vector<Block> read_blocks(const ExodusFile& f, const Header& h) {
                          &attributes),
             where);
     const std::string t = upper(type);
-    const bool ok = h.dim == 3 ? t.rfind("HEX", 0) == 0 && per_element == 8
-                               : (t.rfind("QUAD", 0) == 0 || t.rfind("SHELL", 0) == 0) &&
-                                     per_element == 4;
+    const bool ok = h.dim == 3
+                        ? t.rfind("HEX", 0) == 0 && per_element == 8
+                        : (t.rfind("QUAD", 0) == 0 || t.rfind("SHELL", 0) == 0) && per_element == 4;
     if (count > 0 && !ok)
       throw InputError(f.path(), where,
                        "elements of type " + quote_token(type) + " with " +
-                           std::to_string(per_element) + " nodes: only HEX8 (num_dim 3) and "
+                           std::to_string(per_element) +
+                           " nodes: only HEX8 (num_dim 3) and "
                            "QUAD4 (num_dim 2) elements are read");
     if (count < 0) throw InputError(f.path(), where, "negative element count");
     total += count;
@@ -120,7 +139,8 @@ void read_cells(const ExodusFile& f, const Header& h, const std::vector<Block>& 
     f.check(ex_get_conn(f.id(), EX_ELEM_BLOCK, b.id, conn.data(), nullptr, nullptr), where);
     for (std::size_t e = 0; e < static_cast<std::size_t>(b.count); ++e)
       for (std::size_t k = 0; k < npc; ++k) {
-        const std::size_t from = d.dim == 3 ? static_cast<std::size_t>(ref_hex::vtk_of_binary[k]) : k;
+        const std::size_t from =
+            d.dim == 3 ? static_cast<std::size_t>(ref_hex::vtk_of_binary[k]) : k;
         const int node = conn[e * npc + from];
         if (node < 1 || node > h.n_nodes)
           throw InputError(f.path(), where,
@@ -137,7 +157,8 @@ void read_points(const ExodusFile& f, const Header& h, MeshData& d) {
   f.check(ex_get_coord(f.id(), xyz[0].data(), xyz[1].data(), h.dim == 3 ? xyz[2].data() : nullptr),
           "coordinates");
   d.points.resize(static_cast<std::size_t>(h.n_nodes));
-  for (std::size_t v = 0; v < d.points.size(); ++v) d.points[v] = Vec3(xyz[0][v], xyz[1][v], xyz[2][v]);
+  for (std::size_t v = 0; v < d.points.size(); ++v)
+    d.points[v] = Vec3(xyz[0][v], xyz[1][v], xyz[2][v]);
 }
 
 std::vector<std::string> variable_names(const ExodusFile& f, ex_entity_type type, int n) {
@@ -151,7 +172,8 @@ std::vector<std::string> variable_names(const ExodusFile& f, ex_entity_type type
     std::string name = buffers[static_cast<std::size_t>(k)].data();
     if (name.empty()) name = (type == EX_NODAL ? "nodal_" : "element_") + std::to_string(k + 1);
     for (const std::string& old : out)
-      if (old == name) throw InputError(f.path(), "variables", "two variables named " + quote_token(name));
+      if (old == name)
+        throw InputError(f.path(), "variables", "two variables named " + quote_token(name));
     out.push_back(name);
   }
   return out;
@@ -185,7 +207,8 @@ void read_element_variables(const ExodusFile& f, const std::vector<Block>& block
       if (count > 0 && table[b * static_cast<std::size_t>(n) + static_cast<std::size_t>(k)] != 0)
         f.check(ex_get_var(f.id(), step, EX_ELEM_BLOCK, k + 1, blocks[b].id,
                            static_cast<int64_t>(count), values.data()),
-                "element variable " + quote_token(a.name) + " on block " + std::to_string(blocks[b].id));
+                "element variable " + quote_token(a.name) + " on block " +
+                    std::to_string(blocks[b].id));
       a.values.insert(a.values.end(), values.begin(), values.end());
     }
     d.set_cell_array(std::move(a));
@@ -222,7 +245,8 @@ void block_materials(const std::vector<Block>& blocks, MeshData& d) {
   if (d.find_cell_array("material") == nullptr) {
     DataArray m{"material", 1, ScalarType::int32, {}};
     for (std::size_t b = 0; b < blocks.size(); ++b) {
-      m.values.insert(m.values.end(), static_cast<std::size_t>(blocks[b].count), static_cast<double>(b));
+      m.values.insert(m.values.end(), static_cast<std::size_t>(blocks[b].count),
+                      static_cast<double>(b));
       names.push_back(blocks[b].name);
     }
     d.set_cell_array(std::move(m));
@@ -247,14 +271,16 @@ void restore_cell_order(const ExodusFile& f, MeshData& d) {
   f.check(ex_get_id_map(f.id(), EX_ELEM_MAP, map.data()), "element id map");
   std::vector<char> seen(n, 0);
   for (int id : map) {
-    if (id < 1 || static_cast<std::size_t>(id) > n || seen[static_cast<std::size_t>(id - 1)]) return;
+    if (id < 1 || static_cast<std::size_t>(id) > n || seen[static_cast<std::size_t>(id - 1)])
+      return;
     seen[static_cast<std::size_t>(id - 1)] = 1;
   }
   const auto npc = static_cast<std::size_t>(d.nodes_per_cell());
   std::vector<NodeId> cells(d.cells.size(), NodeId(0));
   for (std::size_t e = 0; e < n; ++e)
-    std::copy_n(d.cells.begin() + static_cast<std::ptrdiff_t>(e * npc), npc,
-                cells.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(map[e] - 1) * npc));
+    std::copy_n(
+        d.cells.begin() + static_cast<std::ptrdiff_t>(e * npc), npc,
+        cells.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(map[e] - 1) * npc));
   d.cells = std::move(cells);
   for (DataArray& a : d.cell_data) {
     std::vector<double> values(a.values.size());
@@ -267,6 +293,7 @@ void restore_cell_order(const ExodusFile& f, MeshData& d) {
 
 MeshData read_exodus(const std::string& path, const ReadOptions& options) {
   const ExodusFile f = ExodusFile::open(path);
+  check_not_truncated(path);
   const Header h = read_header(f);
   MeshData d;
   d.dim = h.dim;

@@ -24,15 +24,20 @@ struct FaceRef {
   }
 };
 
-int n_faces(int dim) { return dim == 3 ? ref_hex::n_faces : ref_quad::n_faces; }
+int n_faces(int dim) {
+  return dim == 3 ? ref_hex::n_faces : ref_quad::n_faces;
+}
 
 std::vector<index_t> face_nodes(const MeshData& d, index_t cell, int lf) {
-  const std::size_t base = static_cast<std::size_t>(cell) * static_cast<std::size_t>(d.nodes_per_cell());
+  const std::size_t base =
+      static_cast<std::size_t>(cell) * static_cast<std::size_t>(d.nodes_per_cell());
   std::vector<index_t> out;
   if (d.dim == 3) {
-    for (int k : ref_hex::face_nodes[static_cast<std::size_t>(lf)]) out.push_back(d.cells[base + static_cast<std::size_t>(k)].value());
+    for (int k : ref_hex::face_nodes[static_cast<std::size_t>(lf)])
+      out.push_back(d.cells[base + static_cast<std::size_t>(k)].value());
   } else {
-    for (int k : ref_quad::face_nodes[static_cast<std::size_t>(lf)]) out.push_back(d.cells[base + static_cast<std::size_t>(k)].value());
+    for (int k : ref_quad::face_nodes[static_cast<std::size_t>(lf)])
+      out.push_back(d.cells[base + static_cast<std::size_t>(k)].value());
   }
   return out;
 }

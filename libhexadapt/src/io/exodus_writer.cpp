@@ -24,12 +24,12 @@ namespace {
 using detail::ExodusFile;
 
 struct Blocks {
-  std::vector<int> material;          // per cell
-  std::vector<std::string> names;     // per material
-  std::vector<index_t> order;         // cells in element order (grouped by material)
-  std::vector<int> element_of_cell;   // 1-based element number of each cell
-  std::vector<int> used;              // materials with cells, increasing
-  std::vector<index_t> count;         // cells per material
+  std::vector<int> material;         // per cell
+  std::vector<std::string> names;    // per material
+  std::vector<index_t> order;        // cells in element order (grouped by material)
+  std::vector<int> element_of_cell;  // 1-based element number of each cell
+  std::vector<int> used;             // materials with cells, increasing
+  std::vector<index_t> count;        // cells per material
 };
 
 Blocks group_cells(const MeshData& d, const std::string& path) {
@@ -258,7 +258,7 @@ void write_variables(const ExodusFile& f, const MeshData& d, const Blocks& b) {
 }
 
 void check_writable(const MeshData& d, const std::string& path) {
-  if (d.dim != 2 && d.dim != 3)
+  if ((d.dim != 2 && d.dim != 3) || d.n_cells() == 0)
     throw OptionError(path + ": nothing to write: the data has no quad or hex cells");
   if (writes_directly(path))
     throw OptionError(path + ": an Exodus II file is written by seeking: give a regular file");
@@ -279,9 +279,8 @@ void check_writable(const MeshData& d, const std::string& path) {
 void write_exodus(const MeshData& data, const std::string& path, const WriteOptions& options) {
   check_writable(data, path);
   const Blocks blocks = group_cells(data, path);
-  const detail::MeshSets sets =
-      detail::mesh_sets(data, blocks.material, blocks.names, blocks.element_of_cell,
-                        options.exodus_sets);
+  const detail::MeshSets sets = detail::mesh_sets(data, blocks.material, blocks.names,
+                                                  blocks.element_of_cell, options.exodus_sets);
   AtomicFile out(path);
   out.stream().close();
   ExodusFile f = ExodusFile::create(out.file_name(), path);

@@ -13,7 +13,8 @@ std::vector<std::string> material_names(const MeshData& data) {
   std::size_t start = 0;
   while (true) {
     const std::size_t comma = joined->find(',', start);
-    out.push_back(joined->substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    out.push_back(
+        joined->substr(start, comma == std::string::npos ? std::string::npos : comma - start));
     if (comma == std::string::npos) return out;
     start = comma + 1;
   }

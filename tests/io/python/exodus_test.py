@@ -161,7 +161,7 @@ def pipeline(tools, work, case, dims, dim):
     run([tool("generate"), case, "--dims", dims, "-q", "-o", p + ".vf.exo"])
     run([tool("assign"), p + ".vf.exo", "-q", "-o", p + ".assign2.vtu"])
     r = run([tool("assign"), p + ".vf.exo", "--step", "2", "-q", "-o", p + ".x.vtu"], ok=(2,))
-    assert "0: 0" in r.stderr, r.stderr
+    assert "1 step: 0: t = 0" in r.stderr, r.stderr
     for sets in ("none", "boundary", "interfaces"):
         run([tool("adapt"), p + ".assign.vtu", "-q", "-o", p + f".{sets}.exo",
              "--exodus-sets", sets], ok=(0, 3))

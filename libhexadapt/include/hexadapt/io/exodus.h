@@ -15,9 +15,9 @@
 // metadata, "key: value", cut into lines of 80 characters.
 //
 // Reading: QUAD4 (num_dim 2) or HEX8 (num_dim 3) element blocks; the cells in block order;
-// element variables at the chosen time step (ReadOptions::step or ::time; the last step by
-// default) become cell arrays, so fractions stored as element variables (as Sculpt reads
-// them) are found by --fractions or the vf_ convention. Without a `material` element
+// element variables at the chosen time step (ReadOptions::step or ::time, needed when the
+// file holds several steps) become cell arrays, so fractions stored as element variables (as Sculpt
+// reads them) are found by --fractions or the vf_ convention. Without a `material` element
 // variable, the block of each cell becomes the `material` cell array (block order) and the
 // block names the `materials` metadata entry.
 #pragma once

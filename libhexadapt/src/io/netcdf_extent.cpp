@@ -1,0 +1,150 @@
+// The classic netCDF header, as the format specification lays it out (big-endian):
+//   magic "CDF" version, numrecs, dim_list, gatt_list, var_list
+//   var = name, dimids, vatt_list, nc_type, vsize, begin
+// Only what locates the data is kept; every count is checked against the bytes left.
+#include "netcdf_extent.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace hexadapt::io::detail {
+
+namespace {
+
+constexpr std::uint32_t tag_dimension = 0x0A, tag_variable = 0x0B, tag_attribute = 0x0C;
+
+struct Header {
+  std::string_view bytes;
+  std::size_t at = 0;
+  int version = 1;  // 1, 2 (64-bit offsets) or 5 (64-bit sizes)
+  bool ok = true;
+
+  std::uint64_t word(std::size_t n) {
+    if (!ok || bytes.size() - at < n) {
+      ok = false;
+      return 0;
+    }
+    std::uint64_t v = 0;
+    for (std::size_t k = 0; k < n; ++k) v = (v << 8) | static_cast<unsigned char>(bytes[at + k]);
+    at += n;
+    return v;
+  }
+  std::uint64_t count() { return word(version == 5 ? 8 : 4); }
+  void skip(std::uint64_t n) {
+    if (!ok || bytes.size() - at < n) {
+      ok = false;
+      return;
+    }
+    at += static_cast<std::size_t>(n);
+  }
+  void skip_padded(std::uint64_t n) { skip(n + ((4 - n % 4) % 4)); }
+  void skip_name() { skip_padded(count()); }
+  // A list header: its tag (or ABSENT, 0) and its length.
+  std::uint64_t list(std::uint32_t tag) {
+    const std::uint64_t t = word(4);
+    const std::uint64_t n = count();
+    if (t != tag && !(t == 0 && n == 0)) ok = false;
+    if (n > bytes.size()) ok = false;  // each entry takes at least one byte
+    return ok ? n : 0;
+  }
+};
+
+std::uint64_t type_size(std::uint64_t type) {
+  switch (type) {
+    case 1:
+    case 2:
+    case 7:
+      return 1;  // byte, char, ubyte
+    case 3:
+    case 8:
+      return 2;  // short, ushort
+    case 4:
+    case 5:
+    case 9:
+      return 4;  // int, float, uint
+    case 6:
+    case 10:
+    case 11:
+      return 8;  // double, int64, uint64
+    default:
+      return 0;
+  }
+}
+
+void skip_attributes(Header& h) {
+  const std::uint64_t n = h.list(tag_attribute);
+  for (std::uint64_t k = 0; k < n && h.ok; ++k) {
+    h.skip_name();
+    const std::uint64_t size = type_size(h.word(4));
+    const std::uint64_t values = h.count();
+    if (size == 0 || values > h.bytes.size()) h.ok = false;
+    h.skip_padded(size * values);
+  }
+}
+
+}  // namespace
+
+std::optional<std::uint64_t> netcdf_data_end(std::string_view bytes) {
+  Header h{bytes};
+  if (bytes.size() < 4 || bytes.substr(0, 3) != "CDF") return std::nullopt;
+  h.version = static_cast<unsigned char>(bytes[3]);
+  if (h.version != 1 && h.version != 2 && h.version != 5) return std::nullopt;
+  h.at = 4;
+  const std::uint64_t numrecs = h.count();
+  std::vector<bool> unlimited;
+  const std::uint64_t n_dims = h.list(tag_dimension);
+  for (std::uint64_t k = 0; k < n_dims && h.ok; ++k) {
+    h.skip_name();
+    unlimited.push_back(h.count() == 0);
+  }
+  skip_attributes(h);
+  struct Var {
+    bool record;
+    std::uint64_t vsize, begin;
+  };
+  std::vector<Var> vars;
+  const std::uint64_t n_vars = h.list(tag_variable);
+  for (std::uint64_t k = 0; k < n_vars && h.ok; ++k) {
+    h.skip_name();
+    const std::uint64_t rank = h.count();
+    if (rank > bytes.size()) h.ok = false;
+    bool record = false;
+    for (std::uint64_t d = 0; d < rank && h.ok; ++d) {
+      const std::uint64_t id = h.count();
+      if (id >= unlimited.size()) h.ok = false;
+      if (h.ok && d == 0) record = unlimited[static_cast<std::size_t>(id)];
+    }
+    skip_attributes(h);
+    h.word(4);  // nc_type
+    const std::uint64_t vsize = h.count();
+    const std::uint64_t begin = h.word(h.version == 1 ? 4 : 8);
+    vars.push_back({record, vsize, begin});
+  }
+  if (!h.ok) return std::nullopt;
+  // numrecs of all ones: a file written in streaming mode, its record count unknown.
+  const bool streaming = numrecs == (h.version == 5 ? ~std::uint64_t(0) : 0xFFFFFFFFu);
+  std::uint64_t record_size = 0;
+  int n_record_vars = 0;
+  for (const Var& v : vars)
+    if (v.record) {
+      record_size += v.vsize;
+      ++n_record_vars;
+    }
+  std::uint64_t end = h.at;
+  const std::uint64_t limit = std::uint64_t(1) << 62;  // no real file; keeps the sums exact
+  for (const Var& v : vars) {
+    if (v.begin > limit || v.vsize > limit || record_size > limit) return std::nullopt;
+    std::uint64_t last = v.begin + v.vsize;
+    if (v.record) {
+      if (streaming || numrecs == 0) continue;
+      if (numrecs - 1 > limit / std::max<std::uint64_t>(record_size, 1)) return std::nullopt;
+      // A lone record variable's records are not padded to 4 bytes as its vsize is: count
+      // its full records only, a bound that holds either way.
+      last = v.begin + (numrecs - 1) * record_size + (n_record_vars == 1 ? 0 : v.vsize);
+    }
+    end = std::max(end, last);
+  }
+  return end;
+}
+
+}  // namespace hexadapt::io::detail
