@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "hexadapt/core/error.h"
@@ -224,6 +225,99 @@ TEST(Exodus, BadFilesAreInputErrors) {
   EXPECT_THROW(read_mesh(temp_path("missing.exo")), IoError);
   std::filesystem::remove(good);
   std::filesystem::remove(bad);
+}
+
+// Every cut of a valid file is refused (the netCDF library alone reads a cut tail as zeros).
+TEST(Exodus, EveryTruncationIsAnInputError) {
+  const MeshData d = two_materials(from_mesh(make_quad_grid(3, 2)), 3);
+  const std::string good = temp_path("cut_good.exo"), bad = temp_path("cut.exo");
+  write_mesh(d, good);
+  const std::string bytes = bytes_of(good);
+  for (std::size_t keep = 0; keep < bytes.size(); keep += 1 + bytes.size() / 97) {
+    write_bytes(bad, bytes.substr(0, keep));
+    EXPECT_THROW(read_mesh(bad), InputError) << "kept " << keep << " of " << bytes.size();
+  }
+  std::filesystem::remove(good);
+  std::filesystem::remove(bad);
+}
+
+// The netCDF header's dimension `name` set to `value` (classic format: big-endian length
+// after the padded name).
+std::string with_dimension(std::string bytes, const std::string& name, std::uint32_t value) {
+  std::string key(4, '\0');
+  for (int k = 0; k < 4; ++k)
+    key[static_cast<std::size_t>(k)] = static_cast<char>(name.size() >> (24 - 8 * k));
+  key += name + std::string((4 - name.size() % 4) % 4, '\0');
+  const std::size_t at = bytes.find(key);
+  EXPECT_NE(at, std::string::npos) << name;
+  for (int k = 0; k < 4; ++k)
+    bytes[at + key.size() + static_cast<std::size_t>(k)] = static_cast<char>(value >> (24 - 8 * k));
+  return bytes;
+}
+
+TEST(Exodus, LyingSizesAreInputErrors) {
+  const MeshData d = two_materials(from_mesh(make_hex_grid(2, 2, 1)), 2);
+  const std::string good = temp_path("lie_good.exo"), bad = temp_path("lie.exo");
+  write_mesh(d, good);
+  const std::string bytes = bytes_of(good);
+  for (const auto& [name, value] :
+       std::vector<std::pair<std::string, std::uint32_t>>{{"num_nodes", 0x7ffffff0u},
+                                                          {"num_elem", 1u << 30},
+                                                          {"num_el_in_blk1", 1u << 28},
+                                                          {"num_dim", 1},
+                                                          {"num_dim", 7},
+                                                          {"num_nod_per_el1", 27},
+                                                          {"num_elem", 1}}) {
+    write_bytes(bad, with_dimension(bytes, name, value));
+    EXPECT_THROW(read_mesh(bad), InputError) << name << " = " << value;
+  }
+  std::filesystem::remove(good);
+  std::filesystem::remove(bad);
+}
+
+// A file made with the Exodus API: one block of `type` elements with `conn`.
+std::string one_block(const std::string& name, int dim, const char* type, int per_element,
+                      const std::vector<int>& conn) {
+  const std::string path = temp_path(name);
+  int cpu = 8, io = 8;
+  const int id = ex_create(path.c_str(), EX_CLOBBER, &cpu, &io);
+  const int n_nodes = 8;
+  const int n_elements = static_cast<int>(conn.size()) / per_element;
+  ex_put_init(id, "one block", dim, n_nodes, n_elements, 1, 0, 0);
+  ex_put_block(id, EX_ELEM_BLOCK, 1, type, n_elements, per_element, 0, 0, 0);
+  ex_put_conn(id, EX_ELEM_BLOCK, 1, conn.data(), nullptr, nullptr);
+  const double x[8] = {0, 1, 0, 1, 0, 1, 0, 1}, y[8] = {0, 0, 1, 1, 0, 0, 1, 1},
+               z[8] = {0, 0, 0, 0, 1, 1, 1, 1};
+  ex_put_coord(id, x, y, dim == 3 ? z : nullptr);
+  ex_close(id);
+  return path;
+}
+
+TEST(Exodus, WrongElementsAndNodeIdsAreInputErrors) {
+  const auto message = [](const std::string& path) {
+    try {
+      read_mesh(path);
+    } catch (const InputError& e) {
+      std::filesystem::remove(path);
+      return std::string(e.what());
+    }
+    std::filesystem::remove(path);
+    return std::string("no error");
+  };
+  EXPECT_NE(message(one_block("tet.exo", 3, "TETRA", 4, {1, 2, 3, 5})).find("TETRA"),
+            std::string::npos);
+  EXPECT_NE(
+      message(one_block("hex_in_2d.exo", 2, "HEX8", 8, {1, 2, 4, 3, 5, 6, 8, 7})).find("only HEX8"),
+      std::string::npos);
+  EXPECT_NE(message(one_block("far.exo", 3, "HEX8", 8, {1, 2, 4, 3, 5, 6, 8, 99}))
+                .find("refers to node 99, outside 1..8"),
+            std::string::npos);
+  EXPECT_NE(message(one_block("zero.exo", 2, "QUAD4", 4, {1, 2, 4, 0})).find("refers to node 0"),
+            std::string::npos);
+  // A right HEX8 file reads.
+  const std::string ok = one_block("ok.exo", 3, "HEX8", 8, {1, 2, 4, 3, 5, 6, 8, 7});
+  EXPECT_EQ(read_mesh(ok).n_cells(), 1);
+  std::filesystem::remove(ok);
 }
 
 }  // namespace

@@ -181,6 +181,10 @@ def bad_inputs(tools, work):
         open(path, "wb").write(content)
         r = run([measure, path, "-q"], ok=(2,))
         assert name in r.stderr, r.stderr
+    # An output mesh as a fractions input: no vf_ element variables.
+    r = run([os.path.join(tools, "hexadapt-assign"), good, "-q", "-o",
+             os.path.join(work, "x.vtu")], ok=(2,))
+    assert "triple-point.exo" in r.stderr, r.stderr
 
 
 def main():
