@@ -95,6 +95,20 @@ TEST(Exodus, HexesRoundTripInCellOrder) {
 }
 
 // A mesh without a `material` array is one block; read back, the block is the material.
+TEST(Exodus, LongNamesAreKept) {
+  MeshData d = two_materials(from_mesh(make_quad_grid(2, 1)), 2);
+  const std::string name(60, 'n');
+  d.metadata = {{"materials", "short," + name}};
+  const std::string path = temp_path("long.exo");
+  write_mesh(d, path);
+  const MeshData r = read_mesh(path);
+  std::string names;
+  for (const auto& [k, v] : r.metadata)
+    if (k == "materials") names = v;
+  EXPECT_EQ(names, "short," + name);
+  std::filesystem::remove(path);
+}
+
 TEST(Exodus, WithoutMaterialsOneBlock) {
   const MeshData d = from_mesh(make_quad_grid(2, 2));
   const std::string path = temp_path("plain.exo");

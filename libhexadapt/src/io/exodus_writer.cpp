@@ -257,6 +257,18 @@ void write_variables(const ExodusFile& f, const MeshData& d, const Blocks& b) {
   }
 }
 
+// Names longer than the Exodus default of 32 characters are kept whole: the file's name
+// length is raised to the longest one (at most 255, netCDF's limit; longer ones are cut).
+int longest_name(const MeshData& d, const Blocks& b, const detail::MeshSets& sets) {
+  std::size_t n = 32;
+  for (int m : b.used) n = std::max(n, b.names[static_cast<std::size_t>(m)].size());
+  for (const auto& s : sets.side_sets) n = std::max(n, s.name.size());
+  for (const auto& s : sets.node_sets) n = std::max(n, s.name.size());
+  for (const auto* group : {&d.cell_data, &d.point_data})
+    for (const DataArray& a : *group) n = std::max(n, a.name.size() + 2);
+  return static_cast<int>(std::min<std::size_t>(n, 255));
+}
+
 void check_writable(const MeshData& d, const std::string& path) {
   if ((d.dim != 2 && d.dim != 3) || d.n_cells() == 0)
     throw OptionError(path + ": nothing to write: the data has no quad or hex cells");
@@ -284,6 +296,8 @@ void write_exodus(const MeshData& data, const std::string& path, const WriteOpti
   AtomicFile out(path);
   out.stream().close();
   ExodusFile f = ExodusFile::create(out.file_name(), path);
+  const int name_length = longest_name(data, blocks, sets);
+  if (name_length > 32) f.check(ex_set_max_name_length(f.id(), name_length), "name length");
   const std::string title = metadata_value(data, "hexadapt_tool", "hexadapt") + " mesh";
   f.check(ex_put_init(f.id(), title.c_str(), data.dim, data.n_points(), data.n_cells(),
                       static_cast<int64_t>(blocks.used.size()),

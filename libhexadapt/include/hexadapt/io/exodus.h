@@ -12,7 +12,8 @@
 // of touching materials a and b, side sets `a_b` (the faces of a's cells against b) and
 // `b_a`, and one node set `a_b` (a before b in the material order). QA record: tool and
 // version (date and time left empty: the same mesh gives the same bytes); info records: the
-// metadata, "key: value", cut into lines of 80 characters.
+// metadata, "key: value", cut into lines of 80 characters. Names longer than Exodus' default
+// of 32 characters raise the file's name length (up to 255).
 //
 // Reading: QUAD4 (num_dim 2) or HEX8 (num_dim 3) element blocks; the cells in block order;
 // element variables at the chosen time step (ReadOptions::step or ::time, needed when the
