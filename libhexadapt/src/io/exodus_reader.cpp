@@ -229,6 +229,36 @@ void read_nodal_variables(const ExodusFile& f, int step, MeshData& d) {
   }
 }
 
+// Three scalar variables P_x, P_y, P_z (or _X, _Y, _Z) in a row become the 3-component
+// array P, as the writer split it (and as ParaView's Exodus reader shows it).
+void group_vectors(std::vector<DataArray>& arrays) {
+  const auto suffix = [](const std::string& name, char axis) {
+    const std::size_t n = name.size();
+    return n > 2 && name[n - 2] == '_' &&
+           std::toupper(static_cast<unsigned char>(name[n - 1])) == axis;
+  };
+  std::vector<DataArray> out;
+  for (std::size_t k = 0; k < arrays.size(); ++k) {
+    const std::string& x = arrays[k].name;
+    const std::string base = x.substr(0, x.size() < 2 ? 0 : x.size() - 2);
+    if (k + 2 < arrays.size() && suffix(x, 'X') && suffix(arrays[k + 1].name, 'Y') &&
+        suffix(arrays[k + 2].name, 'Z') && arrays[k + 1].name.compare(0, base.size(), base) == 0 &&
+        arrays[k + 2].name.compare(0, base.size(), base) == 0 &&
+        arrays[k + 1].name.size() == x.size() && arrays[k + 2].name.size() == x.size()) {
+      DataArray v{base, 3, ScalarType::float64, {}};
+      const std::size_t n = arrays[k].values.size();
+      v.values.reserve(3 * n);
+      for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t c = 0; c < 3; ++c) v.values.push_back(arrays[k + c].values[i]);
+      out.push_back(std::move(v));
+      k += 2;
+    } else {
+      out.push_back(std::move(arrays[k]));
+    }
+  }
+  arrays = std::move(out);
+}
+
 std::vector<double> read_times(const ExodusFile& f) {
   const int64_t n = ex_inquire_int(f.id(), EX_INQ_TIME);
   if (n < 0) f.check(static_cast<int>(n), "time steps");
@@ -277,6 +307,7 @@ void restore_cell_order(const ExodusFile& f, MeshData& d) {
   }
   const auto npc = static_cast<std::size_t>(d.nodes_per_cell());
   std::vector<NodeId> cells(d.cells.size(), NodeId(0));
+  // Cell arrays are still scalars here: vectors are grouped after the reordering.
   for (std::size_t e = 0; e < n; ++e)
     std::copy_n(
         d.cells.begin() + static_cast<std::ptrdiff_t>(e * npc), npc,
@@ -308,6 +339,8 @@ MeshData read_exodus(const std::string& path, const ReadOptions& options) {
   }
   block_materials(blocks, d);
   restore_cell_order(f, d);
+  group_vectors(d.cell_data);
+  group_vectors(d.point_data);
   return d;
 }
 

@@ -154,7 +154,7 @@ def pipeline(tools, work, case, dims, dim):
              p + ext + ".measure.json"], ok=(0, 3))
         with open(p + ext + ".measure.json") as f:
             got[ext] = json.load(f)
-    for key in ("mesh", "quality", "mesh_check"):
+    for key in ("mesh", "quality", "mesh_check", "distances", "size"):
         assert got[".exo"][key] == got[".vtu"][key], (key, got[".exo"][key], got[".vtu"][key])
     assert got[".exo"]["discrepancy"]["total"] == got[".vtu"]["discrepancy"]["total"], case
     # The fractions as element variables: assign reads them from an .exo.

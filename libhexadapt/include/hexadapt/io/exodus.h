@@ -17,7 +17,8 @@
 //
 // Reading: QUAD4 (num_dim 2) or HEX8 (num_dim 3) element blocks; the cells in block order;
 // element variables at the chosen time step (ReadOptions::step or ::time, needed when the
-// file holds several steps) become cell arrays, so fractions stored as element variables (as Sculpt
+// file holds several steps) become cell arrays and nodal variables point arrays (P_x, P_y,
+// P_z in a row: the 3-component array P), so fractions stored as element variables (as Sculpt
 // reads them) are found by --fractions or the vf_ convention. Without a `material` element
 // variable, the block of each cell becomes the `material` cell array (block order) and the
 // block names the `materials` metadata entry.
