@@ -306,6 +306,34 @@ std::string one_block(const std::string& name, int dim, const char* type, int pe
   return path;
 }
 
+// A file of another tool: blocks 20 and 10 (in that order), one named, no `material`
+// variable and no element map: the blocks become the materials, in file order.
+TEST(Exodus, BlocksOfAnotherToolAreTheMaterials) {
+  const std::string path = temp_path("foreign.exo");
+  int cpu = 8, io = 8;
+  const int id = ex_create(path.c_str(), EX_CLOBBER, &cpu, &io);
+  ex_put_init(id, "foreign", 2, 6, 2, 2, 0, 0);
+  ex_put_block(id, EX_ELEM_BLOCK, 20, "QUAD4", 1, 4, 0, 0, 0);
+  ex_put_block(id, EX_ELEM_BLOCK, 10, "QUAD4", 1, 4, 0, 0, 0);
+  const int right[4] = {2, 3, 6, 5}, left[4] = {1, 2, 5, 4};
+  ex_put_conn(id, EX_ELEM_BLOCK, 20, right, nullptr, nullptr);
+  ex_put_conn(id, EX_ELEM_BLOCK, 10, left, nullptr, nullptr);
+  char steel[] = "steel", none[] = "";
+  char* names[2] = {steel, none};
+  ex_put_names(id, EX_ELEM_BLOCK, names);
+  const double x[6] = {0, 1, 2, 0, 1, 2}, y[6] = {0, 0, 0, 1, 1, 1};
+  ex_put_coord(id, x, y, nullptr);
+  ex_close(id);
+  const MeshData r = read_mesh(path);
+  EXPECT_EQ(ids(r), (std::vector<int>{1, 2, 5, 4, 0, 1, 4, 3}));
+  EXPECT_EQ(r.find_cell_array("material")->values, (std::vector<double>{0, 1}));
+  bool named = false;
+  for (const auto& [k, v] : r.metadata)
+    named = named || (k == "materials" && v == "steel,block_10");
+  EXPECT_TRUE(named);
+  std::filesystem::remove(path);
+}
+
 TEST(Exodus, WrongElementsAndNodeIdsAreInputErrors) {
   const auto message = [](const std::string& path) {
     try {
