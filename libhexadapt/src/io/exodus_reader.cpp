@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "exodus_file.h"
+#include "exodus_guard.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/exodus.h"
 #include "hexadapt/mesh/geometry.h"
@@ -49,19 +50,33 @@ void check_size(const ExodusFile& f, const std::string& what, long long count, l
                          " entries, more than the file's size can hold (truncated file?)");
 }
 
-// The netCDF library reads a truncated file's missing data as zeros: compare the size its
-// header declares with the file's own.
-void check_not_truncated(const std::string& path) {
+// Checked before the netCDF library opens the file (netcdf_extent.h says why): a classic
+// header must parse within the file and the data it declares must fit in it. The header is
+// looked for in the first 64 MB; a longer one is left to the library.
+void check_netcdf_header(const std::string& path) {
   const long long size = file_bytes(path);
   std::ifstream in(path, std::ios::binary);
-  std::string head(static_cast<std::size_t>(std::min<long long>(size, 16 << 20)), '\0');
+  std::string head(static_cast<std::size_t>(std::min<long long>(size, 64 << 20)), '\0');
   in.read(head.data(), static_cast<std::streamsize>(head.size()));
   head.resize(static_cast<std::size_t>(in.gcount()));
-  const std::optional<std::uint64_t> end = detail::netcdf_data_end(head);
-  if (end && *end > static_cast<std::uint64_t>(size))
+  const detail::NetcdfHeader h = detail::netcdf_header(head);
+  if (!h.classic) return;  // netCDF-4 (HDF5) or not netCDF: the library judges
+  if (!h.complete && static_cast<long long>(head.size()) == size)
+    throw InputError(path, "netCDF header",
+                     "malformed or cut short: a count or length runs past the end of the file");
+  if (h.complete && h.data_end > static_cast<std::uint64_t>(size))
     throw InputError(path, "",
-                     "truncated: the netCDF header declares " + std::to_string(*end) +
+                     "truncated: the netCDF header declares " + std::to_string(h.data_end) +
                          " bytes of data, the file has " + std::to_string(size));
+  // The Exodus library reads these into scalars and an 81-character title buffer.
+  for (const auto& [name, values] : h.global_attributes) {
+    const bool scalar = name == "version" || name == "api_version" ||
+                        name == "floating_point_word_size" || name == "file_size" ||
+                        name == "maximum_name_length" || name == "int64_status";
+    if ((scalar && values != 1) || (name == "title" && values > MAX_LINE_LENGTH))
+      throw InputError(path, "global attribute " + name,
+                       std::to_string(values) + " values, more than Exodus II allows");
+  }
 }
 
 Header read_header(const ExodusFile& f) {
@@ -90,7 +105,14 @@ std::string upper(std::string s) {
 
 std::vector<Block> read_blocks(const ExodusFile& f, const Header& h) {
   std::vector<int> ids(static_cast<std::size_t>(h.n_blocks));
+  detail::check_variable_size(f, "eb_prop1", ids.size());
   f.check(ex_get_ids(f.id(), EX_ELEM_BLOCK, ids.data()), "element block ids");
+  for (std::size_t k = 0; k < ids.size(); ++k)
+    for (std::size_t j = 0; j < k; ++j)
+      if (ids[j] == ids[k])
+        throw InputError(f.path(), "element blocks",
+                         "two blocks with id " + std::to_string(ids[k]));
+  detail::check_string_length(f, "eb_names", name_capacity + 1);
   std::vector<std::vector<char>> buffers(ids.size(), std::vector<char>(name_capacity + 1, '\0'));
   std::vector<char*> names;
   for (auto& b : buffers) names.push_back(b.data());
@@ -102,6 +124,8 @@ std::vector<Block> read_blocks(const ExodusFile& f, const Header& h) {
     char type[MAX_STR_LENGTH + 1] = {};
     int count = 0, per_element = 0, edges = 0, faces = 0, attributes = 0;
     const std::string where = "element block " + std::to_string(ids[k]);
+    detail::check_attribute_length(f, "connect" + std::to_string(k + 1), "elem_type",
+                                   MAX_STR_LENGTH);
     f.check(ex_get_block(f.id(), EX_ELEM_BLOCK, ids[k], type, &count, &per_element, &edges, &faces,
                          &attributes),
             where);
@@ -132,10 +156,12 @@ void read_cells(const ExodusFile& f, const Header& h, const std::vector<Block>& 
                 MeshData& d) {
   const auto npc = static_cast<std::size_t>(d.nodes_per_cell());
   d.cells.reserve(static_cast<std::size_t>(h.n_elements) * npc);
-  for (const Block& b : blocks) {
+  for (std::size_t position = 0; position < blocks.size(); ++position) {
+    const Block& b = blocks[position];
     if (b.count == 0) continue;
     const std::string where = "element block " + std::to_string(b.id);
     std::vector<int> conn(static_cast<std::size_t>(b.count) * npc);
+    detail::check_variable_size(f, "connect" + std::to_string(position + 1), conn.size());
     f.check(ex_get_conn(f.id(), EX_ELEM_BLOCK, b.id, conn.data(), nullptr, nullptr), where);
     for (std::size_t e = 0; e < static_cast<std::size_t>(b.count); ++e)
       for (std::size_t k = 0; k < npc; ++k) {
@@ -154,6 +180,10 @@ void read_cells(const ExodusFile& f, const Header& h, const std::vector<Block>& 
 void read_points(const ExodusFile& f, const Header& h, MeshData& d) {
   std::vector<double> xyz[3];
   for (int k = 0; k < 3; ++k) xyz[k].assign(static_cast<std::size_t>(h.n_nodes), 0.0);
+  const auto n = static_cast<std::size_t>(h.n_nodes);
+  detail::check_variable_size(f, "coord", static_cast<std::size_t>(h.dim) * n, false);
+  for (const char* axis : {"coordx", "coordy", "coordz"})
+    if (axis[5] != 'z' || h.dim == 3) detail::check_variable_size(f, axis, n, false);
   f.check(ex_get_coord(f.id(), xyz[0].data(), xyz[1].data(), h.dim == 3 ? xyz[2].data() : nullptr),
           "coordinates");
   d.points.resize(static_cast<std::size_t>(h.n_nodes));
@@ -166,6 +196,8 @@ std::vector<std::string> variable_names(const ExodusFile& f, ex_entity_type type
                                          std::vector<char>(name_capacity + 1, '\0'));
   std::vector<char*> pointers;
   for (auto& b : buffers) pointers.push_back(b.data());
+  detail::check_string_length(f, type == EX_NODAL ? "name_nod_var" : "name_elem_var",
+                              name_capacity + 1);
   if (n > 0) f.check(ex_get_variable_names(f.id(), type, n, pointers.data()), "variable names");
   std::vector<std::string> out;
   for (int k = 0; k < n; ++k) {
@@ -196,6 +228,7 @@ void read_element_variables(const ExodusFile& f, const std::vector<Block>& block
   const std::vector<std::string> names = variable_names(f, EX_ELEM_BLOCK, n);
   const auto nb = static_cast<std::size_t>(blocks.size());
   std::vector<int> table(nb * static_cast<std::size_t>(n), 1);
+  detail::check_variable_size(f, "elem_var_tab", table.size(), false);
   f.check(ex_get_truth_table(f.id(), EX_ELEM_BLOCK, static_cast<int>(nb), n, table.data()),
           "element variable truth table");
   for (int k = 0; k < n; ++k) {
@@ -264,6 +297,7 @@ std::vector<double> read_times(const ExodusFile& f) {
   if (n < 0) f.check(static_cast<int>(n), "time steps");
   check_size(f, "time steps", n, 1);
   std::vector<double> times(static_cast<std::size_t>(n));
+  detail::check_variable_size(f, "time_whole", times.size(), n > 0);
   if (n > 0) f.check(ex_get_all_times(f.id(), times.data()), "time values");
   return times;
 }
@@ -298,6 +332,7 @@ void block_materials(const std::vector<Block>& blocks, MeshData& d) {
 void restore_cell_order(const ExodusFile& f, MeshData& d) {
   const auto n = static_cast<std::size_t>(d.n_cells());
   std::vector<int> map(n);
+  detail::check_variable_size(f, "elem_num_map", n, false);
   f.check(ex_get_id_map(f.id(), EX_ELEM_MAP, map.data()), "element id map");
   std::vector<char> seen(n, 0);
   for (int id : map) {
@@ -323,8 +358,8 @@ void restore_cell_order(const ExodusFile& f, MeshData& d) {
 }  // namespace
 
 MeshData read_exodus(const std::string& path, const ReadOptions& options) {
+  if (file_bytes(path) > 0) check_netcdf_header(path);
   const ExodusFile f = ExodusFile::open(path);
-  check_not_truncated(path);
   const Header h = read_header(f);
   MeshData d;
   d.dim = h.dim;

@@ -71,24 +71,40 @@ std::uint64_t type_size(std::uint64_t type) {
   }
 }
 
-void skip_attributes(Header& h) {
+// The types of the format's version: CDF-5 adds the unsigned and 64-bit ones. Anything
+// else (a netCDF-4 string, type 12) gets a size of 0, on which the library divides by zero.
+std::uint64_t checked_type_size(Header& h) {
+  const std::uint64_t type = h.word(4);
+  const std::uint64_t size = type <= (h.version == 5 ? 11u : 6u) ? type_size(type) : 0;
+  if (size == 0) h.ok = false;
+  return size;
+}
+
+void skip_attributes(Header& h, std::vector<std::pair<std::string, std::uint64_t>>* out = nullptr) {
   const std::uint64_t n = h.list(tag_attribute);
   for (std::uint64_t k = 0; k < n && h.ok; ++k) {
+    const std::size_t name_at = h.at;
     h.skip_name();
-    const std::uint64_t size = type_size(h.word(4));
+    const std::string name(h.ok ? h.bytes.substr(name_at + (h.version == 5 ? 8 : 4),
+                                                 h.at - name_at - (h.version == 5 ? 8 : 4))
+                                : std::string_view());
+    const std::uint64_t size = checked_type_size(h);
     const std::uint64_t values = h.count();
     if (size == 0 || values > h.bytes.size()) h.ok = false;
+    if (out != nullptr && h.ok) out->emplace_back(name.c_str(), values);
     h.skip_padded(size * values);
   }
 }
 
 }  // namespace
 
-std::optional<std::uint64_t> netcdf_data_end(std::string_view bytes) {
+NetcdfHeader netcdf_header(std::string_view bytes) {
+  NetcdfHeader out;
   Header h{bytes};
-  if (bytes.size() < 4 || bytes.substr(0, 3) != "CDF") return std::nullopt;
+  if (bytes.size() < 4 || bytes.substr(0, 3) != "CDF") return out;
   h.version = static_cast<unsigned char>(bytes[3]);
-  if (h.version != 1 && h.version != 2 && h.version != 5) return std::nullopt;
+  if (h.version != 1 && h.version != 2 && h.version != 5) return out;
+  out.classic = true;
   h.at = 4;
   const std::uint64_t numrecs = h.count();
   std::vector<bool> unlimited;
@@ -97,7 +113,7 @@ std::optional<std::uint64_t> netcdf_data_end(std::string_view bytes) {
     h.skip_name();
     unlimited.push_back(h.count() == 0);
   }
-  skip_attributes(h);
+  skip_attributes(h, &out.global_attributes);
   struct Var {
     bool record;
     std::uint64_t vsize, begin;
@@ -112,15 +128,19 @@ std::optional<std::uint64_t> netcdf_data_end(std::string_view bytes) {
     for (std::uint64_t d = 0; d < rank && h.ok; ++d) {
       const std::uint64_t id = h.count();
       if (id >= unlimited.size()) h.ok = false;
-      if (h.ok && d == 0) record = unlimited[static_cast<std::size_t>(id)];
+      // The unlimited dimension may only come first: the library divides by a later one.
+      if (h.ok && unlimited[static_cast<std::size_t>(id)]) {
+        if (d > 0) h.ok = false;
+        record = true;
+      }
     }
     skip_attributes(h);
-    h.word(4);  // nc_type
+    checked_type_size(h);
     const std::uint64_t vsize = h.count();
     const std::uint64_t begin = h.word(h.version == 1 ? 4 : 8);
     vars.push_back({record, vsize, begin});
   }
-  if (!h.ok) return std::nullopt;
+  if (!h.ok) return out;
   // numrecs of all ones: a file written in streaming mode, its record count unknown.
   const bool streaming = numrecs == (h.version == 5 ? ~std::uint64_t(0) : 0xFFFFFFFFu);
   std::uint64_t record_size = 0;
@@ -133,18 +153,20 @@ std::optional<std::uint64_t> netcdf_data_end(std::string_view bytes) {
   std::uint64_t end = h.at;
   const std::uint64_t limit = std::uint64_t(1) << 62;  // no real file; keeps the sums exact
   for (const Var& v : vars) {
-    if (v.begin > limit || v.vsize > limit || record_size > limit) return std::nullopt;
+    if (v.begin > limit || v.vsize > limit || record_size > limit) return out;
     std::uint64_t last = v.begin + v.vsize;
     if (v.record) {
       if (streaming || numrecs == 0) continue;
-      if (numrecs - 1 > limit / std::max<std::uint64_t>(record_size, 1)) return std::nullopt;
+      if (numrecs - 1 > limit / std::max<std::uint64_t>(record_size, 1)) return out;
       // A lone record variable's records are not padded to 4 bytes as its vsize is: count
       // its full records only, a bound that holds either way.
       last = v.begin + (numrecs - 1) * record_size + (n_record_vars == 1 ? 0 : v.vsize);
     }
     end = std::max(end, last);
   }
-  return end;
+  out.complete = true;
+  out.data_end = end;
+  return out;
 }
 
 }  // namespace hexadapt::io::detail
