@@ -107,11 +107,11 @@ NetcdfHeader netcdf_header(std::string_view bytes) {
   out.classic = true;
   h.at = 4;
   const std::uint64_t numrecs = h.count();
-  std::vector<bool> unlimited;
+  std::vector<std::uint64_t> lengths;  // 0: the unlimited dimension
   const std::uint64_t n_dims = h.list(tag_dimension);
   for (std::uint64_t k = 0; k < n_dims && h.ok; ++k) {
     h.skip_name();
-    unlimited.push_back(h.count() == 0);
+    lengths.push_back(h.count());
   }
   skip_attributes(h, &out.global_attributes);
   struct Var {
@@ -125,20 +125,32 @@ NetcdfHeader netcdf_header(std::string_view bytes) {
     const std::uint64_t rank = h.count();
     if (rank > bytes.size()) h.ok = false;
     bool record = false;
+    // The library sizes a variable by its dimensions (the header's vsize is only a hint):
+    // so do we, refusing products past 2^62.
+    std::uint64_t values = 1;
+    const std::uint64_t limit = std::uint64_t(1) << 62;
     for (std::uint64_t d = 0; d < rank && h.ok; ++d) {
       const std::uint64_t id = h.count();
-      if (id >= unlimited.size()) h.ok = false;
+      if (id >= lengths.size()) h.ok = false;
+      if (!h.ok) break;
+      const std::uint64_t len = lengths[static_cast<std::size_t>(id)];
       // The unlimited dimension may only come first: the library divides by a later one.
-      if (h.ok && unlimited[static_cast<std::size_t>(id)]) {
+      if (len == 0) {
         if (d > 0) h.ok = false;
         record = true;
+      } else if (values > limit / len) {
+        h.ok = false;
+      } else {
+        values *= len;
       }
     }
     skip_attributes(h);
-    checked_type_size(h);
-    const std::uint64_t vsize = h.count();
+    const std::uint64_t size = checked_type_size(h);
+    h.count();  // vsize
     const std::uint64_t begin = h.word(h.version == 1 ? 4 : 8);
-    vars.push_back({record, vsize, begin});
+    if (h.ok && values > limit / 8) h.ok = false;
+    const std::uint64_t bytes_used = values * size;
+    vars.push_back({record, bytes_used + (4 - bytes_used % 4) % 4, begin});
   }
   if (!h.ok) return out;
   // numrecs of all ones: a file written in streaming mode, its record count unknown.
