@@ -83,15 +83,15 @@ std::uint64_t checked_type_size(Header& h) {
 void skip_attributes(Header& h, std::vector<std::pair<std::string, std::uint64_t>>* out = nullptr) {
   const std::uint64_t n = h.list(tag_attribute);
   for (std::uint64_t k = 0; k < n && h.ok; ++k) {
+    const std::uint64_t length = h.count();  // the name's bytes, without the padding
     const std::size_t name_at = h.at;
-    h.skip_name();
-    const std::string name(h.ok ? h.bytes.substr(name_at + (h.version == 5 ? 8 : 4),
-                                                 h.at - name_at - (h.version == 5 ? 8 : 4))
+    h.skip_padded(length);
+    const std::string name(h.ok ? h.bytes.substr(name_at, static_cast<std::size_t>(length))
                                 : std::string_view());
     const std::uint64_t size = checked_type_size(h);
     const std::uint64_t values = h.count();
     if (size == 0 || values > h.bytes.size()) h.ok = false;
-    if (out != nullptr && h.ok) out->emplace_back(name.c_str(), values);
+    if (out != nullptr && h.ok) out->emplace_back(name, values);
     h.skip_padded(size * values);
   }
 }
