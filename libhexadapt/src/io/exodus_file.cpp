@@ -38,12 +38,12 @@ std::string last_message() {
 int close_read_only(int id) {
   const int status = nc_close(id);
   ex_conv_exit(id);
-  for (ex_entity_type t : {EX_ELEM_BLOCK, EX_FACE_BLOCK, EX_EDGE_BLOCK, EX_NODE_SET, EX_EDGE_SET,
-                           EX_FACE_SET, EX_SIDE_SET, EX_ELEM_SET, EX_NODE_MAP, EX_EDGE_MAP,
-                           EX_FACE_MAP, EX_ELEM_MAP})
+  for (ex_entity_type t :
+       {EX_ELEM_BLOCK, EX_FACE_BLOCK, EX_EDGE_BLOCK, EX_NODE_SET, EX_EDGE_SET, EX_FACE_SET,
+        EX_SIDE_SET, EX_ELEM_SET, EX_NODE_MAP, EX_EDGE_MAP, EX_FACE_MAP, EX_ELEM_MAP})
     ex_rm_file_item(id, ex_get_counter_list(t));
-  for (obj_stats** s : {&exoII_ed, &exoII_fa, &exoII_eb, &exoII_ns, &exoII_es, &exoII_fs,
-                        &exoII_ss, &exoII_els, &exoII_nm, &exoII_edm, &exoII_fam, &exoII_em})
+  for (obj_stats** s : {&exoII_ed, &exoII_fa, &exoII_eb, &exoII_ns, &exoII_es, &exoII_fs, &exoII_ss,
+                        &exoII_els, &exoII_nm, &exoII_edm, &exoII_fam, &exoII_em})
     ex_rm_stat_ptr(id, s);
   return status == NC_NOERR ? 0 : -1;
 }
