@@ -23,9 +23,8 @@ std::map<std::string, std::string> split_files(std::string_view content, std::st
   while (at != std::string_view::npos) {
     const std::size_t name_at = at + separator.size();
     const std::size_t line_end = content.find('\n', name_at);
-    const std::string name(content.substr(name_at, line_end == std::string_view::npos
-                                                       ? std::string_view::npos
-                                                       : line_end - name_at));
+    const std::string name(content.substr(
+        name_at, line_end == std::string_view::npos ? std::string_view::npos : line_end - name_at));
     at = line_end == std::string_view::npos ? line_end : content.find(separator, line_end);
     if (line_end != std::string_view::npos)
       files.emplace(name, std::string(content.substr(line_end + 1, at == std::string_view::npos

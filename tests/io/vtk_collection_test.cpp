@@ -51,7 +51,8 @@ std::string quad_vtu(double x0, double a, const std::string& extra_cell_array = 
 }
 
 std::string pvtu(const std::vector<std::string>& sources) {
-  std::string s = R"(<VTKFile type="PUnstructuredGrid" version="1.0"><PUnstructuredGrid GhostLevel="0">
+  std::string s =
+      R"(<VTKFile type="PUnstructuredGrid" version="1.0"><PUnstructuredGrid GhostLevel="0">
 <PCellData><PDataArray type="Float64" Name="vf_a"/></PCellData>
 <PPoints><PDataArray type="Float64" NumberOfComponents="3"/></PPoints>)";
   for (const auto& src : sources) s += "<Piece Source=\"" + src + "\"/>";
@@ -255,9 +256,11 @@ std::string vtr(const std::string& extent, const std::string& x, const std::stri
 </Piece></RectilinearGrid></VTKFile>)";
 }
 
-std::string pvtr(const std::string& whole, const std::vector<std::pair<std::string, std::string>>& pieces) {
-  std::string s = R"(<VTKFile type="PRectilinearGrid" version="1.0"><PRectilinearGrid WholeExtent=")" +
-                  whole + R"(" GhostLevel="0">)";
+std::string pvtr(const std::string& whole,
+                 const std::vector<std::pair<std::string, std::string>>& pieces) {
+  std::string s =
+      R"(<VTKFile type="PRectilinearGrid" version="1.0"><PRectilinearGrid WholeExtent=")" + whole +
+      R"(" GhostLevel="0">)";
   for (const auto& [extent, src] : pieces)
     s += "<Piece Extent=\"" + extent + "\" Source=\"" + src + "\"/>";
   return s + "</PRectilinearGrid></VTKFile>";
@@ -265,9 +268,10 @@ std::string pvtr(const std::string& whole, const std::vector<std::pair<std::stri
 
 TEST(VtkCollection, StructuredPiecesBecomeTheOneGrid) {
   const MeshData single = read_vtk_xml(vtr("0 2 0 1 0 1", "0 1 3", "0.25 0.75"), "one.vtr");
-  const Files files{{"p.pvtr", pvtr("0 2 0 1 0 1", {{"1 2 0 1 0 1", "b.vtr"}, {"0 1 0 1 0 1", "a.vtr"}})},
-                    {"a.vtr", vtr("0 1 0 1 0 1", "0 1", "0.25")},
-                    {"b.vtr", vtr("1 2 0 1 0 1", "1 3", "0.75")}};
+  const Files files{
+      {"p.pvtr", pvtr("0 2 0 1 0 1", {{"1 2 0 1 0 1", "b.vtr"}, {"0 1 0 1 0 1", "a.vtr"}})},
+      {"a.vtr", vtr("0 1 0 1 0 1", "0 1", "0.25")},
+      {"b.vtr", vtr("1 2 0 1 0 1", "1 3", "0.75")}};
   const MeshData d = read(files, "p.pvtr");
   EXPECT_EQ(d.points, single.points);
   EXPECT_EQ(d.cells, single.cells);
@@ -286,8 +290,9 @@ TEST(VtkCollection, StructuredPiecesThatLieAreRefused) {
   expect_input_error(files, "p.pvtr", "but the piece");
   files["p.pvtr"] = pvtr("0 1 0 1 0 1", {{"0 1 0 1 0 1", "a.vtr"}, {"1 2 0 1 0 1", "b.vtr"}});
   expect_input_error(files, "p.pvtr", "not inside the WholeExtent");
-  files["p.pvtr"] = pvtr("0 3 0 1 0 1", {{"0 1 0 1 0 1", "a.vtr"}, {"0 1 0 1 0 1", "a.vtr"},
-                                         {"1 2 0 1 0 1", "b.vtr"}});
+  files["p.pvtr"] =
+      pvtr("0 3 0 1 0 1",
+           {{"0 1 0 1 0 1", "a.vtr"}, {"0 1 0 1 0 1", "a.vtr"}, {"1 2 0 1 0 1", "b.vtr"}});
   expect_input_error(files, "p.pvtr", "cell (2, 0, 0) of the whole extent is in no piece");
   files["c.vtr"] = vtr("1 2 0 1 0 1", "1.5 3", "0.75");
   files["p.pvtr"] = pvtr("0 2 0 1 0 1", {{"0 1 0 1 0 1", "a.vtr"}, {"1 2 0 1 0 1", "c.vtr"}});

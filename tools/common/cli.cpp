@@ -44,9 +44,11 @@ std::map<std::int64_t, std::string> parse_label_names(const std::vector<std::str
     std::int64_t value = 0;
     if (eq == std::string::npos || eq + 1 == e.size() ||
         !CLI::detail::lexical_cast(e.substr(0, eq), value))
-      throw CLI::ValidationError("--label-names", "expected VALUE=NAME with an integer VALUE, got " + e);
+      throw CLI::ValidationError("--label-names",
+                                 "expected VALUE=NAME with an integer VALUE, got " + e);
     if (!names.emplace(value, e.substr(eq + 1)).second)
-      throw CLI::ValidationError("--label-names", "label " + std::to_string(value) + " is named twice");
+      throw CLI::ValidationError("--label-names",
+                                 "label " + std::to_string(value) + " is named twice");
   }
   return names;
 }
@@ -86,7 +88,9 @@ void add_input_options(CLI::App& app, InputOptions& options) {
                  "named label_<value>; instead of fraction arrays");
   app.add_option_function<std::vector<std::string>>(
          "--label-names",
-         [&f](const std::vector<std::string>& entries) { f.label_names = parse_label_names(entries); },
+         [&f](const std::vector<std::string>& entries) {
+           f.label_names = parse_label_names(entries);
+         },
          "Names of --labels values: VALUE=NAME,... (e.g. 1=steel,2=air)")
       ->delimiter(',');
   app.add_option("--plane", options.plane, "Plane of 2D data: auto, xy, yz, xz")

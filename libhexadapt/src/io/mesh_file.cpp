@@ -61,8 +61,8 @@ std::string read_whole_file(const std::string& path) {
 MeshData read_mesh(const std::string& path, const ReadOptions& options) {
   const std::string ext = extension_of(path);
   const bool xml = ext == ".vtu" || ext == ".vti" || ext == ".vtr" || ext == ".vts";
-  const bool collection = ext == ".pvtu" || ext == ".pvts" || ext == ".pvtr" ||
-                          ext == ".pvti" || ext == ".vtm" || ext == ".pvd";
+  const bool collection = ext == ".pvtu" || ext == ".pvts" || ext == ".pvtr" || ext == ".pvti" ||
+                          ext == ".vtm" || ext == ".pvd";
   if (ext != ".vtk" && ext != ".txt" && !xml && !collection)
     throw OptionError(path + ": unknown mesh file extension " + quote_token(ext) +
                       " (supported for reading: .vtk .vtu .vti .vtr .vts .pvtu .pvts .pvtr "

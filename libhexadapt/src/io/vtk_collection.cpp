@@ -122,13 +122,12 @@ std::string load_reference(const VtkXmlDocument& doc, const pugi::xml_node& e,
   try {
     return ctx.load(path);
   } catch (const IoError& error) {
-    throw IoError(doc.file + ": " + place(e) + ": cannot read the file it names: " +
-                  error.what());
+    throw IoError(doc.file + ": " + place(e) + ": cannot read the file it names: " + error.what());
   }
 }
 
-MeshData read_reference(const VtkXmlDocument& doc, const pugi::xml_node& e,
-                        const char* attribute, const CollectionContext& ctx) {
+MeshData read_reference(const VtkXmlDocument& doc, const pugi::xml_node& e, const char* attribute,
+                        const CollectionContext& ctx) {
   const std::string path = resolve_reference(doc, e, e.attribute(attribute).as_string());
   if (ctx.depth >= max_depth)
     throw InputError(doc.file, place(e),
@@ -144,8 +143,10 @@ MeshData read_reference(const VtkXmlDocument& doc, const pugi::xml_node& e,
   } else if (t == "ImageData" || t == "RectilinearGrid" || t == "StructuredGrid") {
     read_structured(inner, ctx.options, data);
   } else if (t == "Collection") {
-    throw InputError(doc.file, place(e), quote_token(path) + " is a time series inside a "
-                                                             "collection: not read");
+    throw InputError(doc.file, place(e),
+                     quote_token(path) +
+                         " is a time series inside a "
+                         "collection: not read");
   } else if (is_collection_type(t)) {
     CollectionContext nested = ctx;
     ++nested.depth;

@@ -34,8 +34,8 @@ std::string load_reference(const VtkXmlDocument& doc, const pugi::xml_node& e,
 
 /// Reads any data set or collection file the element `e` of `doc` names by its attribute
 /// `attribute`, dispatched on its content.
-MeshData read_reference(const VtkXmlDocument& doc, const pugi::xml_node& e,
-                        const char* attribute, const CollectionContext& ctx);
+MeshData read_reference(const VtkXmlDocument& doc, const pugi::xml_node& e, const char* attribute,
+                        const CollectionContext& ctx);
 
 /// Reads a parsed collection document (P* types, vtkMultiBlockDataSet, Collection).
 MeshData read_collection_document(const VtkXmlDocument& doc, const CollectionContext& ctx);
@@ -52,7 +52,6 @@ index_t drop_ghost_cells(MeshData& data);
 MeshData read_parallel_structured(const VtkXmlDocument& doc, const CollectionContext& ctx);
 
 /// .pvd: the DataSet elements of the time step the options choose.
-std::vector<pugi::xml_node> select_time_step(const VtkXmlDocument& doc,
-                                             const ReadOptions& options);
+std::vector<pugi::xml_node> select_time_step(const VtkXmlDocument& doc, const ReadOptions& options);
 
 }  // namespace hexadapt::io::detail

@@ -17,9 +17,18 @@ namespace {
 
 // Cell edges in kernel order: quads counter-clockwise, hexes binary (v = i + 2j + 4k).
 constexpr std::array<std::array<int, 2>, 4> quad_edges{{{0, 1}, {1, 2}, {2, 3}, {3, 0}}};
-constexpr std::array<std::array<int, 2>, 12> hex_edges{{{0, 1}, {2, 3}, {4, 5}, {6, 7},
-                                                        {0, 2}, {1, 3}, {4, 6}, {5, 7},
-                                                        {0, 4}, {1, 5}, {2, 6}, {3, 7}}};
+constexpr std::array<std::array<int, 2>, 12> hex_edges{{{0, 1},
+                                                        {2, 3},
+                                                        {4, 5},
+                                                        {6, 7},
+                                                        {0, 2},
+                                                        {1, 3},
+                                                        {4, 6},
+                                                        {5, 7},
+                                                        {0, 4},
+                                                        {1, 5},
+                                                        {2, 6},
+                                                        {3, 7}}};
 
 // VTK's vtkGhostType bit of a cell that another piece owns.
 constexpr int duplicate_cell_bit = 1;
@@ -61,8 +70,8 @@ void check_same_arrays(const std::vector<DataArray>& first, const std::vector<Da
                                  [&](const DataArray& b) { return b.name == a.name; });
     if (it == other.end() || it->n_components != a.n_components)
       throw InputError(file, quote_token(other_file),
-                       std::string("has no ") + kind + " array " + quote_token(a.name) +
-                           " of " + std::to_string(a.n_components) + " components as " +
+                       std::string("has no ") + kind + " array " + quote_token(a.name) + " of " +
+                           std::to_string(a.n_components) + " components as " +
                            quote_token(first_file) + " has");
   }
   if (other.size() != first.size())
@@ -117,8 +126,8 @@ std::vector<std::size_t> weld(const std::vector<Vec3>& points, const std::vector
   sorted.reserve(points.size());
   for (std::size_t q = 0; q < points.size(); ++q)
     if (tol[q] > 0)
-      sorted.push_back({{key_of(points[q], 0, 0), key_of(points[q], 1, 0), key_of(points[q], 2, 0)},
-                        q});
+      sorted.push_back(
+          {{key_of(points[q], 0, 0), key_of(points[q], 1, 0), key_of(points[q], 2, 0)}, q});
   std::sort(sorted.begin(), sorted.end());
   for (const auto& [unused, q] : sorted) {
     (void)unused;
@@ -132,8 +141,8 @@ std::vector<std::size_t> weld(const std::vector<Vec3>& points, const std::vector
       for (std::int64_t j = from[1]; j <= to[1]; ++j)
         for (std::int64_t k = from[2]; k <= to[2]; ++k) {
           const Key key{i, j, k};
-          auto it = std::lower_bound(sorted.begin(), sorted.end(),
-                                     std::pair<Key, std::size_t>{key, 0});
+          auto it =
+              std::lower_bound(sorted.begin(), sorted.end(), std::pair<Key, std::size_t>{key, 0});
           for (; it != sorted.end() && it->first == key; ++it) {
             const std::size_t p = it->second;
             if (p < best && piece[p] != piece[q] &&
@@ -268,8 +277,8 @@ MeshData merge_pieces(std::vector<NamedMesh> pieces, double weld_tolerance,
   }
   check_same_kind(pieces, file);
   for (const NamedMesh& p : pieces) {
-    check_same_arrays(pieces.front().data.cell_data, p.data.cell_data, pieces.front().file,
-                      p.file, "cell", file);
+    check_same_arrays(pieces.front().data.cell_data, p.data.cell_data, pieces.front().file, p.file,
+                      "cell", file);
     check_same_arrays(pieces.front().data.point_data, p.data.point_data, pieces.front().file,
                       p.file, "point", file);
   }
@@ -285,9 +294,9 @@ MeshData merge_pieces(std::vector<NamedMesh> pieces, double weld_tolerance,
   const std::vector<char> repeated = repeated_cells(d, all.cell_piece);
   const auto n_repeated = std::count(repeated.begin(), repeated.end(), 1);
   compact(d, repeated);
-  log_info(file + ": " + std::to_string(n_pieces) + " pieces merged: " +
-           std::to_string(welded) + " points welded, " + std::to_string(ghosts) +
-           " ghost cells and " + std::to_string(n_repeated) + " repeated cells dropped");
+  log_info(file + ": " + std::to_string(n_pieces) + " pieces merged: " + std::to_string(welded) +
+           " points welded, " + std::to_string(ghosts) + " ghost cells and " +
+           std::to_string(n_repeated) + " repeated cells dropped");
   return std::move(all.data);
 }
 

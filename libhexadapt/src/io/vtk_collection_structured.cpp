@@ -27,7 +27,9 @@ Extent extent_attribute(const VtkXmlDocument& doc, const pugi::xml_node& e, cons
   return v;
 }
 
-bool empty(const Extent& e) { return e[1] < e[0] || e[3] < e[2] || e[5] < e[4]; }
+bool empty(const Extent& e) {
+  return e[1] < e[0] || e[3] < e[2] || e[5] < e[4];
+}
 
 bool inside(const Extent& e, const Extent& whole) {
   for (std::size_t a = 0; a < 3; ++a)
@@ -62,8 +64,8 @@ void check_whole(const VtkXmlDocument& doc, const pugi::xml_node& dataset, const
   constexpr auto max = static_cast<std::uint64_t>(std::numeric_limits<index_t>::max());
   std::uint64_t n = 1;
   for (std::size_t a = 0; a < 3; ++a) {
-    const auto span = static_cast<std::uint64_t>(whole[2 * a + 1]) -
-                      static_cast<std::uint64_t>(whole[2 * a]) + 1;
+    const auto span =
+        static_cast<std::uint64_t>(whole[2 * a + 1]) - static_cast<std::uint64_t>(whole[2 * a]) + 1;
     if (span == 0 || span > max || n * span > max)
       throw InputError(doc.file, place(dataset),
                        "WholeExtent " + extent_text(whole) + ": too many points for 32-bit ids");
@@ -181,12 +183,12 @@ void check_piece(const VtkXmlDocument& doc, const pugi::xml_node& e, const Piece
                  const Extent& announced, const Extent& whole, const Piece& first) {
   if (p.extent != announced)
     throw InputError(doc.file, place(e),
-                     "Extent " + extent_text(announced) + " but the piece " +
-                         quote_token(p.file) + " has " + extent_text(p.extent));
+                     "Extent " + extent_text(announced) + " but the piece " + quote_token(p.file) +
+                         " has " + extent_text(p.extent));
   if (!inside(p.extent, whole))
-    throw InputError(doc.file, place(e),
-                     "Extent " + extent_text(p.extent) + " is not inside the WholeExtent " +
-                         extent_text(whole));
+    throw InputError(
+        doc.file, place(e),
+        "Extent " + extent_text(p.extent) + " is not inside the WholeExtent " + extent_text(whole));
   for (const auto& [mine, theirs] : {std::pair{&p.data.cell_data, &first.data.cell_data},
                                      std::pair{&p.data.point_data, &first.data.point_data}})
     for (const DataArray& a : *theirs) {
@@ -194,9 +196,9 @@ void check_piece(const VtkXmlDocument& doc, const pugi::xml_node& e, const Piece
                                    [&](const DataArray& b) { return b.name == a.name; });
       if (it == mine->end() || it->n_components != a.n_components)
         throw InputError(doc.file, place(e),
-                         "piece " + quote_token(p.file) + " has no array " +
-                             quote_token(a.name) + " of " + std::to_string(a.n_components) +
-                             " components as " + quote_token(first.file) + " has");
+                         "piece " + quote_token(p.file) + " has no array " + quote_token(a.name) +
+                             " of " + std::to_string(a.n_components) + " components as " +
+                             quote_token(first.file) + " has");
     }
 }
 

@@ -20,9 +20,9 @@ double time_of(const VtkXmlDocument& doc, const pugi::xml_node& e) {
   const pugi::xml_attribute a = e.attribute("timestep");
   if (!a) return 0;  // ParaView's reading of a DataSet without a time
   double t = 0;
-  parse_ascii(a.as_string(), 0, ScalarType::float64, 1, &t, doc.file, place(e) + " attribute timestep");
-  if (!std::isfinite(t))
-    throw InputError(doc.file, place(e), "timestep is not a finite number");
+  parse_ascii(a.as_string(), 0, ScalarType::float64, 1, &t, doc.file,
+              place(e) + " attribute timestep");
+  if (!std::isfinite(t)) throw InputError(doc.file, place(e), "timestep is not a finite number");
   return t;
 }
 
@@ -40,21 +40,22 @@ std::string steps_text(const std::vector<double>& times) {
       s += " ...";
       k = times.size() - listed_steps;
     }
-    s += " " + std::to_string(k) + ": t = " + time_text(times[k]) + (k + 1 < times.size() ? "," : "");
+    s += " " + std::to_string(k) + ": t = " + time_text(times[k]) +
+         (k + 1 < times.size() ? "," : "");
   }
   return s;
 }
 
 std::size_t step_of_time(const VtkXmlDocument& doc, const pugi::xml_node& collection,
                          const std::vector<double>& times, double t) {
-  const double scale = std::max({std::abs(times.front()), std::abs(times.back()),
-                                 times.back() - times.front()});
+  const double scale =
+      std::max({std::abs(times.front()), std::abs(times.back()), times.back() - times.front()});
   const double tolerance = 1e-6 * scale;
   for (std::size_t k = 0; k < times.size(); ++k)
     if (std::abs(times[k] - t) <= tolerance) return k;
-  throw InputError(doc.file, place(collection),
-                   "no time step at t = " + time_text(t) + "; the series holds " +
-                       steps_text(times));
+  throw InputError(
+      doc.file, place(collection),
+      "no time step at t = " + time_text(t) + "; the series holds " + steps_text(times));
 }
 
 }  // namespace
@@ -75,14 +76,16 @@ std::vector<pugi::xml_node> select_time_step(const VtkXmlDocument& doc,
     k = *options.step;
     if (k >= times.size())
       throw InputError(doc.file, place(collection),
-                       "no time step " + std::to_string(k) + " (steps count from 0); the series "
-                       "holds " + steps_text(times));
+                       "no time step " + std::to_string(k) +
+                           " (steps count from 0); the series "
+                           "holds " +
+                           steps_text(times));
   } else if (options.time) {
     k = step_of_time(doc, collection, times, *options.time);
   } else if (times.size() > 1) {
-    throw InputError(doc.file, place(collection),
-                     "a time series: choose a step with --step N or --time T; it holds " +
-                         steps_text(times));
+    throw InputError(
+        doc.file, place(collection),
+        "a time series: choose a step with --step N or --time T; it holds " + steps_text(times));
   }
   return steps[times[k]];
 }

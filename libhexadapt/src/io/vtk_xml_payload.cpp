@@ -94,7 +94,8 @@ Payload read_compressed(ByteReader& in, const BinaryLayout& layout,
                      what + ": compressed data holds " + bytes_text(t.total) + ", expected " +
                          bytes_text(expected));
   const std::size_t data_at = in.file_offset();
-  Payload packed = in.take(static_cast<std::size_t>(t.compressed_total), what + " (" + compressor_name(layout.compressor) + " blocks)");
+  Payload packed = in.take(static_cast<std::size_t>(t.compressed_total),
+                           what + " (" + compressor_name(layout.compressor) + " blocks)");
   Payload out;
   unsigned char* into = nullptr;
   if (allocate) {
@@ -167,7 +168,8 @@ Payload ByteReader::take(std::size_t n, const std::string& what) {
 Payload read_payload(ByteReader& in, const BinaryLayout& layout,
                      std::optional<std::size_t> expected_bytes, const std::string& what,
                      const std::function<unsigned char*(std::size_t)>& allocate) {
-  if (layout.compressor != Compressor::none) return read_compressed(in, layout, expected_bytes, what, allocate);
+  if (layout.compressor != Compressor::none)
+    return read_compressed(in, layout, expected_bytes, what, allocate);
   const std::size_t at = in.file_offset();
   const Payload head = in.take(layout.header64 ? 8 : 4, what + " (size header)");
   const std::uint64_t n = header_word(head.data, layout);

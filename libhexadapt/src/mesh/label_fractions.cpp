@@ -46,11 +46,13 @@ Fractions fractions_from_labels(const io::MeshData& data, const FractionOptions&
                                 const std::string& file) {
   check_options(options);
   const io::DataArray* a = data.find_cell_array(options.labels);
-  if (!a) throw InputError(file, "", "no cell array named " + quote_token(options.labels) +
-                                         " (the label map)");
+  if (!a)
+    throw InputError(file, "",
+                     "no cell array named " + quote_token(options.labels) + " (the label map)");
   if (a->n_components != 1)
-    throw InputError(file, "", "label array " + quote_token(a->name) + " has " +
-                                   std::to_string(a->n_components) + " components, expected 1");
+    throw InputError(file, "",
+                     "label array " + quote_token(a->name) + " has " +
+                         std::to_string(a->n_components) + " components, expected 1");
   const auto n = static_cast<std::size_t>(data.n_cells());
   std::vector<std::int64_t> labels(n);
   std::set<std::int64_t> distinct;
