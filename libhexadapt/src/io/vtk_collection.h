@@ -44,6 +44,13 @@ MeshData read_collection_document(const VtkXmlDocument& doc, const CollectionCon
 MeshData merge_pieces(std::vector<NamedMesh> pieces, double weld_tolerance,
                       const std::string& file);
 
+/// VTK's array of ghost flags (cell and point data of the pieces of a parallel file).
+constexpr const char* ghost_array = "vtkGhostType";
+
+/// True when the vtkGhostType cell array `ghost` (may be null) marks cell c as a duplicate:
+/// a ghost cell that another piece owns.
+bool is_ghost_cell(const DataArray* ghost, std::size_t c);
+
 /// Removes the cells a vtkGhostType cell array marks as duplicates (another piece owns them)
 /// and the vtkGhostType arrays; returns how many cells were removed.
 index_t drop_ghost_cells(MeshData& data);

@@ -247,22 +247,25 @@ void compact(MeshData& d, const std::vector<char>& drop_cell) {
 
 }  // namespace
 
+bool is_ghost_cell(const DataArray* ghost, std::size_t c) {
+  if (!ghost || ghost->n_components != 1) return false;
+  const double v = ghost->values[c];
+  return v >= 0 && v < 256 && (static_cast<int>(v) & duplicate_cell_bit) != 0;
+}
+
 index_t drop_ghost_cells(MeshData& data) {
-  const DataArray* ghost = data.find_cell_array("vtkGhostType");
+  const DataArray* ghost = data.find_cell_array(ghost_array);
   index_t dropped = 0;
-  if (ghost && ghost->n_components == 1) {
-    const auto n = static_cast<std::size_t>(data.n_cells());
-    std::vector<char> drop(n, 0);
-    for (std::size_t c = 0; c < n; ++c)
-      if (const double v = ghost->values[c];
-          v >= 0 && v < 256 && (static_cast<int>(v) & duplicate_cell_bit)) {
-        drop[c] = 1;
-        ++dropped;
-      }
-    if (dropped > 0) compact(data, drop);
-  }
-  remove_array(data.cell_data, "vtkGhostType");
-  remove_array(data.point_data, "vtkGhostType");
+  const auto n = static_cast<std::size_t>(data.n_cells());
+  std::vector<char> drop(n, 0);
+  for (std::size_t c = 0; c < n; ++c)
+    if (is_ghost_cell(ghost, c)) {
+      drop[c] = 1;
+      ++dropped;
+    }
+  if (dropped > 0) compact(data, drop);
+  remove_array(data.cell_data, ghost_array);
+  remove_array(data.point_data, ghost_array);
   return dropped;
 }
 

@@ -104,8 +104,11 @@ class Tiler {
     point_set_.assign(lattice_.n_points(), 0);
     cell_set_.assign(lattice_.n_cells(), 0);
     data_.metadata = first.metadata;
-    data_.cell_data = first.cell_data;
-    data_.point_data = first.point_data;
+    // Ghost flags say which piece owns a cell; the whole grid has no ghosts.
+    for (const DataArray& a : first.cell_data)
+      if (a.name != ghost_array) data_.cell_data.push_back(a);
+    for (const DataArray& a : first.point_data)
+      if (a.name != ghost_array) data_.point_data.push_back(a);
     for (DataArray& a : data_.cell_data) a.values.assign(lattice_.n_cells() * comps(a), 0.0);
     for (DataArray& a : data_.point_data) a.values.assign(lattice_.n_points() * comps(a), 0.0);
   }
@@ -123,9 +126,10 @@ class Tiler {
       point_set_[g] = 1;
       for (DataArray& a : data_.point_data) copy(a, *p.data.find_point_array(a.name), local, g);
     });
+    const DataArray* ghost = p.data.find_cell_array(ghost_array);
     for_each(l.cells, [&](std::size_t local, const std::array<std::size_t, 3>& ijk) {
       const std::size_t g = global(ijk, p.extent, lattice_.cells);
-      if (cell_set_[g]) return;
+      if (cell_set_[g] || is_ghost_cell(ghost, local)) return;
       cell_set_[g] = 1;
       for (DataArray& a : data_.cell_data) copy(a, *p.data.find_cell_array(a.name), local, g);
     });

@@ -117,6 +117,8 @@ write(vtk.vtkXMLPUnstructuredGridWriter, "four.pvtu", port=to_unstructured.GetOu
 write(vtk.vtkXMLPUnstructuredGridWriter, "ghost.pvtu", port=to_unstructured.GetOutputPort(),
       pieces=4, ghost=1)
 write(vtk.vtkXMLPRectilinearGridWriter, "four.pvtr", port=reader.GetOutputPort(), pieces=4)
+write(vtk.vtkXMLPRectilinearGridWriter, "ghost.pvtr", port=reader.GetOutputPort(), pieces=4,
+      ghost=1)
 write(vtk.vtkXMLStructuredGridWriter, "single.vts", port=to_points.GetOutputPort())
 write(vtk.vtkXMLPStructuredGridWriter, "four.pvts", port=to_points.GetOutputPort(), pieces=4)
 for c in ("LZ4", "LZMA"):
@@ -149,10 +151,11 @@ for src in ("four.pvtu", "ghost.pvtu"):
               read_vtu("single.assign.vtu").GetNumberOfPoints(), "%s: border points welded" % src)
 # Structured pieces become the one grid: the same cells in the same order.
 assign("single.vtr", "single_vtr.assign.vtu")
-for src in ("four.pvtr", "four.pvts"):
+for src in ("four.pvtr", "ghost.pvtr", "four.pvts"):
     if assign(src, src + ".assign.vtu") == 0:
         a = read_vtu("single_vtr.assign.vtu")
         b = read_vtu(src + ".assign.vtu")
+        check(b.GetCellData().GetArray("vtkGhostType") is None, "%s: no ghost flags" % src)
         for name in ("material", "vf_ball"):
             x = ns.vtk_to_numpy(a.GetCellData().GetArray(name))
             y = ns.vtk_to_numpy(b.GetCellData().GetArray(name))
