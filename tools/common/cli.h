@@ -47,14 +47,19 @@ struct CommonOptions {
 void add_common_options(CLI::App& app, CommonOptions& options, bool with_output = true);
 
 /// How a stage reads its input grid and fractions, with the same flags and meaning in every
-/// tool: --fractions, --void, --value-tolerance, --sum-tolerance, --zero-below, --plane.
+/// tool: --fractions, --void, --value-tolerance, --sum-tolerance, --zero-below, --labels,
+/// --label-names, --plane, --step, --time.
 struct InputOptions {
   FractionOptions fractions;
   std::string plane = "auto";  ///< auto, xy, yz or xz
+  io::ReadOptions time;        ///< --step and --time (its other fields are unused)
   io::ReadOptions read_options() const;
 };
 
 void add_input_options(CLI::App& app, InputOptions& options);
+
+/// --step and --time (the time step of a time series) into `options`.
+void add_time_options(CLI::App& app, io::ReadOptions& options);
 
 /// Parses the command line, applies -q/-v/--threads, runs `body` and maps exceptions to exit
 /// codes with a one-line message on stderr. `body` returns the exit code. The files `body`

@@ -24,10 +24,13 @@ struct Args {
   double z = 0;
   bool z_given = false, edges = false, no_edges = false, targets = false;
   io::Plane plane = io::Plane::automatic;
+  io::ReadOptions time;  ///< --step, --time
 };
 
 void add_options(CLI::App& app, Args& a) {
-  app.add_option("mesh", a.input, "Mesh file to draw (.vtu .vtk .vti .vtr .vts .txt)")->required();
+  app.add_option("mesh", a.input,
+                 "Mesh file to draw (.vtu .vtk .vti .vtr .vts .pvtu .pvtr .pvts .vtm .pvd .txt)")
+      ->required();
   app.add_option("--color", a.color,
                  "Cell colouring: material (legend of material names), fractions (material "
                  "colours mixed by the vf_ arrays), quality (scaled Jacobian, computed), none, "
@@ -52,6 +55,7 @@ void add_options(CLI::App& app, Args& a) {
   app.add_option("--plane", a.plane, "Plane of 2D data sets: auto, xy, yz, xz")
       ->transform(CLI::CheckedTransformer(planes, CLI::ignore_case))
       ->default_str("auto");
+  cli::add_time_options(app, a.time);
 }
 
 render::PictureOptions picture_options(const Args& a) {
@@ -107,7 +111,7 @@ int render_mesh(const CLI::App& app, const cli::CommonOptions& common, Args& a) 
   render::PictureOptions options = picture_options(a);
   PhaseTimes times;
   const Progress bar = cli::terminal_progress(common);
-  io::ReadOptions read;
+  io::ReadOptions read = a.time;
   read.plane = a.plane;
   io::MeshData overlay;
   const io::MeshData data = cli::timed_phase(times, bar, "read", [&] {

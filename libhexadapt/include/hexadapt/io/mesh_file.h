@@ -2,12 +2,16 @@
 //
 // Read: legacy .vtk (ASCII and binary; STRUCTURED_POINTS, RECTILINEAR_GRID, STRUCTURED_GRID,
 // UNSTRUCTURED_GRID), XML .vtu .vti .vtr .vts (ascii, base64, appended raw or base64, zlib,
-// UInt32/UInt64 headers), and the plain text formats of hand-made cases (.txt, DESIGN 7.1).
+// UInt32/UInt64 headers; zlib, LZ4 or LZMA blocks), parallel, multi-block and time-series
+// files of them (.pvtu .pvts .pvtr .pvti .vtm .pvd, see vtk_collection.h), and the plain
+// text formats of hand-made cases (.txt, DESIGN 7.1).
 // Write: .vtu (appended binary, zlib-compressed when large) and legacy .vtk (binary).
 // Writes are atomic: a temporary file in the target directory, then a rename, so a failed
 // write never leaves a half file and never clobbers an input.
 #pragma once
 
+#include <cstddef>
+#include <optional>
 #include <string>
 
 #include "hexadapt/io/mesh_data.h"
@@ -20,6 +24,11 @@ enum class Plane { automatic, xy, yz, xz };
 
 struct ReadOptions {
   Plane plane = Plane::automatic;  ///< which coordinate plane 2D cells live in
+  std::optional<std::size_t> step;  ///< 0-based time step to read (time series)
+  std::optional<double> time;  ///< time value to read
+  /// Pieces of a parallel file: points of different pieces closer than this times the
+  /// shortest cell edge at them are one point.
+  double weld_tolerance = 1e-6;
 };
 
 struct WriteOptions {
