@@ -87,10 +87,12 @@ INSTANTIATE_TEST_SUITE_P(
     [](const ::testing::TestParamInfo<test::GeneratedCase>& i) { return test::label(i.param); });
 
 // A true 3D case the paper's cavities leave short and the interfaces pillowed first reach:
-// the drop over the pool at 12^3 (measured: 266 of 301 interface nodes with cavities only,
-// 296 with the first layer), both keeping the threshold and the size criterion.
+// the asteroid at 16^3 (measured: 310 of 506 interface nodes with cavities only, 504 with
+// the first layer), both keeping the threshold and the size criterion. (The drop over the
+// pool at 12^3 served here until the volume offset of the targets: cavities now reach all
+// its 301 nodes.)
 TEST(GuaranteedMethod, InterfacesPillowedFirstReachWhereCavitiesDoNot) {
-  test::with_generated_case({"balldrop", {12, 12, 12}}, [](const auto& grid, const Fractions& f,
+  test::with_generated_case({"asteroid", {16, 16, 16}}, [](const auto& grid, const Fractions& f,
                                                            const IdVector<CellId, int>& m) {
     AdaptOptions o = guaranteed_options();
     const auto first = adapt(grid, f, m, o);  // automatic: first in 3D
@@ -103,6 +105,39 @@ TEST(GuaranteedMethod, InterfacesPillowedFirstReachWhereCavitiesDoNot) {
     check_guaranteed(grid, cavities);
     EXPECT_EQ(cavities.n_interface_layer_cells, 0);
     EXPECT_LT(cavities.n_near_interface, 0.95 * cavities.n_interface_nodes);
+  });
+}
+
+// Each material's output volume over its input volume (sum of fraction x cell volume) - 1.
+template <class M>
+std::vector<double> volume_errors(const M& grid, const Fractions& f, const AdaptResult<M>& r) {
+  std::vector<double> in(static_cast<std::size_t>(f.n_materials()), 0), out(in.size(), 0);
+  for (CellId c : id_range<CellId>(grid.n_cells()))
+    for (int a = 0; a < f.n_materials(); ++a)
+      in[static_cast<std::size_t>(a)] += f(c, a) * grid.cell_volume(c);
+  for (CellId c : id_range<CellId>(r.mesh.n_cells()))
+    out[static_cast<std::size_t>(r.material[c])] += r.mesh.cell_volume(c);
+  for (std::size_t a = 0; a < in.size(); ++a) out[a] = out[a] / in[a] - 1;
+  return out;
+}
+
+// The targets' volume offset in 3D: on the asteroid at 16^3 the core ended 6.1 % short with
+// its targets on the fractions' planes (its staircase cut at every corner); with the offset
+// every material is within 1 % (measured: core -0.29 %), as many nodes reach their
+// interface, and the guarantee holds.
+TEST(GuaranteedMethod, TheVolumeOffsetKeepsEveryMaterialsVolume) {
+  test::with_generated_case({"asteroid", {16, 16, 16}}, [](const auto& grid, const Fractions& f,
+                                                           const IdVector<CellId, int>& m) {
+    AdaptOptions o = guaranteed_options();
+    const auto with = adapt(grid, f, m, o);
+    o.targets.volume_offset = VolumeOffset::off;
+    const auto without = adapt(grid, f, m, o);
+    check_guaranteed(grid, with);
+    EXPECT_EQ(with.n_below_min_edge, 0);
+    EXPECT_GE(with.n_near_interface, without.n_near_interface);
+    const auto e_with = volume_errors(grid, f, with), e_without = volume_errors(grid, f, without);
+    for (double e : e_with) EXPECT_LT(std::abs(e), 0.01);
+    EXPECT_LT(e_without[2], -0.03) << "the core must lose volume without the offset";
   });
 }
 

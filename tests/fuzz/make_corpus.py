@@ -86,6 +86,94 @@ def write_xml(writer_class, data, path, mode, compress=False, header64=False, en
     w.Write()
 
 
+def bundle(main_file, folder, names):
+    """A collection file and the files it names as one seed of fuzz_vtk_collection."""
+    parts = [open(main_file).read()]
+    for name in names:
+        with open(os.path.join(folder, name)) as f:
+            parts.append("--8<-- %s\n%s" % (name, f.read()))
+    return "\n".join(parts)
+
+
+def parallel_writer(writer_class, data_or_port, path, pieces, ghost=0):
+    w = writer_class()
+    w.SetInputConnection(data_or_port)
+    w.SetFileName(path)
+    w.SetDataModeToAscii()
+    w.SetNumberOfPieces(pieces)
+    w.SetStartPiece(0)
+    w.SetEndPiece(pieces - 1)
+    w.SetGhostLevel(ghost)
+    w.Write()
+
+
+def collection_seeds(root):
+    """Seeds of fuzz_vtk_collection: .pvtu (with ghosts), .pvtr, .pvts, .vtm, .pvd, written by
+    VTK in ascii (small and readable), then bundled with their pieces."""
+    import tempfile
+    out = os.path.join(root, "vtk_collection")
+    os.makedirs(out, exist_ok=True)
+    tmp = tempfile.mkdtemp()
+    g = vtk.vtkRectilinearGrid()
+    g.SetDimensions(4, 3, 2)
+    g.SetXCoordinates(cell_array("x", [0.0, 0.5, 2.0, 3.0]))
+    g.SetYCoordinates(cell_array("y", [0.0, 1.0, 1.5]))
+    g.SetZCoordinates(cell_array("z", [0.0, 1.0]))
+    g.GetCellData().AddArray(cell_array("vf_a", np.linspace(0, 1, 6)))
+    # A reader, not the data itself, so that each piece asks for (and gets) its own extent.
+    whole = vtk.vtkXMLRectilinearGridWriter()
+    whole.SetInputData(g)
+    whole.SetFileName(os.path.join(tmp, "whole.vtr"))
+    whole.Write()
+    source = vtk.vtkXMLRectilinearGridReader()
+    source.SetFileName(os.path.join(tmp, "whole.vtr"))
+    to_ug = vtk.vtkAppendFilter()
+    to_ug.SetInputConnection(source.GetOutputPort())
+    to_sg = vtk.vtkRectilinearGridToPointSet()
+    to_sg.SetInputConnection(source.GetOutputPort())
+    jobs = [(vtk.vtkXMLPUnstructuredGridWriter, to_ug, "hexes.pvtu", 2, 0, "vtu"),
+            (vtk.vtkXMLPUnstructuredGridWriter, to_ug, "ghosts.pvtu", 2, 1, "vtu"),
+            (vtk.vtkXMLPRectilinearGridWriter, source, "grid.pvtr", 2, 0, "vtr"),
+            (vtk.vtkXMLPStructuredGridWriter, to_sg, "grid.pvts", 2, 0, "vts")]
+    for writer, port, name, pieces, ghost, ext in jobs:
+        parallel_writer(writer, port.GetOutputPort(), os.path.join(tmp, name), pieces, ghost)
+        stem = name.rsplit(".", 1)[0]
+        names = ["%s/%s_%d.%s" % (stem, stem, k, ext) if os.path.isdir(os.path.join(tmp, stem))
+                 else "%s_%d.%s" % (stem, k, ext) for k in range(pieces)]
+        with open(os.path.join(out, name), "w") as f:
+            f.write(bundle(os.path.join(tmp, name), tmp, names))
+    piece = os.path.join(tmp, "hexes_0.vtu") if os.path.exists(os.path.join(tmp, "hexes_0.vtu")) \
+        else os.path.join(tmp, "hexes", "hexes_0.vtu")
+    piece_text = open(piece).read()
+    with open(os.path.join(out, "blocks.vtm"), "w") as f:
+        f.write('<VTKFile type="vtkMultiBlockDataSet" version="1.0"><vtkMultiBlockDataSet>'
+                '<Block index="0"><DataSet index="0" file="a.vtu"/></Block>'
+                '<DataSet index="1" file="b.vtu"/></vtkMultiBlockDataSet></VTKFile>'
+                "\n--8<-- a.vtu\n" + piece_text + "\n--8<-- b.vtu\n" + piece_text)
+    with open(os.path.join(out, "series.pvd"), "w") as f:
+        f.write('<VTKFile type="Collection" version="0.1"><Collection>'
+                '<DataSet timestep="0.5" part="0" file="t1.vtu"/>'
+                '<DataSet timestep="0" part="0" file="t0.vtu"/>'
+                '<DataSet timestep="0" part="1" file="t0b.vtu"/></Collection></VTKFile>'
+                "\n--8<-- t0.vtu\n" + piece_text + "\n--8<-- t0b.vtu\n" + piece_text +
+                "\n--8<-- t1.vtu\n" + piece_text)
+
+
+def compressed_seeds(root):
+    """LZ4 and LZMA blocks, as VTK writes them."""
+    xml = os.path.join(root, "vtk_xml")
+    for compressor, header64 in (("LZ4", False), ("LZMA", True)):
+        w = vtk.vtkXMLUnstructuredGridWriter()
+        w.SetInputData(hex_grid())
+        w.SetFileName(os.path.join(xml, "hex_%s.vtu" % compressor.lower()))
+        w.SetDataModeToAppended()
+        w.SetEncodeAppendedData(0)
+        getattr(w, "SetCompressorTypeTo" + compressor)()
+        if header64:
+            w.SetHeaderTypeToUInt64()
+        w.Write()
+
+
 def main(root):
     xml = os.path.join(root, "vtk_xml")
     legacy = os.path.join(root, "vtk_legacy")
@@ -126,6 +214,8 @@ def main(root):
     w.SetFileName(os.path.join(legacy, "image_binary.vtk"))
     w.SetFileTypeToBinary()
     w.Write()
+    compressed_seeds(root)
+    collection_seeds(root)
 
 
 if __name__ == "__main__":

@@ -2,6 +2,7 @@
 // and pillows, giving a conformal mesh whose cells each hold one material (paper sec. 5).
 #include <algorithm>
 #include <cstdio>
+#include <map>
 #include <string>
 #include <variant>
 #include <vector>
@@ -23,6 +24,7 @@ struct Args {
   std::string method = "guaranteed";
   std::string model;
   TargetCorrectionOptions correction;
+  TargetOptions targets;
   bool allow_bad_input = false;
   int max_loops = 20;
   int cavity_range = 3;
@@ -241,6 +243,7 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   options.interface_pillow_carve = args.interface_pillow_carve;
   options.near_interface = args.near_interface;
   options.correction = args.correction;
+  options.targets = args.targets;
 
   Timer clock;
   PhaseTimes times;
@@ -378,6 +381,24 @@ int main(int argc, char** argv) {
   app.add_option("--near-interface", args.near_interface,
                  "guaranteed: a node within this many local sizes of its interface surface has "
                  "reached it; farther ones are reported as blocked")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--volume-offset", args.targets.volume_offset,
+                 "Offset each material's interface targets along their normal until the grid "
+                 "with its nodes on them holds the material's input volume: on, off, or "
+                 "automatic (3D only)")
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, VolumeOffset>{{"automatic", VolumeOffset::automatic},
+                                              {"on", VolumeOffset::on},
+                                              {"off", VolumeOffset::off}},
+          CLI::ignore_case))
+      ->default_str("automatic");
+  app.add_option("--volume-sweeps", args.targets.volume_sweeps,
+                 "Volume offset: sweeps at most")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--volume-max-shift", args.targets.volume_max_shift,
+                 "Farthest a target moves for the volume, in local sizes")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   app.add_option("--model", args.model,

@@ -22,7 +22,9 @@ struct Options {
 };
 
 void add_options(CLI::App& app, Options& o) {
-  app.add_option("input", o.input, "Grid with volume fractions (.vtu .vtk .vti .vtr .vts .txt .exo)")
+  app.add_option("input", o.input,
+                 "Grid with volume fractions (.vtu .vtk .vti .vtr .vts .pvtu .pvtr .pvts .vtm "
+                 ".pvd .txt .exo)")
       ->required();
   cli::add_common_options(app, o.common);
   cli::add_write_options(app, o.common);

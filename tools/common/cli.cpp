@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <map>
 
 #include <unistd.h>
 
@@ -34,6 +35,23 @@ const CLI::Validator finite_number(
       return {};
     },
     "NUMBER");
+
+// --label-names: VALUE=NAME entries, VALUE an integer.
+std::map<std::int64_t, std::string> parse_label_names(const std::vector<std::string>& entries) {
+  std::map<std::int64_t, std::string> names;
+  for (const std::string& e : entries) {
+    const std::size_t eq = e.find('=');
+    std::int64_t value = 0;
+    if (eq == std::string::npos || eq + 1 == e.size() ||
+        !CLI::detail::lexical_cast(e.substr(0, eq), value))
+      throw CLI::ValidationError("--label-names",
+                                 "expected VALUE=NAME with an integer VALUE, got " + e);
+    if (!names.emplace(value, e.substr(eq + 1)).second)
+      throw CLI::ValidationError("--label-names",
+                                 "label " + std::to_string(value) + " is named twice");
+  }
+  return names;
+}
 }  // namespace
 
 void add_common_options(CLI::App& app, CommonOptions& options, bool with_output) {
@@ -83,6 +101,16 @@ void add_input_options(CLI::App& app, InputOptions& options) {
   app.add_option("--zero-below", f.zero_below, "Fractions below this are traces (set to 0)")
       ->check(finite_non_negative)
       ->capture_default_str();
+  app.add_option("--labels", f.labels,
+                 "Integer cell array of material ids (a label map): one material per value, "
+                 "named label_<value>; instead of fraction arrays");
+  app.add_option_function<std::vector<std::string>>(
+         "--label-names",
+         [&f](const std::vector<std::string>& entries) {
+           f.label_names = parse_label_names(entries);
+         },
+         "Names of --labels values: VALUE=NAME,... (e.g. 1=steel,2=air)")
+      ->delimiter(',');
   app.add_option("--plane", options.plane, "Plane of 2D data: auto, xy, yz, xz")
       ->check(CLI::IsMember({"auto", "xy", "yz", "xz"}))
       ->capture_default_str();
@@ -92,10 +120,10 @@ void add_input_options(CLI::App& app, InputOptions& options) {
 void add_time_options(CLI::App& app, io::ReadOptions& options) {
   auto* step = app.add_option_function<std::size_t>(
       "--step", [&options](const std::size_t& k) { options.step = k; },
-      "Time step to read from a time series (.exo), counted from 0");
+      "Time step to read from a time series (.pvd .exo), counted from 0");
   app.add_option_function<double>(
          "--time", [&options](const double& t) { options.time = t; },
-         "Time value of the step to read from a time series (.exo)")
+         "Time value of the step to read from a time series (.pvd .exo)")
       ->check(finite_number)
       ->excludes(step);
 }

@@ -54,8 +54,8 @@ void add_common_options(CLI::App& app, CommonOptions& options, bool with_output 
 void add_write_options(CLI::App& app, CommonOptions& options);
 
 /// How a stage reads its input grid and fractions, with the same flags and meaning in every
-/// tool: --fractions, --void, --value-tolerance, --sum-tolerance, --zero-below, --plane,
-/// --step, --time.
+/// tool: --fractions, --void, --value-tolerance, --sum-tolerance, --zero-below, --labels,
+/// --label-names, --plane, --step, --time.
 struct InputOptions {
   FractionOptions fractions;
   std::string plane = "auto";  ///< auto, xy, yz or xz

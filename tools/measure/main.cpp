@@ -36,7 +36,9 @@ struct Args {
 };
 
 void add_options(CLI::App& app, Args& a) {
-  app.add_option("mesh", a.input, "Mesh file to measure (.vtu .vtk .vti .vtr .vts .txt .exo)")
+  app.add_option("mesh", a.input,
+                 "Mesh file to measure (.vtu .vtk .vti .vtr .vts .pvtu .pvtr .pvts .vtm .pvd "
+                 ".txt .exo)")
       ->required();
   app.add_option("--threshold", a.report.threshold,
                  "Minimum scaled Jacobian every cell must reach (exit 3 otherwise)")

@@ -28,7 +28,10 @@ struct Args {
 };
 
 void add_options(CLI::App& app, Args& a) {
-  app.add_option("mesh", a.input, "Mesh file to draw (.vtu .vtk .vti .vtr .vts .txt .exo)")->required();
+  app.add_option("mesh", a.input,
+                 "Mesh file to draw (.vtu .vtk .vti .vtr .vts .pvtu .pvtr .pvts .vtm .pvd .txt "
+                 ".exo)")
+      ->required();
   app.add_option("--color", a.color,
                  "Cell colouring: material (legend of material names), fractions (material "
                  "colours mixed by the vf_ arrays), quality (scaled Jacobian, computed), none, "

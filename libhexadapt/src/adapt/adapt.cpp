@@ -59,6 +59,9 @@ void check_options(const AdaptOptions& o) {
     throw OptionError("near_interface must be >= 0, got " + std::to_string(o.near_interface));
   if (!(o.loop_tolerance >= 0))
     throw OptionError("loop_tolerance must be >= 0, got " + std::to_string(o.loop_tolerance));
+  if (o.targets.volume_sweeps < 0 || !(o.targets.volume_max_shift >= 0) ||
+      !(o.targets.volume_tolerance >= 0))
+    throw OptionError("volume_sweeps, volume_max_shift and volume_tolerance must be >= 0");
   check_options(o.correction);
 }
 

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "hexadapt/adapt/local_topology.h"
+#include "hexadapt/adapt/target_volume.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/mesh/plane_cut.h"
 
@@ -136,6 +137,54 @@ std::optional<double> volume_crossing(const M& mesh, const Fractions& fractions,
   return sum / count;
 }
 
+// The cell across the face of c opposite its local face lf: on a grid, the next cell along
+// the axis that crosses lf. Invalid on the boundary.
+template <class M>
+CellId next_across(const M& mesh, CellId c, int lf) {
+  return mesh.neighbour(c, M::dim == 2 ? (lf + 2) % 4 : lf ^ 1);
+}
+
+// Local face of c glued to o.
+template <class M>
+int face_towards(const M& mesh, CellId c, CellId o) {
+  for (int lf = 0; lf < M::faces_per_cell; ++lf)
+    if (mesh.neighbour(c, lf) == o) return lf;
+  throw InternalError("face_towards: the cells are not neighbours");
+}
+
+// A sheet is a cell of material m whose two opposite faces along one axis both face other
+// materials. Where face f's side s (the cell `sheet`, material m) is one, the mean of the two
+// cells' planes thins it; instead the sheet gets the thickness of m's volume in the three
+// cells of the column (other, sheet, beyond), placed at its centroid: m sits against the
+// sheet in the two outer cells and in the sheet's middle. Returns where the sheet's side
+// facing `other` crosses the centres' segment, in cell lengths from the sheet's centre, or
+// nullopt when the cell is not a sheet along this axis.
+template <class M>
+std::optional<double> sheet_side(const M& mesh, const Fractions& fractions,
+                                 const IdVector<CellId, int>& material, CellId sheet,
+                                 CellId other) {
+  const int m = material[sheet];
+  const CellId beyond = next_across(mesh, sheet, face_towards(mesh, sheet, other));
+  if (!beyond.valid() || material[beyond] == m) return std::nullopt;
+  const double fo = fractions(other, m), fs = fractions(sheet, m), fb = fractions(beyond, m);
+  const double thickness = fo + fs + fb;
+  if (thickness <= 0) return std::nullopt;
+  const double centroid = (fo * (0.5 + fo / 2) - fb * (0.5 + fb / 2)) / thickness;
+  return centroid + thickness / 2;
+}
+
+// The crossing on the segment p0 p1 (0 at c0, 1 at c1) where exactly one of the face's cells
+// is a sheet along the segment's axis; nullopt otherwise.
+template <class M>
+std::optional<double> sheet_crossing(const M& mesh, const Fractions& fractions,
+                                     const IdVector<CellId, int>& material,
+                                     const InterfaceFace& f) {
+  const std::optional<double> s0 = sheet_side(mesh, fractions, material, f.c0, f.c1);
+  const std::optional<double> s1 = sheet_side(mesh, fractions, material, f.c1, f.c0);
+  if (s0.has_value() == s1.has_value()) return std::nullopt;
+  return s0 ? *s0 : 1 - *s1;
+}
+
 }  // namespace
 
 template <class M>
@@ -219,14 +268,15 @@ Targets compute_targets(const M& mesh, const Fractions& fractions,
     // Flat fractions give no gradient: fall back on the direction across the face (towards
     // m0, as the gradient of f_m0 - f_m1 points). The gradient is per unit length: the test
     // takes the change in fraction across the face, so that it holds in any unit.
-    f.normal = n.norm() * (p1 - p0).norm() > 1e-12 ? Vec3(n.normalized())
-                                                   : Vec3((p0 - p1).normalized());
+    f.normal =
+        n.norm() * (p1 - p0).norm() > 1e-12 ? Vec3(n.normalized()) : Vec3((p0 - p1).normalized());
     if (!is_mixed(f.c0, m0) && !is_mixed(f.c1, m0)) {
       // Both cells pure: the interface is the face itself.
       std::tie(f.point, f.normal) = face_plane(mesh, f.c0, f.lf);
       return;
     }
-    const std::optional<double> tv = volume_crossing(mesh, fractions, f, m0, p0, p1);
+    std::optional<double> tv = sheet_crossing(mesh, fractions, material, f);
+    if (!tv) tv = volume_crossing(mesh, fractions, f, m0, p0, p1);
     f.point = p0 + std::clamp(tv.value_or(t), 0.0, 1.0) * (p1 - p0);
   });
 
@@ -252,6 +302,7 @@ Targets compute_targets(const M& mesh, const Fractions& fractions,
     out.position[v] = p + boundary[v].project(sum[v] / count[v] - p);
     out.interface[v] = interface_directions(tensor[v], options.normal_share);
   }
+  conserve_target_volumes(mesh, fractions, material, boundary, out, options);
   return out;
 }
 

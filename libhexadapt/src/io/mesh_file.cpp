@@ -12,6 +12,7 @@
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/exodus.h"
 #include "hexadapt/io/text_case.h"
+#include "hexadapt/io/vtk_collection.h"
 #include "hexadapt/io/vtk_legacy.h"
 #include "hexadapt/io/vtk_xml.h"
 
@@ -73,12 +74,16 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
   const std::string ext = extension_of(path);
   if (is_exodus(ext)) return read_exodus(path, options);
   const bool xml = ext == ".vtu" || ext == ".vti" || ext == ".vtr" || ext == ".vts";
-  if (ext != ".vtk" && ext != ".txt" && !xml)
+  const bool collection = ext == ".pvtu" || ext == ".pvts" || ext == ".pvtr" || ext == ".pvti" ||
+                          ext == ".vtm" || ext == ".pvd";
+  if (ext != ".vtk" && ext != ".txt" && !xml && !collection)
     throw OptionError(path + ": unknown mesh file extension " + quote_token(ext) +
-                      " (supported for reading: .vtk .vtu .vti .vtr .vts .txt .exo .e .g)");
+                      " (supported for reading: .vtk .vtu .vti .vtr .vts .pvtu .pvts .pvtr "
+                      ".pvti .vtm .pvd .txt .exo .e .g)");
   const std::string content = read_whole_file(path);
   if (ext == ".vtk") return read_vtk_legacy(content, path, options);
   if (ext == ".txt") return read_text_case(content, path);
+  if (collection) return read_vtk_collection(content, path, options, read_whole_file);
   return read_vtk_xml(content, path, options);
 }
 

@@ -45,7 +45,7 @@ std::size_t select_time_step(const std::vector<double>& times, const ReadOptions
     if (*options.step < times.size()) return *options.step;
     throw InputError(file, "time steps",
                      "no time step " + std::to_string(*options.step) +
-                         " (steps count from 0); the file holds " + list_times(times));
+                         " (steps count from 0); the series holds " + list_times(times));
   }
   if (options.time) {
     const double scale = std::max(
@@ -53,7 +53,7 @@ std::size_t select_time_step(const std::vector<double>& times, const ReadOptions
     for (std::size_t k = 0; k < times.size(); ++k)
       if (std::abs(times[k] - *options.time) <= 1e-6 * scale) return k;
     throw InputError(file, "time steps",
-                     "no time step at t = " + time_text(*options.time) + "; the file holds " +
+                     "no time step at t = " + time_text(*options.time) + "; the series holds " +
                          list_times(times));
   }
   if (times.size() > 1)

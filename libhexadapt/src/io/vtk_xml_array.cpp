@@ -81,10 +81,11 @@ std::vector<T> read_values(const VtkXmlDocument& doc, const pugi::xml_node& e, S
   }
   ByteReader in = payload_reader(doc, e, format);
   const bool swap = doc.layout.big_endian == native_little_endian();
-  // Doubles in native order need no conversion: zlib inflates straight into the result.
+  // Doubles in native order need no conversion: compressed blocks decompress straight
+  // into the result.
   const bool direct = std::is_same_v<T, double> && t == ScalarType::float64 && !swap;
   std::vector<T> out;
-  if (direct && doc.layout.zlib) {
+  if (direct && doc.layout.compressor != Compressor::none) {
     read_payload(in, doc.layout, n * scalar_size(t), what, [&](std::size_t) {
       out.resize(n);
       return reinterpret_cast<unsigned char*>(out.data());

@@ -49,11 +49,13 @@ void read_layout(VtkXmlDocument& doc) {
                      "byte_order " + quote_token(order) + ": expected LittleEndian or BigEndian");
   doc.layout.big_endian = order == "BigEndian";
   const std::string compressor = r.attribute("compressor").as_string();
-  if (!compressor.empty() && compressor != "vtkZLibDataCompressor")
-    throw InputError(
-        doc.file, where,
-        "compressor " + quote_token(compressor) + " is not supported (only vtkZLibDataCompressor)");
-  doc.layout.zlib = !compressor.empty();
+  const std::optional<Compressor> c = compressor_of(compressor);
+  if (!c)
+    throw InputError(doc.file, where,
+                     "compressor " + quote_token(compressor) +
+                         " is not supported (vtkZLibDataCompressor, vtkLZ4DataCompressor or "
+                         "vtkLZMADataCompressor)");
+  doc.layout.compressor = *c;
 }
 
 }  // namespace

@@ -1,7 +1,5 @@
 #include "vtk_xml_payload.h"
 
-#include <zlib.h>
-
 #include <algorithm>
 #include <cstring>
 
@@ -12,9 +10,6 @@
 namespace hexadapt::io::detail {
 
 namespace {
-
-// zlib cannot expand data more than about 1032 times: a larger claimed size is a lie.
-constexpr std::uint64_t max_zlib_ratio = 1032;
 
 std::uint64_t header_word(const unsigned char* p, const BinaryLayout& layout) {
   const bool swap = layout.big_endian == native_little_endian();
@@ -73,25 +68,19 @@ BlockTable read_block_table(ByteReader& in, const BinaryLayout& layout, const st
                            "(truncated or corrupt)");
     t.compressed_total += t.compressed[k];
   }
-  // Each block's size is bounded by zlib's ratio first, so the total cannot overflow.
+  // Each block's size is bounded by the format's ratio first, so the total cannot overflow.
   const std::uint64_t last = t.last_size == 0 ? t.block_size : t.last_size;
+  const std::uint64_t ratio = max_expansion(layout.compressor);
   for (std::size_t k = 0; k < t.n_blocks; ++k) {
     const std::uint64_t size = k + 1 == t.n_blocks ? last : t.block_size;
-    if (size > t.compressed[k] * max_zlib_ratio + 64)
+    if (size > t.compressed[k] * ratio + 64)
       throw InputError(in.file(), where,
                        what + ": block " + std::to_string(k) + " claims " + bytes_text(size) +
-                           " from " + bytes_text(t.compressed[k]) + " of zlib data");
+                           " from " + bytes_text(t.compressed[k]) + " of " +
+                           compressor_name(layout.compressor) + " data");
     t.total += size;
   }
   return t;
-}
-
-// Inflates one block into exactly `size` bytes; returns false when the data is not that.
-bool inflate_block(const unsigned char* src, std::uint64_t n, unsigned char* dst,
-                   std::uint64_t size) {
-  uLongf out = static_cast<uLongf>(size);
-  const int rc = uncompress(dst, &out, src, static_cast<uLong>(n));
-  return rc == Z_OK && out == size;
 }
 
 Payload read_compressed(ByteReader& in, const BinaryLayout& layout,
@@ -105,7 +94,8 @@ Payload read_compressed(ByteReader& in, const BinaryLayout& layout,
                      what + ": compressed data holds " + bytes_text(t.total) + ", expected " +
                          bytes_text(expected));
   const std::size_t data_at = in.file_offset();
-  Payload packed = in.take(static_cast<std::size_t>(t.compressed_total), what + " (zlib blocks)");
+  Payload packed = in.take(static_cast<std::size_t>(t.compressed_total),
+                           what + " (" + compressor_name(layout.compressor) + " blocks)");
   Payload out;
   unsigned char* into = nullptr;
   if (allocate) {
@@ -120,14 +110,15 @@ Payload read_compressed(ByteReader& in, const BinaryLayout& layout,
   for_blocks(static_cast<std::int64_t>(t.n_blocks), [&](std::int64_t b) {
     const auto k = static_cast<std::size_t>(b);
     const std::uint64_t size = std::min<std::uint64_t>(t.block_size, expected - k * t.block_size);
-    ok[k] = inflate_block(packed.data + start[k], t.compressed[k], into + k * t.block_size, size);
+    ok[k] = decompress_block(layout.compressor, packed.data + start[k], t.compressed[k],
+                             into + k * t.block_size, size);
   });
   const auto bad = static_cast<std::size_t>(std::find(ok.begin(), ok.end(), 0) - ok.begin());
   if (bad < t.n_blocks)
     throw InputError(in.file(), "byte " + std::to_string(data_at + start[bad]),
-                     what + ": zlib block " + std::to_string(bad) +
-                         " is corrupt or does not "
-                         "inflate to its declared size");
+                     what + ": " + compressor_name(layout.compressor) + " block " +
+                         std::to_string(bad) +
+                         " is corrupt or does not decompress to its declared size");
   out.data = into;
   out.size = expected;
   return out;
@@ -177,7 +168,8 @@ Payload ByteReader::take(std::size_t n, const std::string& what) {
 Payload read_payload(ByteReader& in, const BinaryLayout& layout,
                      std::optional<std::size_t> expected_bytes, const std::string& what,
                      const std::function<unsigned char*(std::size_t)>& allocate) {
-  if (layout.zlib) return read_compressed(in, layout, expected_bytes, what, allocate);
+  if (layout.compressor != Compressor::none)
+    return read_compressed(in, layout, expected_bytes, what, allocate);
   const std::size_t at = in.file_offset();
   const Payload head = in.take(layout.header64 ? 8 : 4, what + " (size header)");
   const std::uint64_t n = header_word(head.data, layout);

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "vtk_xml_base64.h"
+#include "vtk_xml_decompress.h"
 
 namespace hexadapt::io::detail {
 
@@ -20,7 +21,7 @@ namespace hexadapt::io::detail {
 struct BinaryLayout {
   bool header64 = false;    ///< header_type="UInt64" (else UInt32)
   bool big_endian = false;  ///< byte_order="BigEndian"
-  bool zlib = false;        ///< compressor="vtkZLibDataCompressor"
+  Compressor compressor = Compressor::none;  ///< the compressor attribute
 };
 
 /// Bytes of an array in the file's byte order: either a view into the file or owned.
@@ -50,9 +51,10 @@ class ByteReader {
 };
 
 /// Reads the header and data of one array holding exactly `expected_bytes` bytes (any size
-/// the header gives when nullopt); decompresses zlib blocks in parallel. `what` names the
-/// array in errors. With `allocate`, zlib data is inflated into the memory it returns for
-/// the size (called once the sizes are checked) rather than into a new buffer.
+/// the header gives when nullopt); decompresses zlib, LZ4 or LZMA blocks in parallel. `what`
+/// names the array in errors. With `allocate`, compressed data is decompressed into the
+/// memory it returns for the size (called once the sizes are checked) rather than into a new
+/// buffer.
 Payload read_payload(ByteReader& in, const BinaryLayout& layout,
                      std::optional<std::size_t> expected_bytes, const std::string& what,
                      const std::function<unsigned char*(std::size_t)>& allocate = {});

@@ -83,11 +83,7 @@ MeshData read_vtk_xml(std::string_view content, const std::string& file,
   MeshData data;
   if (doc.type == "UnstructuredGrid")
     detail::read_unstructured(doc, options, data);
-  else if (doc.type == "ImageData")
-    detail::read_image(doc, options, data);
-  else if (doc.type == "RectilinearGrid")
-    detail::read_rectilinear(doc, options, data);
-  else if (doc.type == "StructuredGrid")
+  else if (doc.type == "ImageData" || doc.type == "RectilinearGrid" || doc.type == "StructuredGrid")
     detail::read_structured(doc, options, data);
   else
     throw InputError(file, detail::place(doc.root),

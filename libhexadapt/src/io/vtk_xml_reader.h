@@ -2,6 +2,9 @@
 // (the single Piece, point/cell/field data).
 #pragma once
 
+#include <array>
+#include <cstdint>
+
 #include "hexadapt/io/mesh_data.h"
 #include "hexadapt/io/mesh_file.h"
 #include "vtk_xml_document.h"
@@ -19,9 +22,20 @@ void read_attributes(const VtkXmlDocument& doc, const pugi::xml_node& dataset,
                      const pugi::xml_node& piece, std::size_t n_points, std::size_t n_cells,
                      MeshData& data);
 
+/// A structured piece (ImageData, RectilinearGrid, StructuredGrid) as its file holds it: its
+/// extent, its points in file order (i fastest, not yet mapped to a plane, no cells) and its
+/// arrays and metadata in `data`.
+struct StructuredPiece {
+  std::array<std::int64_t, 6> extent{};
+  std::array<std::int64_t, 3> dims{};
+  MeshData data;
+};
+
+/// Reads the one piece of a structured document (doc.type names the data set).
+StructuredPiece read_structured_piece(const VtkXmlDocument& doc);
+
 void read_unstructured(const VtkXmlDocument& doc, const ReadOptions& options, MeshData& data);
-void read_image(const VtkXmlDocument& doc, const ReadOptions& options, MeshData& data);
-void read_rectilinear(const VtkXmlDocument& doc, const ReadOptions& options, MeshData& data);
+/// An ImageData, RectilinearGrid or StructuredGrid document (doc.type says which).
 void read_structured(const VtkXmlDocument& doc, const ReadOptions& options, MeshData& data);
 
 }  // namespace hexadapt::io::detail

@@ -82,13 +82,10 @@ void for_each_point(const Block& b, F&& f) {
 
 }  // namespace
 
-void read_image(const VtkXmlDocument& doc, const ReadOptions& options, MeshData& data) {
-  const pugi::xml_node dataset = doc.root.child("ImageData");
-  const pugi::xml_node piece = single_piece(doc, dataset);
-  const Block b = block_of(doc, dataset, piece);
-  // Arrays first: their sizes are checked against the file before points are allocated.
-  read_attributes(doc, dataset, piece, b.n_points, b.n_cells, data);
-  refuse_empty_lattice(doc, piece, b, data);
+namespace {
+
+std::vector<Vec3> image_points(const VtkXmlDocument& doc, const pugi::xml_node& dataset,
+                               const Block& b) {
   const auto origin = numbers<3>(doc, dataset, "Origin", {0, 0, 0});
   const auto spacing = numbers<3>(doc, dataset, "Spacing", {1, 1, 1});
   const auto dir = numbers<9>(doc, dataset, "Direction", {1, 0, 0, 0, 1, 0, 0, 0, 1});
@@ -105,15 +102,11 @@ void read_image(const VtkXmlDocument& doc, const ReadOptions& options, MeshData&
                      static_cast<double>(b.extent[4] + k) * spacing[2]);
     points.push_back(identity ? Vec3(o + local) : Vec3(o + direction * local));
   });
-  fill_structured(data, b.dims, std::move(points), options, doc.file);
+  return points;
 }
 
-void read_rectilinear(const VtkXmlDocument& doc, const ReadOptions& options, MeshData& data) {
-  const pugi::xml_node dataset = doc.root.child("RectilinearGrid");
-  const pugi::xml_node piece = single_piece(doc, dataset);
-  const Block b = block_of(doc, dataset, piece);
-  read_attributes(doc, dataset, piece, b.n_points, b.n_cells, data);
-  refuse_empty_lattice(doc, piece, b, data);
+std::vector<Vec3> rectilinear_points(const VtkXmlDocument& doc, const pugi::xml_node& piece,
+                                     const Block& b) {
   const pugi::xml_node coords = piece.child("Coordinates");
   if (!coords) throw InputError(doc.file, place(piece), "no <Coordinates> element");
   std::array<std::vector<double>, 3> axis;
@@ -128,14 +121,11 @@ void read_rectilinear(const VtkXmlDocument& doc, const ReadOptions& options, Mes
     points.emplace_back(axis[0][static_cast<std::size_t>(i)], axis[1][static_cast<std::size_t>(j)],
                         axis[2][static_cast<std::size_t>(k)]);
   });
-  fill_structured(data, b.dims, std::move(points), options, doc.file);
+  return points;
 }
 
-void read_structured(const VtkXmlDocument& doc, const ReadOptions& options, MeshData& data) {
-  const pugi::xml_node dataset = doc.root.child("StructuredGrid");
-  const pugi::xml_node piece = single_piece(doc, dataset);
-  const Block b = block_of(doc, dataset, piece);
-  read_attributes(doc, dataset, piece, b.n_points, b.n_cells, data);
+std::vector<Vec3> grid_points(const VtkXmlDocument& doc, const pugi::xml_node& piece,
+                              const Block& b) {
   const pugi::xml_node pts = piece.child("Points");
   if (!pts || !pts.child("DataArray"))
     throw InputError(doc.file, place(piece), "no <Points> element with a DataArray");
@@ -143,7 +133,37 @@ void read_structured(const VtkXmlDocument& doc, const ReadOptions& options, Mesh
   std::vector<Vec3> points(b.n_points);
   for (std::size_t k = 0; k < b.n_points; ++k)
     points[k] = Vec3(a.values[3 * k], a.values[3 * k + 1], a.values[3 * k + 2]);
-  fill_structured(data, b.dims, std::move(points), options, doc.file);
+  return points;
+}
+
+}  // namespace
+
+StructuredPiece read_structured_piece(const VtkXmlDocument& doc) {
+  const pugi::xml_node dataset = doc.root.child(doc.type.c_str());
+  const pugi::xml_node piece = single_piece(doc, dataset);
+  const Block b = block_of(doc, dataset, piece);
+  StructuredPiece out;
+  out.extent = b.extent;
+  out.dims = b.dims;
+  // Arrays first: their sizes are checked against the file before points are allocated.
+  read_attributes(doc, dataset, piece, b.n_points, b.n_cells, out.data);
+  if (doc.type == "ImageData") {
+    refuse_empty_lattice(doc, piece, b, out.data);
+    out.data.points = image_points(doc, dataset, b);
+  } else if (doc.type == "RectilinearGrid") {
+    refuse_empty_lattice(doc, piece, b, out.data);
+    out.data.points = rectilinear_points(doc, piece, b);
+  } else {
+    out.data.points = grid_points(doc, piece, b);
+  }
+  return out;
+}
+
+void read_structured(const VtkXmlDocument& doc, const ReadOptions& options, MeshData& data) {
+  StructuredPiece p = read_structured_piece(doc);
+  data = std::move(p.data);
+  std::vector<Vec3> points = std::move(data.points);
+  fill_structured(data, p.dims, std::move(points), options, doc.file);
 }
 
 }  // namespace hexadapt::io::detail

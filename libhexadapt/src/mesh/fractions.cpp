@@ -72,6 +72,10 @@ std::string cell_where(CellId c) { return "cell " + std::to_string(c.value()); }
 
 Fractions extract_fractions(const io::MeshData& data, const FractionOptions& options,
                             FractionReport* report, const std::string& file) {
+  if (!options.labels.empty()) {
+    if (report) *report = FractionReport();
+    return fractions_from_labels(data, options, file);
+  }
   std::vector<std::string> names;
   const auto arrays = fraction_arrays(data, options, names, file);
   Fractions f(data.n_cells(), names);

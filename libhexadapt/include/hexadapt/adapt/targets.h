@@ -14,11 +14,18 @@
 // of the two cells whose share of m0 is strictly inside (0, 1), the plane of that normal
 // leaving the share of m0 on the m0 side; X is the mean of where those planes cut the
 // segment of the cell centres (clamped to the segment). A planar interface is thus found
-// exactly. When both cells are pure the interface is the face itself (its centre and
-// normal). When no plane can be found (degenerate cell, plane parallel to the segment) X
-// falls back on the linear crossing at t of the reference formula (DESIGN 4.3).
-// A node's target is the mean of its projections onto the planes (2D: lines) of its
-// interface faces, then projected onto the domain boundary when the node is on it.
+// exactly. Where one of the two cells is a sheet along the face's axis (a cell whose
+// opposite face also faces another material), the mean of the two planes would thin it
+// (0.2 / 0.6 / 0.2 across the sheet gives 0.8 cells): X is then the sheet's side with the
+// thickness of the material's volume in the three cells of the column, centred on that
+// volume's centroid (the outer cells' share against the sheet, the sheet's share in its
+// middle; cells of equal length along the axis assumed). When both cells are pure the
+// interface is the face itself (its centre and normal). When no plane can be found (degenerate
+// cell, plane parallel to the segment) X falls back on the linear crossing at t of the reference
+// formula (DESIGN 4.3). A node's target is the mean of its projections onto the planes (2D: lines)
+// of its interface faces, then projected onto the domain boundary when the node is on it. In 3D
+// each material's targets are then offset along their normal to give it its input volume
+// (adapt/target_volume.h).
 #pragma once
 
 #include <vector>
@@ -30,12 +37,24 @@
 
 namespace hexadapt {
 
+/// Where the volume-conserving offset of the targets runs: automatic is 3D only (in 2D the
+/// fractions' planes already hold the volumes of the generated cases to 0.01 %, and the
+/// offset costs reach on coarse real grids: see docs/results.md).
+enum class VolumeOffset { automatic, on, off };
+
 struct TargetOptions {
   double eps_factor = 0.01;        ///< eps = eps_factor * mean(d^2) in the gradient weights
   double tiny_denominator = 1e-5;  ///< |d| below this: the crossing is the face's middle, t = 1/2
   /// An interface normal direction counts for the node's sliding constraint when its weight
   /// is above this share of the strongest one (2D triple points and 3D triple curves).
   double normal_share = 0.2;
+  /// Volume-conserving offset of each material's interface (adapt/target_volume.h): where
+  /// it runs, sweeps at most, the farthest a target moves in local sizes, and the relative
+  /// volume error below which the sweeps stop.
+  VolumeOffset volume_offset = VolumeOffset::automatic;
+  int volume_sweeps = 8;
+  double volume_max_shift = 0.3;
+  double volume_tolerance = 1e-5;
 };
 
 /// The interface plane found on one face between two materials.

@@ -2,9 +2,11 @@
 //
 // Read: legacy .vtk (ASCII and binary; STRUCTURED_POINTS, RECTILINEAR_GRID, STRUCTURED_GRID,
 // UNSTRUCTURED_GRID), XML .vtu .vti .vtr .vts (ascii, base64, appended raw or base64, zlib,
-// UInt32/UInt64 headers), and the plain text formats of hand-made cases (.txt, DESIGN 7.1).
-// Exodus II .exo .e .g (hex or quad elements; element variables become cell arrays, a time
-// step is chosen by ReadOptions::step or ::time; see exodus.h).
+// UInt32/UInt64 headers; zlib, LZ4 or LZMA blocks), parallel, multi-block and time-series
+// files of them (.pvtu .pvts .pvtr .pvti .vtm .pvd, see vtk_collection.h), the plain text
+// formats of hand-made cases (.txt, DESIGN 7.1), and Exodus II .exo .e .g (hex or quad
+// elements; element variables become cell arrays; see exodus.h). The step of a time series
+// (.pvd or Exodus) is chosen by ReadOptions::step or ::time.
 // Write: .vtu (appended binary, zlib-compressed when large), legacy .vtk (binary) and Exodus II
 // .exo .e .g (one element block per material, side and node sets; see exodus.h).
 // Writes are atomic: a temporary file in the target directory, then a rename, so a failed
@@ -27,6 +29,9 @@ struct ReadOptions {
   Plane plane = Plane::automatic;  ///< which coordinate plane 2D cells live in
   std::optional<std::size_t> step;  ///< 0-based time step to read (time series)
   std::optional<double> time;  ///< time value to read
+  /// Pieces of a parallel file: points of different pieces closer than this times the
+  /// shortest cell edge at them are one point.
+  double weld_tolerance = 1e-6;
 };
 
 /// Which side sets and node sets an Exodus II file gets: the faces of the domain boundary

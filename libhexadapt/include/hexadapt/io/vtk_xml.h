@@ -2,7 +2,8 @@
 // "XML File Formats").
 //
 // Reading accepts every encoding VTK, ParaView and meshio write: ascii, inline base64,
-// appended raw or base64, zlib-compressed blocks, UInt32 or UInt64 headers, either byte
+// appended raw or base64, zlib-, LZ4- or LZMA-compressed blocks (vtkZLibDataCompressor,
+// vtkLZ4DataCompressor, vtkLZMADataCompressor), UInt32 or UInt64 headers, either byte
 // order. The XML structure is parsed by pugixml; raw appended data (not XML) is located by
 // its offset and decoded directly, so large files read at disk and zlib speed.
 #pragma once

@@ -12,6 +12,8 @@
 //   - every cell is then rescaled to sum exactly 1 (a cell left with all zeros is an error).
 #pragma once
 
+#include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -57,6 +59,14 @@ struct FractionOptions {
   double value_tolerance = 1e-4;  ///< how far outside [0,1] a value may be and still be clipped
   double sum_tolerance = 1e-4;    ///< how far from 1 a cell's sum may be and still be rescaled
   double zero_below = 1e-5;       ///< fractions below this are traces and become 0
+  /// A label map instead of fraction arrays: this integer cell array gives each cell's
+  /// material; every distinct value is one material (fraction 1 in its cells), in increasing
+  /// order of value. Exclusive with `arrays` and `void_material`.
+  std::string labels;
+  /// Names of label values; a value not listed is named label_<value>.
+  std::map<std::int64_t, std::string> label_names;
+  /// More distinct labels is an error (fractions are dense: cells x materials).
+  int max_labels = 1000;
 };
 
 struct FractionReport {
@@ -66,8 +76,17 @@ struct FractionReport {
   double max_sum_error = 0;      ///< largest |sum - 1| seen before repair
 };
 
-/// Reads the fraction arrays of `data` (file name `file` only for error messages).
+/// Reads the fraction arrays of `data` (file name `file` only for error messages), or the
+/// label map when options.labels is set.
 Fractions extract_fractions(const io::MeshData& data, const FractionOptions& options,
                             FractionReport* report = nullptr, const std::string& file = {});
+
+/// The materials of a label map: options.labels names an integer cell array (any numeric
+/// type, values exact integers); one material per distinct value in increasing order, named
+/// by options.label_names or label_<value>. Throws InputError (no such array, several
+/// components, a value that is not an integer, too many labels: naming the file, array and
+/// cell), OptionError (fraction arrays or a void material given too, two labels of one name).
+Fractions fractions_from_labels(const io::MeshData& data, const FractionOptions& options,
+                                const std::string& file = {});
 
 }  // namespace hexadapt
