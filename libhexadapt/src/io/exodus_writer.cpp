@@ -277,13 +277,7 @@ void check_writable(const MeshData& d, const std::string& path) {
   const auto limit = static_cast<std::size_t>(std::numeric_limits<int>::max());
   if (d.points.size() >= limit || d.cells.size() >= limit)
     throw OptionError(path + ": too large for the 32-bit ids of this writer");
-  for (const auto* group : {&d.point_data, &d.cell_data})
-    for (const DataArray& a : *group)
-      if (a.n_components < 1 ||
-          a.values.size() != static_cast<std::size_t>(a.n_components) *
-                                 (group == &d.point_data ? d.points.size()
-                                                         : static_cast<std::size_t>(d.n_cells())))
-        throw OptionError(path + ": array '" + a.name + "' does not match the mesh size");
+  d.check_array_sizes(path);
 }
 
 }  // namespace

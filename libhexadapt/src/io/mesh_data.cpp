@@ -52,6 +52,16 @@ MeshData from_kernel(const M& mesh) {
 
 }  // namespace
 
+void MeshData::check_array_sizes(const std::string& path) const {
+  for (const auto* group : {&point_data, &cell_data})
+    for (const DataArray& a : *group)
+      if (a.n_components < 1 ||
+          a.values.size() != static_cast<std::size_t>(a.n_components) *
+                                 (group == &point_data ? points.size()
+                                                       : static_cast<std::size_t>(n_cells())))
+        throw OptionError(path + ": array '" + a.name + "' does not match the mesh size");
+}
+
 const DataArray* MeshData::find_cell_array(const std::string& name) const {
   return find(cell_data, name);
 }

@@ -201,13 +201,7 @@ void add_attributes(XmlFile& f, pugi::xml_node piece, const MeshData& d) {
 void check_writable(const MeshData& d, const std::string& path) {
   if (d.dim != 2 && d.dim != 3)
     throw OptionError(path + ": nothing to write: the data has no quad or hex cells");
-  for (const auto* group : {&d.point_data, &d.cell_data})
-    for (const DataArray& a : *group)
-      if (a.n_components < 1 ||
-          a.values.size() != static_cast<std::size_t>(a.n_components) *
-                                 (group == &d.point_data ? d.points.size()
-                                                         : static_cast<std::size_t>(d.n_cells())))
-        throw OptionError(path + ": array '" + a.name + "' does not match the mesh size");
+  d.check_array_sizes(path);
 }
 
 // True when the cells are exactly the structured block of structured_cells.

@@ -54,6 +54,9 @@ struct MeshData {
   /// Adds or replaces a cell (point) array; throws Error when its size does not match.
   void set_cell_array(DataArray a);
   void set_point_array(DataArray a);
+  /// Throws OptionError naming `path` (the file about to be written) when an array's size
+  /// does not match the points or cells it belongs to.
+  void check_array_sizes(const std::string& path) const;
 };
 
 /// Builds the kernel for the data's dimension. Throws MeshError (bad topology) or
