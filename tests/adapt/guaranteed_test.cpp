@@ -175,25 +175,37 @@ M scaled(const M& mesh, double scale, double offset = 0) {
 }
 
 // The guarantee and the mesh do not depend on the unit or the place: the triple point in
-// units from 1e-20 to 1e20, or moved 1e6 away, gives the same assignment, and from it the
-// same cells, materials and smallest scaled Jacobian.
+// units from 1e-300 to 1e300, or moved 1e6 away, gives the same assignment, and from it the
+// same cells, materials and smallest scaled Jacobian (at 1e-300 squared lengths underflow,
+// and at 1e300 volumes overflow, unless the stages compute in the grid's UnitFrame). In a
+// power-of-two unit the arithmetic is the same: the mesh is the same to the last bit.
 TEST(GuaranteedMethod, TheSameMeshInAnyUnitAndPlace) {
   test::with_generated_case({"triple-point", {35, 15}, 2.0}, [](const auto& grid,
                                                               const Fractions& f,
                                                               const IdVector<CellId, int>& m) {
     const auto r = adapt(grid, f, m, guaranteed_options());
-    for (auto [scale, offset] : {std::pair{1e-20, 0.0}, {1e-6, 0.0}, {1e6, 0.0}, {1e20, 0.0},
-                                 {1.0, 1e6}}) {
+    for (auto [scale, offset] : {std::pair{1e-300, 0.0}, {1e-20, 0.0}, {1e-6, 0.0}, {1e6, 0.0},
+                                 {1e20, 0.0}, {1e300, 0.0}, {1.0, 1e6}}) {
       const auto moved = scaled(grid, scale, offset);
       EXPECT_EQ(assign::assign_materials(moved, f).correction.labels.raw(), m.raw())
           << scale << " " << offset;
       const auto s = adapt(moved, f, m, guaranteed_options());
+      EXPECT_FALSE(s.stopped_bad_input) << scale << " " << offset;
       EXPECT_EQ(s.mesh.n_cells(), r.mesh.n_cells()) << scale << " " << offset;
       EXPECT_EQ(s.material.raw(), r.material.raw()) << scale << " " << offset;
       EXPECT_NEAR(s.min_quality, r.min_quality, 1e-9) << scale << " " << offset;
       EXPECT_EQ(s.n_near_interface, r.n_near_interface) << scale << " " << offset;
       EXPECT_NEAR(s.mesh.point(NodeId(0)).x(), scale * r.mesh.point(NodeId(0)).x() + offset,
                   1e-9 * scale + 1e-6 * offset);
+      EXPECT_NEAR(s.dist_final / scale, r.dist_final, 1e-9 * r.dist_final) << scale;
+    }
+    for (double scale : {0x1p-1000, 0x1p-20, 0x1p40, 0x1p1000}) {
+      const auto s = adapt(scaled(grid, scale), f, m, guaranteed_options());
+      ASSERT_EQ(s.mesh.n_nodes(), r.mesh.n_nodes()) << scale;
+      for (NodeId v : id_range<NodeId>(r.mesh.n_nodes()))
+        ASSERT_EQ(s.mesh.point(v), scale * r.mesh.point(v)) << scale << " node " << v.value();
+      EXPECT_EQ(s.dist_final, scale * r.dist_final) << scale;
+      EXPECT_EQ(s.local_size.raw().front(), scale * r.local_size.raw().front()) << scale;
     }
   });
 }

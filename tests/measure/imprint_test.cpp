@@ -15,6 +15,7 @@
 #include "hexadapt/core/parallel.h"
 #include "hexadapt/io/mesh_data.h"
 #include "hexadapt/measure/discrepancy.h"
+#include "hexadapt/measure/quality_report.h"
 #include "hexadapt/measure/target_distance.h"
 #include "hexadapt/mesh/fractions.h"
 #include "hexadapt/mesh/structured.h"
@@ -399,6 +400,50 @@ TEST(Discrepancy, VolumeErrorPerMaterial) {
   EXPECT_THROW(discrepancy(im, f, o), OptionError);
   // Nothing has input volume: no worst material, nothing to fail.
   EXPECT_EQ(discrepancy(im, Fractions(4, {"a", "b", "c"}), {}).worst_material, -1);
+}
+
+// A jittered 3x3x3 output over a 3x3x3 grid with fractions, at 1e-300 (volumes 1e-900, below
+// the smallest double) and 1e300 (volumes overflow): the imprint runs in the grid's UnitFrame,
+// so the relative figures are those at unit scale, and the volumes it reports go back to the
+// grid's units (0 and infinity there: not representable); quality and mesh check as well.
+TEST(Discrepancy, TheSameFiguresAtAnyUnit) {
+  const io::MeshData grid = hexes(3, 3, 3);
+  io::MeshData out = hexes(3, 3, 3);
+  jitter(out, 0.2, 7, false);
+  for (std::size_t i = 0; i < out.points.size(); ++i)  // the domain stays the same box
+    for (int a = 0; a < 3; ++a)
+      if (grid.points[i][a] == 0 || grid.points[i][a] == 3) out.points[i][a] = grid.points[i][a];
+  Fractions f(grid.n_cells(), {"a", "b"});
+  for (CellId c : id_range<CellId>(grid.n_cells())) {
+    const double x = 0.1 + 0.8 * double(c.value() % 5) / 4;
+    f(c, 0) = x;
+    f(c, 1) = 1 - x;
+  }
+  const std::vector<int> m = pattern(out.n_cells(), 2);
+  const DiscrepancyReport base = discrepancy(imprint(grid, out, m, 2), f);
+  const QualityReport q = quality_report(out);
+  ASSERT_TRUE(q.check_ok());
+  for (double s : {1e-300, 1e-6, 1e300}) {
+    io::MeshData g = grid, o = out;
+    transform(g, Eigen::Matrix3d::Identity() * s, Vec3::Zero());
+    transform(o, Eigen::Matrix3d::Identity() * s, Vec3::Zero());
+    const DiscrepancyReport d = discrepancy(imprint(g, o, m, 2), f);
+    EXPECT_NEAR(d.relative, base.relative, 1e-12) << s;
+    for (int k = 0; k < 2; ++k)
+      EXPECT_NEAR(d.materials[static_cast<std::size_t>(k)].volume_error(),
+                  base.materials[static_cast<std::size_t>(k)].volume_error(), 1e-12)
+          << s;
+    const double volume = d.in_grid_units(d.input_volume), want = s * s * s * 27;
+    if (want > 0 && std::isfinite(want))
+      EXPECT_NEAR(volume / want, 1.0, 1e-12) << s;
+    else
+      EXPECT_EQ(volume, want) << s;  // 0 or infinity: not representable
+    const QualityReport r = quality_report(o);
+    EXPECT_NEAR(r.scaled_jacobian.min, q.scaled_jacobian.min, 1e-12) << s;
+    EXPECT_NEAR(r.shape.min, q.shape.min, 1e-12) << s;
+    EXPECT_TRUE(r.check_ok()) << s;
+    EXPECT_EQ(r.check.inverted_cells, 0) << s;
+  }
 }
 
 TEST(TargetDistances, SumAndMax) {

@@ -173,12 +173,13 @@ TEST(SizeReport, CellOutsideTheReferenceTakesTheNearest) {
   EXPECT_NEAR(r.mesh.first_below[0].local_size, 1.5, 1e-15);
 }
 
-// Against a reference of cells of side 1/2, scaled by 1e-4 or by 1e5 and moved far away:
-// the relative figures and the verdict stay, the lengths scale.
+// Against a reference of cells of side 1/2, scaled by 1e-300 to 1e300 and moved far away:
+// the relative figures and the verdict stay, the lengths scale (at 1e-300 squared lengths
+// underflow unless each cell is measured in its own frame).
 TEST(SizeReport, SameAnswerInAnyUnit) {
   const io::MeshData ref = io::from_mesh(make_hex_grid(4, 4, 4, Vec3::Zero(), Vec3(0.5, 0.5, 0.5)));
   const SizeReport base = size_report(cubes(0.03), &ref);
-  for (double s : {1e-4, 1e5}) {
+  for (double s : {1e-300, 1e-4, 1e5, 1e300}) {
     io::MeshData d = cubes(0.03), g = ref;
     scale(d, s, Vec3(1e3, -2e3, 5e2) * s);
     scale(g, s, Vec3(1e3, -2e3, 5e2) * s);

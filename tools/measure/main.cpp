@@ -190,11 +190,13 @@ void write_discrepancy_field(const CLI::App& app, DiscrepancyRun& run, const std
 }
 
 void print_discrepancy(const DiscrepancyReport& d) {
-  std::printf("  discrepancy  total %.6g  relative %.6g  max per cell %.6g (cell %d)\n", d.total,
-              d.relative, d.max_cell, d.max_cell_id.value());
+  std::printf("  discrepancy  total %.6g  relative %.6g  max per cell %.6g (cell %d)\n",
+              d.in_grid_units(d.total), d.relative, d.in_grid_units(d.max_cell),
+              d.max_cell_id.value());
   for (const auto& m : d.materials)
     std::printf("  volume %-12s input %.9g  output %.9g  imprinted %.9g  error %+.3g%s\n",
-                m.name.c_str(), m.input, m.output, m.imprinted, m.volume_error(),
+                m.name.c_str(), d.in_grid_units(m.input), d.in_grid_units(m.output),
+                d.in_grid_units(m.imprinted), m.volume_error(),
                 std::abs(m.volume_error()) > d.max_volume_error ? "  FAILED" : "");
 }
 

@@ -150,7 +150,7 @@ int run(const M& mesh, const Fractions& f, const std::vector<int>& assignment,
   j["discrepancy"] = total;
   j["discrepancy_pixelated"] = r.discrepancy;
   j["discrepancy_unpixelated"] = r.unpixelated_discrepancy;
-  j["relative_discrepancy"] = r.domain_volume > 0 ? total / r.domain_volume : 0.0;
+  j["relative_discrepancy"] = r.relative_discrepancy;
   j["method_stats"] = method_json(r, lib.method);
   if (!o.model.empty()) {
     j["model"] = {{"points", rec.model.points.size()},

@@ -1,6 +1,5 @@
 #include "hexadapt/adapt/adapt.h"
 
-#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -8,6 +7,7 @@
 #include "base_pipeline.h"
 #include "guaranteed_pipeline.h"
 #include "hexadapt/core/error.h"
+#include "hexadapt/mesh/unit_frame.h"
 
 namespace hexadapt {
 
@@ -79,37 +79,23 @@ void check_model(const reconstruct::InterfaceModel* model, int dim, int n_materi
                              std::to_string(n_materials) + ")");
 }
 
-// A grid farther from the origin than its own size is meshed with its lowest corner moved to
-// the origin: there (cells of 0.1 at 1e6) every difference of coordinates would lose digits,
-// and the grid would not mesh as the same grid at the origin does. The result is moved back.
+// Every length of the result from the frame the pipeline ran in back to the grid's.
 template <class M>
-M translated(const M& mesh, const Vec3& by) {
-  std::vector<Vec3> points;
-  std::vector<typename M::CellNodes> cells;
-  points.reserve(static_cast<std::size_t>(mesh.n_nodes()));
-  cells.reserve(static_cast<std::size_t>(mesh.n_cells()));
-  for (NodeId v : id_range<NodeId>(mesh.n_nodes())) points.push_back(mesh.point(v) + by);
-  for (CellId c : id_range<CellId>(mesh.n_cells())) cells.push_back(mesh.cell_nodes(c));
-  return M(std::move(points), std::move(cells));
-}
-
-template <class M>
-Vec3 local_origin(const M& mesh) {
-  Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
-  for (NodeId v : id_range<NodeId>(mesh.n_nodes())) {
-    low = low.cwiseMin(mesh.point(v));
-    high = high.cwiseMax(mesh.point(v));
+void result_to_world(AdaptResult<M>& r, const UnitFrame& f) {
+  r.mesh = to_world(r.mesh, f);
+  for (Vec3& t : r.target.raw()) t = f.to_world(t);
+  for (IdVector<NodeId, double>* d : {&r.distance, &r.surface_distance})
+    for (double& x : d->raw()) x = f.to_world(x);
+  for (double& x : r.local_size.raw()) x = f.to_world(x);
+  for (double* x : {&r.surface_dist_init, &r.surface_dist_final, &r.farthest_distance,
+                    &r.farthest_local_size, &r.dist_init, &r.dist_final,
+                    &r.correction.mean_displacement, &r.correction.max_displacement})
+    *x = f.to_world(*x);
+  for (CellFailure& c : r.failures) {
+    c.shortest_edge = f.to_world(c.shortest_edge);
+    c.min_length = f.to_world(c.min_length);
+    c.centroid = f.to_world(c.centroid);
   }
-  const bool far = mesh.n_nodes() > 0 && low.allFinite() && high.allFinite() &&
-                   low.norm() > (high - low).norm();
-  return far ? low : Vec3(Vec3::Zero());
-}
-
-template <class M>
-void translate_result(AdaptResult<M>& r, const Vec3& by) {
-  r.mesh = translated(r.mesh, by);
-  for (Vec3& t : r.target.raw()) t += by;
-  for (CellFailure& f : r.failures) f.centroid += by;
 }
 
 template <class M>
@@ -133,16 +119,15 @@ AdaptResult<M> adapt(const M& grid, const Fractions& fractions,
                      const reconstruct::InterfaceModel* model) {
   check_options(options);
   check_model(model, M::dim, fractions.n_materials());
-  const Vec3 origin = local_origin(grid);
-  if (origin == Vec3::Zero()) return run_pipeline(grid, fractions, material, options, model);
+  const UnitFrame frame = unit_frame(grid);
   std::optional<reconstruct::InterfaceModel> local_model;
   if (model) {
     local_model = *model;
-    for (Vec3& p : local_model->points) p -= origin;
+    for (Vec3& p : local_model->points) p = frame.to_local(p);
   }
-  AdaptResult<M> r = run_pipeline(translated(grid, Vec3(-origin)), fractions, material, options,
+  AdaptResult<M> r = run_pipeline(to_local(grid, frame), fractions, material, options,
                                   local_model ? &*local_model : nullptr);
-  translate_result(r, origin);
+  result_to_world(r, frame);
   return r;
 }
 

@@ -1,6 +1,7 @@
 #include "hexadapt/assign/assign.h"
 
 #include "hexadapt/mesh/cell_complex.h"
+#include "hexadapt/mesh/unit_frame.h"
 
 namespace hexadapt::assign {
 
@@ -11,7 +12,14 @@ AssignResult assign_materials(const M& mesh, const Fractions& fractions,
   Timer t;
   r.majority = majority_assignment(fractions);
   r.times.emplace_back("majority", t.seconds());
-  r.correction = correct_assignment(mesh, fractions, r.majority, options);
+  // A grid of 1e-300 (or 1e300) has no representable cell volumes: it is assigned in its
+  // UnitFrame, and the costs, volumes too, go back to its units.
+  const UnitFrame frame = far_unit_frame(mesh);
+  r.correction = frame.is_identity()
+                     ? correct_assignment(mesh, fractions, r.majority, options)
+                     : correct_assignment(to_local(mesh, frame), fractions, r.majority, options);
+  for (double* cost : {&r.correction.cost_initial, &r.correction.cost_final})
+    *cost = frame.to_world(*cost, M::dim);
   for (const auto& phase : r.correction.times) r.times.push_back(phase);
   return r;
 }

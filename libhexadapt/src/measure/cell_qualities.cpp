@@ -18,12 +18,13 @@ CellQualities cell_qualities(const io::MeshData& data, const Progress& progress,
   q.shape.resize(n);
   auto one_cell = [&](std::int64_t i) {
     const auto c = static_cast<std::size_t>(i);
+    int exponent = 0;  // shape measures do not depend on it
     if (data.dim == 3) {
-      const auto p = corners<8>(data, c);
+      const auto p = local_corners<8>(data, c, &exponent);
       q.scaled_jacobian[c] = hex_scaled_jacobian(p);
       q.shape[c] = hex_shape(p);
     } else {
-      const auto p = corners<4>(data, c);
+      const auto p = local_corners<4>(data, c, &exponent);
       q.scaled_jacobian[c] = quad_scaled_jacobian(p);
       q.shape[c] = quad_shape(p);
     }

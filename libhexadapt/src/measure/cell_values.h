@@ -4,12 +4,14 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/mesh_data.h"
 #include "hexadapt/measure/quality_report.h"
+#include "hexadapt/mesh/unit_frame.h"
 
 namespace hexadapt {
 
@@ -32,6 +34,36 @@ std::array<Vec3, N> corners(const io::MeshData& data, std::size_t c) {
   std::array<Vec3, N> p;
   for (std::size_t k = 0; k < N; ++k) p[k] = data.points[data.cells[c * N + k].idx()];
   return p;
+}
+
+/// The corners of cell c scaled by the power of two, 2^-`*exponent`, that brings the cell's
+/// largest coordinate extent into [1, 2) (world lengths = local lengths x 2^exponent). The
+/// scaling is exact, so measures taken there are those of the cell as given, to the last bit,
+/// but neither underflow nor overflow at any unit (a cell of 1e-300 has squared edges of
+/// 1e-600). Distinct corners are at most 2^53 extents from 0, so nothing overflows.
+template <std::size_t N>
+std::array<Vec3, N> local_corners(const io::MeshData& data, std::size_t c, int* exponent) {
+  std::array<Vec3, N> p = corners<N>(data, c);
+  double extent = 0;
+  for (const Vec3& x : p) extent = std::max(extent, (x - p[0]).cwiseAbs().maxCoeff());
+  *exponent = 0;
+  if (!(extent > 0) || !std::isfinite(extent)) return p;
+  std::frexp(extent, exponent);
+  --*exponent;
+  for (Vec3& x : p)
+    x = Vec3(std::ldexp(x.x(), -*exponent), std::ldexp(x.y(), -*exponent),
+             std::ldexp(x.z(), -*exponent));
+  return p;
+}
+
+/// The points and cells of `data` in `frame` (no arrays).
+inline io::MeshData geometry_in_frame(const io::MeshData& data, const UnitFrame& frame) {
+  io::MeshData local;
+  local.dim = data.dim;
+  local.cells = data.cells;
+  local.points.reserve(data.points.size());
+  for (const Vec3& p : data.points) local.points.push_back(frame.to_local(p));
+  return local;
 }
 
 /// The mean of cell c's corners.

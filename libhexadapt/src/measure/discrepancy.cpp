@@ -74,25 +74,26 @@ DiscrepancyReport discrepancy(const Imprint& im, const Fractions& f,
   }
   r.relative = r.input_volume > 0 ? r.total / r.input_volume : 0;
   r.max_volume_error = options.max_volume_error;
+  r.volume_exponent = im.volume_exponent;
   r.worst_material = worst_material(r.materials);
   return r;
 }
 
 std::string discrepancy_json(const DiscrepancyReport& r) {
   nlohmann::ordered_json j;
-  j["total"] = r.total;
+  j["total"] = r.in_grid_units(r.total);
   j["relative"] = r.relative;
-  j["input_volume"] = r.input_volume;
-  j["max_cell"] = {{"value", r.max_cell},
+  j["input_volume"] = r.in_grid_units(r.input_volume);
+  j["max_cell"] = {{"value", r.in_grid_units(r.max_cell)},
                    {"cell", r.max_cell_id.valid() ? nlohmann::ordered_json(r.max_cell_id.value())
                                                   : nlohmann::ordered_json(nullptr)}};
   auto mats = nlohmann::ordered_json::array();
   for (const auto& m : r.materials)
     mats.push_back({{"name", m.name},
-                    {"input", m.input},
-                    {"output", m.output},
-                    {"imprinted", m.imprinted},
-                    {"imprinted_minus_input", m.imprinted - m.input},
+                    {"input", r.in_grid_units(m.input)},
+                    {"output", r.in_grid_units(m.output)},
+                    {"imprinted", r.in_grid_units(m.imprinted)},
+                    {"imprinted_minus_input", r.in_grid_units(m.imprinted - m.input)},
                     {"volume_error", m.volume_error()}});
   j["materials"] = mats;
   const auto* worst =

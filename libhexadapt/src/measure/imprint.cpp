@@ -6,6 +6,7 @@
 
 #include "cell_bins.h"
 #include "cell_pieces.h"
+#include "cell_values.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/core/parallel_progress.h"
 #include "hexadapt/io/mesh_data.h"
@@ -119,11 +120,9 @@ void check_inputs(const io::MeshData& input, const io::MeshData& output,
                            std::to_string(n_materials) + ")");
 }
 
-}  // namespace
-
-Imprint imprint(const io::MeshData& input, const io::MeshData& output,
-                const std::vector<int>& material, int n_materials, const ImprintOptions& options) {
-  check_inputs(input, output, material, n_materials);
+Imprint imprint_as_given(const io::MeshData& input, const io::MeshData& output,
+                         const std::vector<int>& material, int n_materials,
+                         const ImprintOptions& options) {
   Imprint r;
   r.n_materials = n_materials;
   r.n_cells = input.n_cells();
@@ -149,6 +148,19 @@ Imprint imprint(const io::MeshData& input, const io::MeshData& output,
       slot[material[static_cast<std::size_t>(o)]] += v;
     }
   });
+  return r;
+}
+
+}  // namespace
+
+Imprint imprint(const io::MeshData& input, const io::MeshData& output,
+                const std::vector<int>& material, int n_materials, const ImprintOptions& options) {
+  check_inputs(input, output, material, n_materials);
+  const UnitFrame frame = far_unit_frame(input.points);
+  if (frame.is_identity()) return imprint_as_given(input, output, material, n_materials, options);
+  Imprint r = imprint_as_given(geometry_in_frame(input, frame), geometry_in_frame(output, frame),
+                               material, n_materials, options);
+  r.volume_exponent = frame.exponent * input.dim;
   return r;
 }
 

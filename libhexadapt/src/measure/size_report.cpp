@@ -90,9 +90,13 @@ std::vector<double> array_sizes(const io::MeshData& mesh, const io::DataArray& a
 std::vector<double> reference_sizes(const io::MeshData& mesh, const io::MeshData& reference,
                                     const CellSizes& grid_sizes, const Progress& progress,
                                     index_t* outside) {
+  const UnitFrame frame = far_unit_frame(reference.points);
   std::vector<Vec3> centroids(static_cast<std::size_t>(mesh.n_cells()));
-  for (std::size_t c = 0; c < centroids.size(); ++c) centroids[c] = centroid(mesh, c);
-  const PointCells at = locate(reference, centroids, progress, 0.6, 1.0);
+  for (std::size_t c = 0; c < centroids.size(); ++c)
+    centroids[c] = frame.to_local(centroid(mesh, c));
+  const PointCells at =
+      frame.is_identity() ? locate(reference, centroids, progress, 0.6, 1.0)
+                          : locate(geometry_in_frame(reference, frame), centroids, progress, 0.6, 1.0);
   *outside = at.outside;
   std::vector<double> local(centroids.size());
   for (std::size_t c = 0; c < local.size(); ++c) {

@@ -20,7 +20,7 @@ TargetDistances target_distances(const io::MeshData& mesh, const std::string& ar
   for (NodeId n : id_range<NodeId>(mesh.n_points())) {
     const Vec3 t(a->values[3 * n.idx()], a->values[3 * n.idx() + 1], a->values[3 * n.idx() + 2]);
     if (!t.allFinite()) continue;
-    const double d = (mesh.points[n.idx()] - t).norm();
+    const double d = (mesh.points[n.idx()] - t).stableNorm();  // no underflow at 1e-300
     ++r.nodes;
     r.sum += d;
     if (r.nodes == 1 || d > r.max) {

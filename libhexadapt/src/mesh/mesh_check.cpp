@@ -5,6 +5,7 @@
 
 #include "hexadapt/core/parallel.h"
 #include "hexadapt/mesh/cell_complex.h"
+#include "hexadapt/mesh/unit_frame.h"
 #include "mesh_check_parts.h"
 
 namespace hexadapt {
@@ -59,10 +60,8 @@ void find_inverted_cells(const M& mesh, const MeshCheckOptions& options, MeshChe
   }
 }
 
-}  // namespace
-
 template <class M>
-MeshCheckResult check_mesh(const M& mesh, const MeshCheckOptions& options) {
+MeshCheckResult check_as_given(const M& mesh, const MeshCheckOptions& options) {
   using namespace mesh_check_detail;
   MeshCheckResult result;
   const std::vector<Vec3> points = all_points(mesh);
@@ -74,6 +73,28 @@ MeshCheckResult check_mesh(const M& mesh, const MeshCheckOptions& options) {
   find_hanging_nodes(mesh, points, boundary, options, result);
   find_nonmanifold_nodes(mesh, points, options, result);
   return result;
+}
+
+// Positions and lengths of a result found in `frame` back in the mesh's units.
+void to_world(MeshCheckResult& r, const UnitFrame& frame) {
+  for (auto* list : {&r.first_hanging, &r.first_unreferenced, &r.first_duplicates,
+                     &r.first_nonmanifold})
+    for (NodeIssue& n : *list) n.position = frame.to_world(n.position);
+  for (CellIssue& c : r.first_inverted) c.centroid = frame.to_world(c.centroid);
+  r.duplicate_distance = frame.to_world(r.duplicate_distance);
+}
+
+}  // namespace
+
+// A mesh of 1e-300 (or 1e300) is checked in its UnitFrame: there its Jacobians do not
+// underflow (every cell would count as inverted) nor overflow.
+template <class M>
+MeshCheckResult check_mesh(const M& mesh, const MeshCheckOptions& options) {
+  const UnitFrame frame = far_unit_frame(mesh);
+  if (frame.is_identity()) return check_as_given(mesh, options);
+  MeshCheckResult r = check_as_given(to_local(mesh, frame), options);
+  to_world(r, frame);
+  return r;
 }
 
 template MeshCheckResult check_mesh(const QuadMesh&, const MeshCheckOptions&);

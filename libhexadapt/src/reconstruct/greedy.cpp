@@ -49,7 +49,7 @@ class Greedy {
     for (std::size_t i = 0; i < slot_of_block_.size(); ++i) {
       const index_t b = slot_of_block_[i];
       double vol = 0;
-      for (std::int64_t p = px.first_pixel(b); p < px.first_pixel(b + 1); ++p) vol += px.volume(p);
+      for (std::int64_t p = px.first_pixel(b); p < px.first_pixel(b + 1); ++p) vol += weight(p);
       for (int m = 0; m < nm_; ++m) {
         const double share = f(px.block_cell(b), m);
         owed_[i * static_cast<std::size_t>(nm_) + static_cast<std::size_t>(m)] = share * vol;
@@ -73,7 +73,7 @@ class Greedy {
     std::vector<double> carried(static_cast<std::size_t>(nm_), 0.0);
     for (std::int64_t p = px_.first_pixel(b); p < px_.first_pixel(b + 1); ++p)
       if (px_.label(p) < 0)
-        for (int m = 0; m < nm_; ++m) carried[static_cast<std::size_t>(m)] += px_.volume(p) * vf(p)[m];
+        for (int m = 0; m < nm_; ++m) carried[static_cast<std::size_t>(m)] += weight(p) * vf(p)[m];
     for (std::int64_t p = px_.first_pixel(b); p < px_.first_pixel(b + 1); ++p) {
       if (px_.label(p) >= 0) continue;
       double* v = vf(p);
@@ -103,7 +103,7 @@ class Greedy {
     for (const auto& [conf, p] : cand) {
       const double* v = vf(p);
       const int m = static_cast<int>(std::max_element(v, v + nm_) - v);
-      if (owed(slot, m) < 0.5 * px_.volume(p)) continue;
+      if (owed(slot, m) < 0.5 * weight(p)) continue;
       assign(slot, p, m);
       ++fixed;
     }
@@ -126,6 +126,13 @@ class Greedy {
   }
 
  private:
+  // A pixel's volume in units of its block's first pixel (when that one has a volume): every
+  // comparison of volumes stays inside one block, and in these units the pixels of an affine
+  // cell weigh exactly 1, so the choices do not depend on the unit or the place of the grid.
+  double weight(std::int64_t p) const {
+    const double unit = px_.volume(px_.first_pixel(px_.pixel_block(p)));
+    return unit > 0 ? px_.volume(p) / unit : px_.volume(p);
+  }
   double* vf(std::int64_t p) {
     const index_t slot = free_index_[static_cast<std::size_t>(px_.pixel_block(p))];
     const std::int64_t local = p - px_.first_pixel(px_.pixel_block(p));
@@ -142,7 +149,7 @@ class Greedy {
     px_.set_label(p, m);
     slot_label_[static_cast<std::size_t>(static_cast<std::int64_t>(slot) * px_.pixels_per_block() +
                                          (p - px_.first_pixel(px_.pixel_block(p))))] = m;
-    owed(slot, m) -= px_.volume(p);
+    owed(slot, m) -= weight(p);
     double* v = vf(p);
     for (int k = 0; k < nm_; ++k) v[k] = k == m ? 1.0 : 0.0;
   }

@@ -2,6 +2,7 @@
 
 #include "hexadapt/core/error.h"
 #include "hexadapt/mesh/cell_complex.h"
+#include "hexadapt/mesh/unit_frame.h"
 
 namespace hexadapt::reconstruct {
 
@@ -47,11 +48,23 @@ double unpixelated_discrepancy(const M& mesh, const PixelMesh& px, const Fractio
   return d;
 }
 
-}  // namespace
+// Every length, area and volume of a reconstruction made in `frame` back in the grid's units.
+void to_world(Reconstruction& out, const UnitFrame& frame, int dim) {
+  if (frame.is_identity()) return;
+  PixelMesh& px = out.pixels;
+  for (Vec3& p : px.block_corners()) p = frame.to_world(p);
+  for (double& v : px.volumes()) v = frame.to_world(v, dim);
+  px.set_mean_width(frame.to_world(px.mean_width()));
+  for (Vec3& p : out.model.points) p = frame.to_world(p);
+  ReconstructResult& r = out.result;
+  for (double* v : {&r.discrepancy, &r.unpixelated_discrepancy, &r.domain_volume})
+    *v = frame.to_world(*v, dim);
+}
 
 template <class M>
-Reconstruction reconstruct(const M& mesh, const Fractions& fractions,
-                           const std::vector<int>& assignment, const ReconstructOptions& options) {
+Reconstruction reconstruct_in_frame(const M& mesh, const Fractions& fractions,
+                                    const std::vector<int>& assignment,
+                                    const ReconstructOptions& options) {
   Reconstruction out;
   ReconstructResult& r = out.result;
   PixelOptions po = options.pixels;
@@ -81,6 +94,8 @@ Reconstruction reconstruct(const M& mesh, const Fractions& fractions,
   r.discrepancy = discrepancy(out.pixels, fractions);
   r.unpixelated_discrepancy =
       unpixelated_discrepancy(mesh, out.pixels, fractions, assignment, &r.domain_volume);
+  if (r.domain_volume > 0)
+    r.relative_discrepancy = (r.discrepancy + r.unpixelated_discrepancy) / r.domain_volume;
   r.times.emplace_back("metrics", t.seconds());
   if (options.extract_model) {
     t.restart();
@@ -89,6 +104,17 @@ Reconstruction reconstruct(const M& mesh, const Fractions& fractions,
     r.times.emplace_back("model", t.seconds());
   }
   if (options.progress) options.progress("done", 1);
+  return out;
+}
+
+}  // namespace
+
+template <class M>
+Reconstruction reconstruct(const M& mesh, const Fractions& fractions,
+                           const std::vector<int>& assignment, const ReconstructOptions& options) {
+  const UnitFrame frame = unit_frame(mesh);
+  Reconstruction out = reconstruct_in_frame(to_local(mesh, frame), fractions, assignment, options);
+  to_world(out, frame, M::dim);
   return out;
 }
 

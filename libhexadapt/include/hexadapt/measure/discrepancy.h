@@ -7,6 +7,7 @@
 // within 1 % of its input volume).
 #pragma once
 
+#include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
@@ -43,6 +44,9 @@ struct DiscrepancyReport {
   std::vector<MaterialVolume> materials;
   double max_volume_error = std::numeric_limits<double>::infinity();  ///< the bound checked
   int worst_material = -1;  ///< largest |volume_error| (-1: no material has input volume)
+  int volume_exponent = 0;  ///< the volumes above are in units of 2^volume_exponent (Imprint)
+  /// A volume of this report in the grid's units (0 or infinity when not representable).
+  double in_grid_units(double volume) const { return std::ldexp(volume, volume_exponent); }
   /// Every material with input volume within max_volume_error.
   bool passed() const;
 };

@@ -41,6 +41,10 @@ struct Imprint {
   std::vector<double> volume;         ///< [c * n_materials + m]: V(c ∩ output cells of m)
   std::vector<double> cell_volume;    ///< V(c) (12-tet volume of a hex, area of a quad)
   std::vector<double> output_volume;  ///< per material: total volume of its output cells
+  /// Every volume above is in units of 2^volume_exponent: 0, but for grids whose size lies
+  /// beyond 2^+-64, whose volumes are measured in their UnitFrame (unit_frame.h) so that they
+  /// neither underflow nor overflow (a cell of 1e-300 has a volume of 1e-900).
+  int volume_exponent = 0;
   double at(index_t c, int m) const {
     return volume[static_cast<std::size_t>(c) * static_cast<std::size_t>(n_materials) +
                   static_cast<std::size_t>(m)];

@@ -43,6 +43,9 @@ struct ReconstructResult {
   double discrepancy = 0;        ///< over the pixelated cells
   double unpixelated_discrepancy = 0;  ///< cells without pixels whose assignment is not pure
   double domain_volume = 0;
+  /// (discrepancy + unpixelated_discrepancy) / domain_volume, computed before the volumes go
+  /// back to the grid's units (where a grid at 1e-300 has no representable volume).
+  double relative_discrepancy = 0;
   GreedyResult greedy;
   AnnealingResult annealing;
   GraphCutResult graph_cut;
