@@ -71,7 +71,8 @@ TEST(SizeCriterion, AMoveIsRefusedOnlyBecauseOfSize) {
 
 // Given its surface (here the line y = 1 through the target), the node refused at 0.109 from
 // the corner slides along it instead: the nearest ring point that keeps the edge >= 0.1 is
-// 1/16 of its mean edge length (1) short of the target.
+// 1/16 of its mean edge length (1) short of the target. (No drag: the other nodes are given
+// no constraint here, so the corner ahead would be dragged.)
 TEST(SizeCriterion, ANodeRefusedBySizeSlidesOntoItsSurface) {
   QuadMesh mesh = two_squares();
   const Targets t = squeeze_target(mesh);
@@ -79,12 +80,43 @@ TEST(SizeCriterion, ANodeRefusedBySizeSlidesOntoItsSurface) {
   const NodeId top = node_at(mesh, Vec3(1, 1, 0));
   surface[top].add(Vec3(0, 1, 0));
   const SizeCriterion size = size_criterion(mesh, 0.1);
-  const MoveResult r = controlled_move(mesh, t, MoveOptions{}, size, &surface);
+  MoveOptions o;
+  o.drag = false;
+  const MoveResult r = controlled_move(mesh, t, o, size, &surface);
   EXPECT_EQ(r.n_reached, 0);
   EXPECT_EQ(r.n_slid, 1);
   EXPECT_TRUE(r.on_surface[top]);
   EXPECT_NEAR((mesh.point(top) - Vec3(1.95 - 0.0625, 1, 0)).norm(), 0, 1e-12);
   EXPECT_NEAR(surface_distance(mesh.point(top), t.position[top], surface[top]), 0, 1e-12);
+  EXPECT_TRUE(failing_cells(mesh, 0.3, size).empty());
+}
+
+// Three unit squares in a row, node (1, 1) heading for (1.95, 1) along the top side: the
+// free node (2, 1) ahead of it stops it at the size criterion, unless it is dragged along.
+// Dragged one step at a time, it keeps the edge between them at 1 - 0.95 x 15 / 16 = 0.109
+// and ends 0.059 right of where it was; every cell keeps both criteria.
+TEST(SizeCriterion, AFreeNodeAheadIsDraggedAlong) {
+  const QuadMesh grid = make_quad_grid(3, 1);
+  const Targets t = squeeze_target(grid);
+  const SizeCriterion size = size_criterion(grid, 0.1);
+  const auto surface = boundary_constraints(grid);
+  const NodeId ahead = node_at(grid, Vec3(2, 1, 0));
+  MoveOptions o;
+  o.drag = false;
+  QuadMesh stopped = grid;
+  const MoveResult without = controlled_move(stopped, t, o, size, &surface);
+  EXPECT_EQ(without.n_reached, 0);
+  EXPECT_EQ(without.n_drags, 0);
+  EXPECT_EQ(stopped.point(ahead), Vec3(2, 1, 0));
+
+  o.drag = true;
+  QuadMesh mesh = grid;
+  const MoveResult with = controlled_move(mesh, t, o, size, &surface);
+  EXPECT_EQ(with.n_reached, 1);
+  EXPECT_EQ(with.n_drags, 1);
+  EXPECT_EQ(mesh.point(node_at(grid, Vec3(1, 1, 0))), Vec3(1.95, 1, 0));
+  EXPECT_NEAR(mesh.point(ahead).x(), 2 + 0.95 / 16, 1e-12);
+  EXPECT_EQ(mesh.point(ahead).y(), 1.0);  // it stays on the domain's side
   EXPECT_TRUE(failing_cells(mesh, 0.3, size).empty());
 }
 

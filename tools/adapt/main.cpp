@@ -37,6 +37,7 @@ struct Args {
   double threshold = 0.3;
   double min_edge = 0.1;
   int steps = 16;
+  bool drag = true;
   int smooth_iterations = 20;
 };
 
@@ -232,6 +233,7 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   options.threshold = args.threshold;
   options.min_edge = args.min_edge;
   options.steps = args.steps;
+  options.drag = args.drag;
   options.smooth.iterations = args.smooth_iterations;
   options.progress = cli::terminal_progress(common);
   options.allow_bad_input = args.allow_bad_input;
@@ -268,6 +270,7 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   report["min_edge"] = options.min_edge;
   report["layers"] = to_string(options.layers);
   report["steps"] = options.steps;
+  report["drag"] = options.drag;
   report["materials"] = fractions.names();
   report["model"] = args.model;
   io::MeshData out;
@@ -342,6 +345,9 @@ int main(int argc, char** argv) {
   app.add_option("--steps", args.steps, "Steps of the controlled move")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  app.add_flag("--drag,!--no-drag", args.drag,
+               "guaranteed: retry a refused step of the controlled move with the free nodes "
+               "ahead of the node moved along (default on)");
   app.add_option("--smooth-iterations", args.smooth_iterations, "Smoothing sweeps")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();

@@ -28,6 +28,34 @@ bool try_position(M& mesh, NodeId n, const Vec3& p, double threshold, const Size
   return false;
 }
 
+// Puts n at p with its free edge neighbours ahead of it moved by the same displacement
+// (projected on their constraints); keeps that when every cell around n and around them
+// keeps the criteria, and returns the dragged nodes then (none: nothing moved).
+template <class M>
+std::vector<NodeId> try_drag(M& mesh, NodeId n, const Vec3& p, double threshold,
+                             const SizeCriterion& size, const Targets& targets,
+                             const IdVector<NodeId, NodeConstraint>& constraint) {
+  const Vec3 old = mesh.point(n);
+  const Vec3 d = p - old;
+  std::vector<std::pair<NodeId, Vec3>> ahead;
+  for (NodeId f : edge_neighbours(mesh, n))
+    if (!targets.has[f] && !constraint[f].fixed(M::dim) && (mesh.point(f) - old).dot(d) > 0)
+      ahead.emplace_back(f, mesh.point(f));
+  if (ahead.empty()) return {};
+  mesh.set_point(n, p);
+  for (const auto& [f, at] : ahead) mesh.set_point(f, at + constraint[f].project(d));
+  bool ok = min_score_around(mesh, n, size, threshold) >= threshold;
+  for (std::size_t i = 0; ok && i < ahead.size(); ++i)
+    ok = min_score_around(mesh, ahead[i].first, size, threshold) >= threshold;
+  std::vector<NodeId> dragged;
+  for (const auto& [f, at] : ahead) {
+    if (ok) dragged.push_back(f);
+    else mesh.set_point(f, at);
+  }
+  if (!ok) mesh.set_point(n, old);
+  return dragged;
+}
+
 // An orthonormal basis of the displacements a constraint allows (2D meshes: in the xy plane).
 template <int Dim>
 std::vector<Vec3> tangent_basis(const NodeConstraint& c) {
@@ -136,30 +164,47 @@ MoveResult controlled_move(M& mesh, const Targets& targets, const MoveOptions& o
   const double inv_steps = 1.0 / options.steps;
   // A refused node waits until something around it moves before trying again.
   IdVector<NodeId, char> waiting(nn, 0);
+  auto step_target = [&](NodeId n) {
+    const int k = done[n] + 1;
+    return k == options.steps ? targets.position[n]
+                              : Vec3(start[n] + (k * inv_steps) * (targets.position[n] - start[n]));
+  };
+  auto wake_around = [&](NodeId v) {
+    for (CellId c : mesh.node_cells(v))
+      for (NodeId o : mesh.cell_nodes(c)) waiting[o] = 0;
+  };
   for (bool advanced = true; advanced && out.rounds < max_rounds; ++out.rounds) {
     advanced = false;
     for (const auto& set : sets) {
-      std::vector<char> moved(set.size(), 0);
+      std::vector<char> moved(set.size(), 0), refused(set.size(), 0);
       for_each_item(set.size(), [&](std::int64_t i) {
         const NodeId n = set[static_cast<std::size_t>(i)];
         if (done[n] >= options.steps || waiting[n]) return;
-        const int k = done[n] + 1;
-        const Vec3 p = k == options.steps
-                           ? targets.position[n]
-                           : Vec3(start[n] + (k * inv_steps) * (targets.position[n] - start[n]));
-        if (!try_position(mesh, n, p, options.threshold, size)) {
-          waiting[n] = 1;
-          return;
-        }
-        done[n] = k;
-        moved[static_cast<std::size_t>(i)] = 1;
+        if (try_position(mesh, n, step_target(n), options.threshold, size))
+          moved[static_cast<std::size_t>(i)] = 1;
+        else
+          refused[static_cast<std::size_t>(i)] = 1;
       });
-      for (std::size_t i = 0; i < set.size(); ++i) {
-        if (!moved[i]) continue;
-        advanced = true;
-        for (CellId c : mesh.node_cells(set[i]))
-          for (NodeId o : mesh.cell_nodes(c)) waiting[o] = 0;
+      // Drags move nodes that other members of the set share cells with: one at a time.
+      std::vector<NodeId> dragged;
+      for (std::size_t i = 0; options.drag && surface && i < set.size(); ++i) {
+        if (!refused[i]) continue;
+        const std::vector<NodeId> d =
+            try_drag(mesh, set[i], step_target(set[i]), options.threshold, size, targets, *surface);
+        if (d.empty()) continue;
+        moved[i] = 1;
+        refused[i] = 0;
+        ++out.n_drags;
+        dragged.insert(dragged.end(), d.begin(), d.end());
       }
+      for (std::size_t i = 0; i < set.size(); ++i) {
+        if (refused[i]) waiting[set[i]] = 1;
+        if (!moved[i]) continue;
+        ++done[set[i]];
+        advanced = true;
+        wake_around(set[i]);
+      }
+      for (NodeId f : dragged) wake_around(f);
     }
   }
   for (NodeId n : moving)

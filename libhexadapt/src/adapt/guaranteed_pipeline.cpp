@@ -237,6 +237,7 @@ void run_layers(const M& grid, const IdVector<CellId, int>& material, const Targ
   MoveOptions mo;
   mo.threshold = options.threshold;
   mo.steps = options.steps;
+  mo.drag = options.drag;
   r.layers = layers;
   FirstMove<M> f =
       first_move(grid, material, grid_targets, grid_size, pillows_first(layers), n_materials, mo,

@@ -64,6 +64,9 @@ struct AdaptOptions {
   /// Shortest edge / local input size every cell keeps (guaranteed); 0 = no size criterion.
   double min_edge = 0.1;
   int steps = 16;                                ///< steps of the controlled move
+  /// guaranteed: a refused step of the controlled move is retried with the free nodes ahead
+  /// of the node dragged along (MoveOptions::drag).
+  bool drag = true;
   BoundaryOptions boundary;                      ///< feature detection on the domain boundary
   TargetOptions targets;                         ///< target computation
   TargetCorrectionOptions correction;            ///< guaranteed, 3D: targets smoothed on the model

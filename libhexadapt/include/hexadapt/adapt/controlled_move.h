@@ -6,7 +6,13 @@
 // Jacobian >= threshold and its shortest edge >= the size criterion's floor (size_criterion.h;
 // a cell already failing may not get worse). A node that
 // is refused stays where it is and tries again on the next round, so a neighbour moving away
-// can unblock it; rounds stop when no node advances. When the interface surfaces are given
+// can unblock it; rounds stop when no node advances. With `drag`, a refused step is tried
+// once more with the node's free edge neighbours ahead of it (no target, not fixed by the
+// domain boundary, on the side it moves to) moved by the same displacement, projected on
+// their boundary constraint; it is kept when every cell around the node and around them
+// keeps the criteria. A free node in front of an interface node then makes way for it
+// instead of stopping it at the size criterion (most of the nodes the criterion stopped in
+// 2D). Drags run one node after another, after each parallel pass, in the set's order. When the interface surfaces are given
 // (the plane, line or point through each target that the node may slide on: the interface
 // normals and the domain boundary, sliding_constraints()), a node still short of its target
 // then slides onto its surface instead: it takes the nearest ring of points of the surface
@@ -28,6 +34,7 @@ struct MoveOptions {
   double threshold = 0.3;  ///< S_q: the smallest scaled Jacobian a step may leave
   int steps = 16;          ///< a node moves 1/steps of its way at a time
   int max_rounds = 0;      ///< rounds over all nodes; 0 = 4 * steps
+  bool drag = true;        ///< a refused step is retried with the free nodes ahead dragged
 };
 
 struct MoveResult {
@@ -37,6 +44,7 @@ struct MoveResult {
   index_t n_slid = 0;  ///< nodes that slid onto their surface away from their target
   index_t n_moving = 0;            ///< nodes that had somewhere to go
   index_t n_reached = 0;           ///< of those, how many got all the way
+  index_t n_drags = 0;             ///< steps taken with free nodes dragged along
   int rounds = 0;
   double dist = 0;  ///< sum over target nodes of |position - target| after
 };
