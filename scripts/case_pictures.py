@@ -88,7 +88,7 @@ def main():
     args = ap.parse_args()
     tool = os.path.join(args.tools, "hexadapt-generate")
     listing = subprocess.run([tool, "--list"], check=True, capture_output=True, text=True).stdout
-    names = args.cases or [line.split()[0] for line in listing.splitlines() if line.strip()]
+    names = args.cases or [line.split()[0] for line in listing.splitlines()[1:] if line.strip()]
     os.makedirs(args.out, exist_ok=True)
     with tempfile.TemporaryDirectory() as tmp:
         for name in names:

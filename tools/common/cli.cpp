@@ -55,6 +55,8 @@ std::map<std::int64_t, std::string> parse_label_names(const std::vector<std::str
 }  // namespace
 
 void add_common_options(CLI::App& app, CommonOptions& options, bool with_output) {
+  app.set_version_flag("--version", std::string("hexadapt ") + HEXADAPT_VERSION,
+                       "Print the version and exit");
   if (with_output) app.add_option("-o,--output", options.output, "Output file")->required();
   app.add_option("--json", options.json, "Write a machine-readable report (JSON) to this file");
   app.add_flag("-q,--quiet", options.quiet, "Only print errors");

@@ -1,8 +1,12 @@
 // hexadapt-generate: writes a named synthetic case (a grid with vf_<material> cell arrays).
 //   hexadapt-generate triple-point --dims 420,180 --samples 8 -o tp.vf.vtu
 //   hexadapt-generate --list
+#include <algorithm>
+#include <array>
 #include <cstdio>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "cli.h"
 #include "hexadapt/core/error.h"
@@ -14,13 +18,22 @@ namespace gen = hexadapt::generate;
 
 namespace {
 
+// One case a line under a header, the columns as wide as their longest entry.
 void list_cases() {
+  std::vector<std::array<std::string, 5>> rows = {{"case", "dims", "flow", "materials", "summary"}};
   for (const auto& c : gen::cases()) {
-    std::string dims = c.d2.available ? (c.d3.available ? "2D/3D" : "2D") : "3D";
     std::string mats;
     for (const auto& m : c.materials) mats += (mats.empty() ? "" : ",") + m;
-    std::printf("%-13s %-5s %-4s %-26s %s\n", c.name.c_str(), dims.c_str(),
-                c.has_flow ? "flow" : "", mats.c_str(), c.summary.c_str());
+    rows.push_back({c.name, c.d2.available ? (c.d3.available ? "2D/3D" : "2D") : "3D",
+                    c.has_flow ? "yes" : "no", mats, c.summary});
+  }
+  std::array<std::size_t, 5> width{};
+  for (const auto& r : rows)
+    for (std::size_t k = 0; k < r.size(); ++k) width[k] = std::max(width[k], r[k].size());
+  for (const auto& r : rows) {
+    std::string line;
+    for (std::size_t k = 0; k + 1 < r.size(); ++k) line += r[k] + std::string(width[k] + 2 - r[k].size(), ' ');
+    std::printf("%s%s\n", line.c_str(), r.back().c_str());
   }
 }
 

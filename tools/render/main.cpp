@@ -2,6 +2,7 @@
 // material (with a legend), quality or any cell field (with a colour bar), with the cells'
 // edges, optionally another grid (e.g. the input grid) and the `target` arrows drawn over.
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -105,8 +106,16 @@ std::string default_title(const Args& a, const io::MeshData& d, const std::strin
   return t;
 }
 
+bool ends_with_png(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".png";
+}
+
 int render_mesh(const CLI::App& app, const cli::CommonOptions& common, Args& a) {
   if (common.output.empty()) throw OptionError("-o OUT.png is required");
+  if (!ends_with_png(common.output))
+    throw OptionError("-o " + common.output + ": render writes PNG pictures only (-o OUT.png)");
   cli::check_files({{"input", a.input}, {"--overlay", a.overlay}},
                    {{"-o", common.output}, {"--json", common.json}});
   render::PictureOptions options = picture_options(a);
