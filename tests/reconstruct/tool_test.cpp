@@ -93,6 +93,13 @@ TEST(ReconstructTool, ThreeDimensionalModelGoesToOpenMesh) {
   ASSERT_EQ(run(in + " -o " + (dir / "p.vtu").string() + " --model " + (dir / "m.vtk").string()), 0);
   EXPECT_TRUE(fs::exists(dir / "m.vtk"));
   EXPECT_TRUE(fs::exists(dir / "m.m0-m1.om"));
+  // -q: nothing on stderr, OpenMesh's "#bytes written" included.
+  const fs::path err = dir / "err.txt";
+  const std::string cmd = std::string(HEXADAPT_TOOLS_DIR) + "/hexadapt-reconstruct " + in +
+                          " -o " + (dir / "q.vtu").string() + " --model " +
+                          (dir / "q.vtk").string() + " -q 2>" + err.string();
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  EXPECT_EQ(fs::file_size(err), 0u);
 }
 
 TEST(ReconstructTool, ClearErrors) {

@@ -3,6 +3,7 @@
 
 #include "hexadapt/reconstruct/model_io.h"
 
+#include <iostream>
 #include <map>
 #include <sstream>
 
@@ -18,12 +19,14 @@ std::string name_of(const std::vector<std::string>& names, int m) {
                                                                : std::to_string(m);
 }
 
-// OpenMesh talks on its own streams (omerr for faces it cannot add, omlog for byte counts
-// of written files); the library never prints, so they are muted while we call it.
+// OpenMesh talks on its own streams (omerr for faces it cannot add, omout) and on std::clog
+// (its .om writer's "#bytes written"); the library never prints, so they are muted while we
+// call it.
 class QuietOpenMesh {
  public:
   QuietOpenMesh()
-      : err_(omerr().is_enabled()), log_(omlog().is_enabled()), out_(omout().is_enabled()) {
+      : err_(omerr().is_enabled()), log_(omlog().is_enabled()), out_(omout().is_enabled()),
+        clog_(std::clog.rdbuf(nullptr)) {
     omerr().disable();
     omlog().disable();
     omout().disable();
@@ -32,12 +35,15 @@ class QuietOpenMesh {
     if (err_) omerr().enable();
     if (log_) omlog().enable();
     if (out_) omout().enable();
+    std::clog.rdbuf(clog_);
+    std::clog.clear();
   }
   QuietOpenMesh(const QuietOpenMesh&) = delete;
   QuietOpenMesh& operator=(const QuietOpenMesh&) = delete;
 
  private:
   bool err_, log_, out_;
+  std::streambuf* clog_;
 };
 
 }  // namespace
