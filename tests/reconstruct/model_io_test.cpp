@@ -97,6 +97,18 @@ TEST(ModelIo, VtkReadsBackWhatItWrote) {
   expect_same_model(f3.model, r3.model);
 }
 
+// Names with spaces, commas, '%' and a tab come back as they were: the title line separates
+// names with spaces (they came back split, and adapt then found the model's materials not
+// the grid's).
+TEST(ModelIo, NamesWithSpacesAndCommasRoundTrip) {
+  const auto c = testcase::five_by_five();
+  const auto r = reconstruct(c.mesh, c.fractions, c.majority, ReconstructOptions{});
+  const fs::path dir = temp_dir("names");
+  const std::vector<std::string> names = {"Body, Nose", "50% air", "a\tb"};
+  write_model_vtk(r.model, names, (dir / "m.vtk").string());
+  EXPECT_EQ(read_model_vtk((dir / "m.vtk").string()).materials, names);
+}
+
 TEST(ModelIo, VtkReaderNamesTheFileAndLine) {
   const auto c = testcase::sphere(5, 1.8);
   const auto r = reconstruct(c.mesh, c.fractions, c.majority, ReconstructOptions{});

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "hexadapt/io/mesh_file.h"
+#include "hexadapt/mesh/structured.h"
 #include "tools/tool_fixture.h"
 
 namespace hexadapt::test {
@@ -47,6 +49,32 @@ TEST_F(CliTool, GenerateListsItsCasesInColumnsUnderAHeader) {
       EXPECT_NE(lines[i][at], ' ') << column << " in: " << lines[i];
     }
   }
+}
+
+// Fraction arrays named as a real solver names them go through every stage, the 3D model
+// included: --fractions took the comma for a separator, and the model's title line split the
+// names at their spaces (adapt then refused the model as another grid's).
+TEST_F(CliTool, MaterialNamesWithSpacesAndCommasGoThroughEveryStage) {
+  io::MeshData d = io::from_mesh(make_hex_grid(6, 6, 6));
+  io::DataArray body{"Volume Fraction for Body, Nose", 1, io::ScalarType::float64, {}};
+  io::DataArray air{"Volume Fraction for Air", 1, io::ScalarType::float64, {}};
+  for (index_t c = 0; c < d.n_cells(); ++c) {
+    const bool inside = c % 6 >= 2 && c % 6 < 4 && c / 6 % 6 >= 2 && c / 6 % 6 < 4 && c / 36 >= 2 && c / 36 < 4;
+    body.values.push_back(inside ? 1.0 : 0.0);
+    air.values.push_back(inside ? 0.0 : 1.0);
+  }
+  d.set_cell_array(body);
+  d.set_cell_array(air);
+  io::write_mesh(d, path("in.vtu"));
+  const std::string arrays = "--fractions 'Volume Fraction for Body, Nose' 'Volume Fraction for Air'";
+  ToolRun r = run("assign", "-o " + path("a.vtu") + " " + arrays + " -- " + path("in.vtu"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = run("reconstruct", path("a.vtu") + " -o " + path("p.vtu") + " --model " + path("m.vtk") +
+                             " -q " + arrays);
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = run("adapt", path("a.vtu") + " -o " + path("o.vtu") + " --model " + path("m.vtk") +
+                       " --correction -q " + arrays);
+  EXPECT_EQ(r.code, 0) << r.err;
 }
 
 }  // namespace

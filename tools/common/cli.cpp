@@ -89,8 +89,9 @@ io::WriteOptions CommonOptions::write_options() const {
 void add_input_options(CLI::App& app, InputOptions& options) {
   FractionOptions& f = options.fractions;
   app.add_option("--fractions", f.arrays,
-                 "Fraction cell arrays, in material order (default: every vf_<material>)")
-      ->delimiter(',');
+                 "Fraction cell arrays, in material order (default: every vf_<material>): one "
+                 "argument per array, or names separated by commas; an argument naming an "
+                 "array is taken whole (\"Volume Fraction for Body, Nose\")");
   app.add_option("--void", f.void_material, "Name a material that receives 1 - sum of the others");
   app.add_option("--value-tolerance", f.value_tolerance,
                  "How far outside [0,1] a fraction may be and still be clipped")

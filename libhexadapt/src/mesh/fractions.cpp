@@ -30,6 +30,33 @@ bool Fractions::is_pure(CellId c) const { return (*this)(c, majority(c)) >= 1.0;
 
 namespace {
 
+// The array names `entries` stand for: an entry naming a cell array is that array, whatever
+// it holds ("Volume Fraction for Body, Nose"); another one holding commas lists the names
+// between them ("vf_a,vf_b"). Throws InputError naming the first missing array.
+std::vector<std::string> requested_arrays(const io::MeshData& data,
+                                          const std::vector<std::string>& entries,
+                                          const std::string& file) {
+  std::vector<std::string> out;
+  for (const std::string& e : entries) {
+    if (data.find_cell_array(e) || e.find(',') == std::string::npos) {
+      out.push_back(e);
+      continue;
+    }
+    std::size_t from = 0;
+    for (std::size_t comma; (comma = e.find(',', from)) != std::string::npos; from = comma + 1)
+      out.push_back(e.substr(from, comma - from));
+    out.push_back(e.substr(from));
+  }
+  for (const std::string& n : out)
+    if (!data.find_cell_array(n)) {
+      std::string known;
+      for (const auto& a : data.cell_data) known += (known.empty() ? "'" : ", '") + a.name + "'";
+      throw InputError(file, "", "no cell array named '" + n + "' (the cell arrays: " +
+                                     (known.empty() ? "none" : known) + ")");
+    }
+  return out;
+}
+
 std::vector<const io::DataArray*> fraction_arrays(const io::MeshData& data,
                                                   const FractionOptions& options,
                                                   std::vector<std::string>& names,
@@ -45,10 +72,8 @@ std::vector<const io::DataArray*> fraction_arrays(const io::MeshData& data,
       throw InputError(file, "", "no cell array named vf_<material>; name the fraction "
                                  "arrays explicitly");
   } else {
-    for (const auto& n : options.arrays) {
-      const io::DataArray* a = data.find_cell_array(n);
-      if (!a) throw InputError(file, "", "no cell array named '" + n + "'");
-      arrays.push_back(a);
+    for (const auto& n : requested_arrays(data, options.arrays, file)) {
+      arrays.push_back(data.find_cell_array(n));
       names.push_back(n.size() > 3 && n.compare(0, 3, "vf_") == 0 ? n.substr(3) : n);
     }
   }

@@ -9,14 +9,20 @@
 
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/atomic_file.h"
+#include "model_title.h"
 
 namespace hexadapt::reconstruct {
 
 namespace {
 
+// A material's name in a file name: '/' (and control bytes) would leave the folder.
 std::string name_of(const std::vector<std::string>& names, int m) {
-  return m >= 0 && static_cast<std::size_t>(m) < names.size() ? names[static_cast<std::size_t>(m)]
-                                                               : std::to_string(m);
+  std::string n = m >= 0 && static_cast<std::size_t>(m) < names.size()
+                      ? names[static_cast<std::size_t>(m)]
+                      : std::to_string(m);
+  for (char& c : n)
+    if (c == '/' || static_cast<unsigned char>(c) < ' ') c = '_';
+  return n;
 }
 
 // OpenMesh talks on its own streams (omerr for faces it cannot add, omout) and on std::clog
@@ -53,7 +59,7 @@ void write_model_vtk(const InterfaceModel& model, const std::vector<std::string>
   std::ostringstream s;
   s.precision(17);
   s << "# vtk DataFile Version 3.0\nhexadapt interface model; materials:";
-  for (const auto& n : materials) s << ' ' << n;
+  for (const auto& n : materials) s << ' ' << detail::title_name(n);
   s << "\nASCII\nDATASET POLYDATA\nPOINTS " << model.points.size() << " double\n";
   for (const Vec3& p : model.points) s << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
   const std::size_t nf = model.facets.size(), nc = model.curves.size(), nv = model.corners.size();

@@ -7,6 +7,7 @@
 #include "../io/legacy_scanner.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/reconstruct/model_io.h"
+#include "model_title.h"
 
 namespace hexadapt::reconstruct {
 
@@ -29,7 +30,7 @@ void read_header(LegacyScanner& in, ModelFile& out) {
   if (title.rfind(title_prefix, 0) != 0)
     in.fail_at(at, "expected the title '" + std::string(title_prefix) + " ...' of hexadapt-reconstruct --model");
   std::istringstream names(title.substr(title_prefix.size()));
-  for (std::string n; names >> n;) out.materials.push_back(n);
+  for (std::string n; names >> n;) out.materials.push_back(detail::name_from_title(n));
   if (!keyword_is(in.expect_token("ASCII"), "ASCII")) in.fail("expected ASCII");
   if (!keyword_is(in.expect_token("DATASET"), "DATASET") ||
       !keyword_is(in.expect_token("POLYDATA"), "POLYDATA"))

@@ -53,6 +53,8 @@ class Fractions {
 
 struct FractionOptions {
   /// Cell arrays to read, in order; empty: every cell array named vf_<material>, in file order.
+  /// An entry that names no array but holds commas lists the names between them ("vf_a,vf_b");
+  /// one naming an array is that array, commas or spaces in its name included.
   std::vector<std::string> arrays;
   /// If not empty, a material of this name receives 1 - sum of the others.
   std::string void_material;

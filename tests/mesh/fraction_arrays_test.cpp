@@ -1,0 +1,61 @@
+// Choosing the fraction arrays (FractionOptions::arrays): real solver output names them with
+// spaces and commas ("Volume Fraction for Body, Nose").
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "hexadapt/core/error.h"
+#include "hexadapt/io/mesh_data.h"
+#include "hexadapt/mesh/fractions.h"
+#include "hexadapt/mesh/structured.h"
+
+namespace hexadapt {
+namespace {
+
+io::MeshData two_cells(const std::vector<std::string>& names) {
+  io::MeshData d = io::from_mesh(make_quad_grid(2, 1));
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    io::DataArray a;
+    a.name = names[k];
+    a.values = {k == 0 ? 1.0 : 0.0, k == 0 ? 0.0 : 1.0 / static_cast<double>(names.size() - 1)};
+    d.set_cell_array(a);
+  }
+  return d;
+}
+
+TEST(FractionArrays, AnArrayIsNamedWholeWithItsCommasAndSpaces) {
+  const io::MeshData d = two_cells({"Volume Fraction for Body, Nose", "Volume Fraction for Air"});
+  FractionOptions o;
+  o.arrays = {"Volume Fraction for Body, Nose", "Volume Fraction for Air"};
+  const Fractions f = extract_fractions(d, o, nullptr, "in.vtu");
+  EXPECT_EQ(f.names(), o.arrays);
+  EXPECT_EQ(f(CellId(0), 0), 1.0);
+  EXPECT_EQ(f(CellId(1), 1), 1.0);
+}
+
+TEST(FractionArrays, CommasSeparateNamesWhenNoArrayHoldsThemAll) {
+  const io::MeshData d = two_cells({"vf_a", "vf_b", "vf_c"});
+  FractionOptions o;
+  o.arrays = {"vf_c,vf_a", "vf_b"};
+  EXPECT_EQ(extract_fractions(d, o, nullptr, "in.vtu").names(),
+            (std::vector<std::string>{"c", "a", "b"}));
+}
+
+TEST(FractionArrays, AMissingArrayIsNamedWithTheArraysThereAre) {
+  const io::MeshData d = two_cells({"vf_a", "vf_b"});
+  FractionOptions o;
+  o.arrays = {"vf_a,vf_x"};
+  try {
+    extract_fractions(d, o, nullptr, "in.vtu");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("in.vtu"), std::string::npos) << what;
+    EXPECT_NE(what.find("'vf_x'"), std::string::npos) << what;
+    EXPECT_NE(what.find("'vf_a', 'vf_b'"), std::string::npos) << what;
+  }
+}
+
+}  // namespace
+}  // namespace hexadapt
