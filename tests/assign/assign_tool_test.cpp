@@ -95,6 +95,33 @@ TEST_F(AssignTool, WritesBothAssignmentsAndAReport) {
   EXPECT_EQ(report["materials"], (nlohmann::json{"a", "b", "c"}));
 }
 
+// Three cells of a 0.6 / 0.1 / 0.3 mix: b and c are nowhere the majority and get no cell.
+// The assignment is right to do so, but they are then lost to every later stage: the tool
+// says so on stderr and gives each material's input and assigned volume in the report.
+TEST_F(AssignTool, AMaterialThatIsNowhereTheMajorityIsReportedLost) {
+  io::MeshData data = io::from_mesh(make_quad_grid(3, 1));
+  const char* names[3] = {"vf_a", "vf_b", "vf_c"};
+  const double share[3] = {0.6, 0.1, 0.3};
+  for (int m = 0; m < 3; ++m) data.set_cell_array({names[m], 1, io::ScalarType::float64,
+                                                   {share[m], share[m], share[m]}});
+  io::write_mesh(data, path("mix.vtu"));
+  const ToolRun r = run(path("mix.vtu") + " -o " + path("out.vtu") + " --json " + path("r.json"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("material 'b' has no cell after the assignment"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("material 'c' has no cell"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("(30 % of the domain"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("material 'a'"), std::string::npos) << r.err;
+  std::ifstream in(path("r.json"));
+  const auto materials = nlohmann::json::parse(in)["assign"]["materials"];
+  ASSERT_EQ(materials.size(), 3u);
+  EXPECT_EQ(materials[0]["assigned_cells"], 3);
+  EXPECT_DOUBLE_EQ(materials[0]["assigned_volume"].get<double>(), 3.0);
+  EXPECT_DOUBLE_EQ(materials[0]["input_volume"].get<double>(), 1.8);
+  EXPECT_EQ(materials[2]["name"], "c");
+  EXPECT_EQ(materials[2]["assigned_cells"], 0);
+  EXPECT_NEAR(materials[2]["input_share"].get<double>(), 0.3, 1e-12);
+}
+
 TEST_F(AssignTool, RunningOutOfConfigurationsExitsThreeAndWritesThePartialResult) {
   const ToolRun r = run(path("case.vtu") + " -o " + path("out.vtu") + " --keep 1 --paper-order" +
                         " --partial " + path("partial.vtu") + " --json " + path("report.json"));

@@ -1,6 +1,7 @@
 // hexadapt-assign: majority assignment and manifold correction of a grid with volume
 // fractions (paper sec. 3). Reads any mesh file with fraction arrays, writes the same grid
 // and fractions plus Int32 cell arrays `material` (final) and `majority` (initial).
+#include <cstdio>
 #include <sstream>
 
 #include "cli.h"
@@ -106,6 +107,31 @@ cli::Json result_json(const assign::AssignResult& r, const FractionReport& fr) {
   return j;
 }
 
+cli::Json balance_json(const std::vector<assign::MaterialBalance>& balance,
+                       const Fractions& fractions) {
+  cli::Json out = cli::Json::array();
+  for (std::size_t m = 0; m < balance.size(); ++m)
+    out.push_back({{"name", fractions.names()[m]},
+                   {"input_volume", balance[m].input_volume},
+                   {"input_share", balance[m].input_share},
+                   {"assigned_volume", balance[m].assigned_volume},
+                   {"assigned_cells", balance[m].assigned_cells}});
+  return out;
+}
+
+// A material nowhere the majority gets no cell and is gone from every later stage.
+void warn_vanished(const std::vector<assign::MaterialBalance>& balance, const Fractions& fractions) {
+  for (std::size_t m = 0; m < balance.size(); ++m) {
+    if (!balance[m].vanished()) continue;
+    char share[32];
+    std::snprintf(share, sizeof share, "%.3g", 100 * balance[m].input_share);
+    log(LogLevel::warning, "material '" + fractions.names()[m] + "' has no cell after the "
+                           "assignment: it is nowhere the majority (" + share +
+                           " % of the domain's volume in the input); it is lost to every "
+                           "later stage");
+  }
+}
+
 std::string failure_message(const assign::CorrectionFailure& f, const Fractions& fractions,
                             int keep) {
   std::ostringstream s;
@@ -140,6 +166,7 @@ int run_assign(const CLI::App& app, Options& o) {
   for (const auto& p : r.times) times.push_back(p);
   log_info("non-manifold nodes at first: " + std::to_string(r.correction.non_manifold_initial) +
            ", cells changed: " + std::to_string(r.correction.cells_changed));
+  warn_vanished(r.balance, fractions);
   t.restart();
   const std::string out = r.correction.solved ? o.common.output : o.partial;
   if (!out.empty())
@@ -159,6 +186,7 @@ int run_assign(const CLI::App& app, Options& o) {
                        {"max_leaves", o.correction.max_leaves},
                        {"paper_order", o.paper_order}};
   report["assign"] = result_json(r, fr);
+  report["assign"]["materials"] = balance_json(r.balance, fractions);
   if (r.correction.failure)
     report["assign"]["failure"] = failure_json(*r.correction.failure, fractions);
   report["exit_code"] = r.correction.failure ? cli::target_missed : cli::ok;

@@ -15,11 +15,18 @@ AssignResult assign_materials(const M& mesh, const Fractions& fractions,
   // A grid of 1e-300 (or 1e300) has no representable cell volumes: it is assigned in its
   // UnitFrame, and the costs, volumes too, go back to its units.
   const UnitFrame frame = far_unit_frame(mesh);
-  r.correction = frame.is_identity()
-                     ? correct_assignment(mesh, fractions, r.majority, options)
-                     : correct_assignment(to_local(mesh, frame), fractions, r.majority, options);
+  auto assign_in_frame = [&](const M& local) {
+    r.correction = correct_assignment(local, fractions, r.majority, options);
+    r.balance = material_balance(local, fractions, r.correction.labels);
+  };
+  if (frame.is_identity())
+    assign_in_frame(mesh);
+  else
+    assign_in_frame(to_local(mesh, frame));
   for (double* cost : {&r.correction.cost_initial, &r.correction.cost_final})
     *cost = frame.to_world(*cost, M::dim);
+  for (MaterialBalance& b : r.balance)
+    for (double* v : {&b.input_volume, &b.assigned_volume}) *v = frame.to_world(*v, M::dim);
   for (const auto& phase : r.correction.times) r.times.push_back(phase);
   return r;
 }

@@ -5,6 +5,7 @@
 
 #include "hexadapt/assign/correction.h"
 #include "hexadapt/assign/majority.h"
+#include "hexadapt/assign/material_balance.h"
 
 namespace hexadapt::assign {
 
@@ -12,6 +13,9 @@ struct AssignResult {
   Labels majority;              ///< eq. (2), before correction
   CorrectionResult correction;  ///< labels: the final assignment, with statistics
   PhaseTimes times;             ///< majority, then the correction's phases
+  /// Per material, input and assigned volumes of the final assignment (in the grid's units;
+  /// shares computed before, so a grid of 1e-300 still has them).
+  std::vector<MaterialBalance> balance;
 };
 
 template <class M>
