@@ -12,8 +12,9 @@
 namespace hexadapt::io {
 
 /// Parses either format (told apart by its layout); `file` names it in error messages,
-/// which give the line. Throws InputError for wrong counts, indices out of range,
-/// fractions outside [0, 1], per-cell sums over 1 and truncated files.
+/// which give the line. Throws InputError for wrong counts, indices out of range, fractions
+/// that are not numbers and truncated files. Values outside [0, 1] and sums other than 1 are
+/// kept as written: extract_fractions judges them with its tolerances, as for every format.
 MeshData read_text_case(std::string_view content, const std::string& file);
 
 }  // namespace hexadapt::io
