@@ -235,9 +235,10 @@ TEST(VtkLegacy, WriterRoundTripKeepsTypesAndHexOrder) {
   const std::size_t cells = content.find("CELLS 1 9\n");
   ASSERT_NE(cells, std::string::npos);
   EXPECT_EQ(content.substr(cells + 10 + 4 * 3, 4), be<std::int32_t>(3));
+  // The title holds whole key=value pairs only: the 400-character options do not fit the
+  // 255 characters, so they are left out rather than cut in the middle.
   const std::string title = r.metadata.at(0).second;
-  EXPECT_EQ(title.rfind("hexadapt: tool=hexadapt-test; options=xxx", 0), 0u);
-  EXPECT_EQ(title.size(), 255u);
+  EXPECT_EQ(title, "hexadapt: tool=hexadapt-test");
   std::remove(path.c_str());
 }
 

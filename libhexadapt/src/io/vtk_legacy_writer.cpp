@@ -134,17 +134,19 @@ std::string encode_name(const std::string& name) {
   return out.empty() ? std::string("unnamed") : out;
 }
 
-// The title line: provenance as "key=value" pairs, one line of at most 255 characters.
+// The title line: provenance as "key=value" pairs, one line of at most 255 characters, with
+// as many whole pairs as fit (a pair cut in the middle read as another key or value).
 std::string title_of(const MeshData& data) {
   std::string t = "hexadapt";
   const char* separator = ": ";
   for (const auto& [key, value] : data.metadata) {
-    t += separator + key + "=" + value;
+    const std::string pair = separator + key + "=" + value;
+    if (t.size() + pair.size() > 255) break;
+    t += pair;
     separator = "; ";
   }
   for (char& c : t)
     if (c == '\n' || c == '\r') c = ' ';
-  if (t.size() > 255) t.resize(255);
   return t;
 }
 

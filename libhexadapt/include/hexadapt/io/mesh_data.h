@@ -37,7 +37,9 @@ struct MeshData {
   std::vector<NodeId> cells;  ///< nodes_per_cell() ids per cell, kernel order (see above)
   std::vector<DataArray> cell_data;
   std::vector<DataArray> point_data;
-  /// Provenance and other key/value strings (tool, version, options); written as field data.
+  /// Provenance and other key/value strings (tool, version, options). Written as an XML
+  /// comment in .vtu/.vts, as key=value pairs in the legacy .vtk title line (whole pairs, as
+  /// many as its 255 characters hold) and as Exodus II info records.
   std::vector<std::pair<std::string, std::string>> metadata;
   /// Cells per axis when the source was a structured data set ({0,0,0} otherwise); writers
   /// of structured formats use it, others ignore it.

@@ -7,8 +7,9 @@
 // formats of hand-made cases (.txt, DESIGN 7.1), and Exodus II .exo .e .g (hex or quad
 // elements; element variables become cell arrays; see exodus.h). The step of a time series
 // (.pvd or Exodus) is chosen by ReadOptions::step or ::time.
-// Write: .vtu (appended binary, zlib-compressed when large), legacy .vtk (binary) and Exodus II
-// .exo .e .g (one element block per material, side and node sets; see exodus.h).
+// Write: .vtu (appended binary, zlib-compressed when large), .vts (the same, for a grid read
+// from a structured data set: MeshData::structured_cells), legacy .vtk (binary) and
+// Exodus II .exo .e .g (one element block per material, side and node sets; see exodus.h).
 // Writes are atomic: a temporary file in the target directory, then a rename, so a failed
 // write never leaves a half file and never clobbers an input.
 #pragma once
