@@ -5,6 +5,7 @@
 #include "hexadapt/adapt/local_topology.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/core/parallel.h"
+#include "node_scores.h"
 
 namespace hexadapt {
 
@@ -12,13 +13,13 @@ namespace {
 
 // One node: the largest halving of the Laplacian displacement that does not lower the local
 // minimum quality. Returns the gain in local minimum (0 when the node did not move). `q`: the
-// local minimum, on entry and on return (each evaluation costs the cells around the node).
+// local minimum, on entry and on return; `scores`: the cells' scores at the node's position.
 // A pull shorter than min_move edge lengths is not made: the Laplacian relaxation would
 // otherwise creep over the whole mesh for ever, moving every node by ever smaller amounts.
 template <class M>
 double laplacian_step(M& mesh, NodeId n, const std::vector<NodeId>& around,
                       const NodeConstraint& constraint, const SmoothOptions& options,
-                      const SizeCriterion& size, double& q) {
+                      detail::NodeScores<M>& scores, double& q) {
   Vec3 mean = Vec3::Zero();
   for (NodeId o : around) mean += mesh.point(o);
   mean /= static_cast<double>(around.size());
@@ -28,8 +29,9 @@ double laplacian_step(M& mesh, NodeId n, const std::vector<NodeId>& around,
   const double before = q;
   for (int h = 0; h <= options.halvings; ++h, d *= 0.5) {
     mesh.set_point(n, p + d);
-    const double after = min_score_around(mesh, n, size, before);
+    const double after = scores.trial(before);
     if (after >= before) {
+      scores.accept_trial();
       q = after;
       return after - before;
     }
@@ -42,8 +44,8 @@ double laplacian_step(M& mesh, NodeId n, const std::vector<NodeId>& around,
 // constraint, keeping the best strict improvement, halving the step when none improves.
 template <class M>
 double pattern_search(M& mesh, NodeId n, const std::vector<NodeId>& around,
-                      const NodeConstraint& constraint, int levels, const SizeCriterion& size,
-                      double& q) {
+                      const NodeConstraint& constraint, int levels,
+                      detail::NodeScores<M>& scores, double& q) {
   double h = 0.25 * mean_edge_length(mesh, n, around);
   const double start = q;
   double best = start;
@@ -58,8 +60,9 @@ double pattern_search(M& mesh, NodeId n, const std::vector<NodeId>& around,
           const Vec3 d = constraint.project(sign * h * Vec3::Unit(axis));
           if (!(d.norm() > 1e-3 * h)) continue;
           mesh.set_point(n, p + d);
-          const double trial = min_score_around(mesh, n, size, best + 1e-9);
+          const double trial = scores.trial(best + 1e-9);
           if (trial > best + 1e-9) {
+            scores.accept_trial();
             best = trial;
             best_p = p + d;
             improved = true;
@@ -74,16 +77,19 @@ double pattern_search(M& mesh, NodeId n, const std::vector<NodeId>& around,
 
 template <class M>
 double smooth_node(M& mesh, NodeId n, const NodeConstraint& constraint,
-                   const SmoothOptions& options, const SizeCriterion& size) {
+                   const SmoothOptions& options, const SizeCriterion& size,
+                   detail::CellScoreCache& cache) {
   const std::vector<NodeId> around = edge_neighbours(mesh, n);
   if (around.empty()) return 0;
-  double q = min_score_around(mesh, n, size);
-  double gain = laplacian_step(mesh, n, around, constraint, options, size, q);
+  detail::NodeScores<M> scores(mesh, n, size, cache);
+  double q = scores.min();
+  double gain = laplacian_step(mesh, n, around, constraint, options, scores, q);
   if (q < options.optimise_below) {
     const double more =
-        pattern_search(mesh, n, around, constraint, options.search_levels, size, q);
+        pattern_search(mesh, n, around, constraint, options.search_levels, scores, q);
     if (more > 0) gain = std::max(gain, 0.0) + more;
   }
+  scores.store(cache);
   return gain;
 }
 
@@ -107,6 +113,7 @@ SmoothResult smooth(M& mesh, const IdVector<NodeId, char>& movable,
   // choice again (no move): only the nodes around a move are tried again.
   std::vector<char> active(nn, 0);
   for (NodeId n : start ? *start : nodes) active[n.idx()] = movable[n];
+  detail::CellScoreCache cache(mesh.n_cells());
   SmoothResult out;
   while (out.iterations < options.iterations) {
     ++out.iterations;
@@ -121,7 +128,7 @@ SmoothResult smooth(M& mesh, const IdVector<NodeId, char>& movable,
         const auto k = static_cast<std::size_t>(i);
         const NodeId n = todo[k];
         const Vec3 before = mesh.point(n);
-        gain[k] = smooth_node(mesh, n, constraint[n], options, size);
+        gain[k] = smooth_node(mesh, n, constraint[n], options, size, cache);
         moved[k] = mesh.point(n) != before;
       });
       for (std::size_t k = 0; k < todo.size(); ++k) {

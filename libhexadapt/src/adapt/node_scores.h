@@ -1,0 +1,91 @@
+// The scores (size_criterion.h) of the cells around one node while the node tries positions,
+// internal to the smoothing: the scores at the node's current position come from a mesh-wide
+// cache of the cells none of whose nodes moved since they were scored, and a trial position
+// scores the cells worst first, so that a trial that must not lower the local minimum is
+// mostly refused at its first cell.
+//
+// The order changes no result: a trial that does not stop early is the minimum over all the
+// cells, and one that stops is below its bound whatever the order (min_score_around).
+#pragma once
+
+#include <algorithm>
+#include <limits>
+#include <vector>
+
+#include "hexadapt/adapt/size_criterion.h"
+#include "hexadapt/core/ids.h"
+
+namespace hexadapt::detail {
+
+/// Cell scores known for the current points; a cell's entry is valid until one of its nodes
+/// moves. Nodes moved in parallel share no cell, so each cell is written by one thread.
+struct CellScoreCache {
+  IdVector<CellId, double> score;
+  IdVector<CellId, char> known;
+  explicit CellScoreCache(index_t n_cells)
+      : score(static_cast<std::size_t>(n_cells), 0.0), known(static_cast<std::size_t>(n_cells), 0) {}
+};
+
+template <class M>
+class NodeScores {
+ public:
+  /// The scores of n's cells at its current position (cached or computed, and cached).
+  NodeScores(const M& mesh, NodeId n, const SizeCriterion& size, CellScoreCache& cache)
+      : mesh_(mesh), size_(size) {
+    for (CellId c : mesh.node_cells(n)) {
+      if (!cache.known[c]) {
+        cache.score[c] = cell_score(mesh, c, size);
+        cache.known[c] = 1;
+      }
+      cells_.push_back(c);
+      current_.push_back(cache.score[c]);
+    }
+    trial_.resize(cells_.size());
+    order_.resize(cells_.size());
+    sort_worst_first();
+  }
+
+  /// Smallest score at the current position (1 without cells), as min_score_around.
+  double min() const {
+    double s = 1.0;
+    for (double v : current_) s = std::min(s, v);
+    return s;
+  }
+
+  /// min_score_around at the node's position in the mesh now, the worst cells first.
+  double trial(double stop_below = -std::numeric_limits<double>::infinity()) {
+    double s = 1.0;
+    for (std::size_t k : order_) {
+      trial_[k] = cell_score(mesh_, cells_[k], size_);
+      s = std::min(s, trial_[k]);
+      if (s < stop_below) break;
+    }
+    return s;
+  }
+
+  /// The last trial, which did not stop early, is the current position.
+  void accept_trial() {
+    current_ = trial_;
+    sort_worst_first();
+  }
+
+  /// Records the current scores in the cache (the node has left or kept its position).
+  void store(CellScoreCache& cache) const {
+    for (std::size_t k = 0; k < cells_.size(); ++k) cache.score[cells_[k]] = current_[k];
+  }
+
+ private:
+  void sort_worst_first() {
+    for (std::size_t k = 0; k < order_.size(); ++k) order_[k] = k;
+    std::sort(order_.begin(), order_.end(),
+              [this](std::size_t a, std::size_t b) { return current_[a] < current_[b]; });
+  }
+
+  const M& mesh_;
+  const SizeCriterion& size_;
+  std::vector<CellId> cells_;
+  std::vector<double> current_, trial_;
+  std::vector<std::size_t> order_;
+};
+
+}  // namespace hexadapt::detail
