@@ -10,10 +10,12 @@
 
 #include <algorithm>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "hexadapt/adapt/size_criterion.h"
 #include "hexadapt/core/ids.h"
+#include "hexadapt/core/span.h"
 
 namespace hexadapt::detail {
 
@@ -32,32 +34,31 @@ class NodeScores {
   /// The scores of n's cells at its current position (cached or computed, and cached).
   NodeScores(const M& mesh, NodeId n, const SizeCriterion& size, CellScoreCache& cache)
       : mesh_(mesh), size_(size) {
-    for (CellId c : mesh.node_cells(n)) {
+    const Span<CellId> cells = mesh.node_cells(n);
+    cells_.reserve(cells.size());
+    for (CellId c : cells) {
       if (!cache.known[c]) {
         cache.score[c] = cell_score(mesh, c, size);
         cache.known[c] = 1;
       }
-      cells_.push_back(c);
-      current_.push_back(cache.score[c]);
+      cells_.push_back({c, cache.score[c], 0.0});
     }
-    trial_.resize(cells_.size());
-    order_.resize(cells_.size());
     sort_worst_first();
   }
 
   /// Smallest score at the current position (1 without cells), as min_score_around.
   double min() const {
     double s = 1.0;
-    for (double v : current_) s = std::min(s, v);
+    for (const Entry& e : cells_) s = std::min(s, e.current);
     return s;
   }
 
   /// min_score_around at the node's position in the mesh now, the worst cells first.
   double trial(double stop_below = -std::numeric_limits<double>::infinity()) {
     double s = 1.0;
-    for (std::size_t k : order_) {
-      trial_[k] = cell_score(mesh_, cells_[k], size_);
-      s = std::min(s, trial_[k]);
+    for (Entry& e : cells_) {
+      e.trial = cell_score(mesh_, e.cell, size_);
+      s = std::min(s, e.trial);
       if (s < stop_below) break;
     }
     return s;
@@ -65,27 +66,32 @@ class NodeScores {
 
   /// The last trial, which did not stop early, is the current position.
   void accept_trial() {
-    current_ = trial_;
+    for (Entry& e : cells_) e.current = e.trial;
     sort_worst_first();
   }
 
   /// Records the current scores in the cache (the node has left or kept its position).
   void store(CellScoreCache& cache) const {
-    for (std::size_t k = 0; k < cells_.size(); ++k) cache.score[cells_[k]] = current_[k];
+    for (const Entry& e : cells_) cache.score[e.cell] = e.current;
   }
 
  private:
+  struct Entry {
+    CellId cell;
+    double current;  ///< score at the node's current position
+    double trial;    ///< score at the last trial position
+  };
+
+  // Insertion sort: a node has few cells, mostly in order already after a small move.
   void sort_worst_first() {
-    for (std::size_t k = 0; k < order_.size(); ++k) order_[k] = k;
-    std::sort(order_.begin(), order_.end(),
-              [this](std::size_t a, std::size_t b) { return current_[a] < current_[b]; });
+    for (std::size_t k = 1; k < cells_.size(); ++k)
+      for (std::size_t j = k; j > 0 && cells_[j].current < cells_[j - 1].current; --j)
+        std::swap(cells_[j], cells_[j - 1]);
   }
 
   const M& mesh_;
   const SizeCriterion& size_;
-  std::vector<CellId> cells_;
-  std::vector<double> current_, trial_;
-  std::vector<std::size_t> order_;
+  std::vector<Entry> cells_;  ///< lowest current score first
 };
 
 }  // namespace hexadapt::detail
