@@ -78,8 +78,8 @@ double pattern_search(M& mesh, NodeId n, const std::vector<NodeId>& around,
 template <class M>
 double smooth_node(M& mesh, NodeId n, const NodeConstraint& constraint,
                    const SmoothOptions& options, const SizeCriterion& size,
-                   detail::CellScoreCache& cache) {
-  const std::vector<NodeId> around = edge_neighbours(mesh, n);
+                   NeighbourCache& neighbours, detail::CellScoreCache& cache) {
+  const std::vector<NodeId>& around = neighbours.of(mesh, n);
   if (around.empty()) return 0;
   detail::NodeScores<M> scores(mesh, n, size, cache);
   double q = scores.min();
@@ -99,10 +99,14 @@ template <class M>
 SmoothResult smooth(M& mesh, const IdVector<NodeId, char>& movable,
                     const IdVector<NodeId, NodeConstraint>& constraint,
                     const SmoothOptions& options, const std::vector<NodeId>* start,
-                    const SizeCriterion& size) {
+                    const SizeCriterion& size, NeighbourCache* neighbours) {
   const auto nn = static_cast<std::size_t>(mesh.n_nodes());
   if (movable.size() != nn || constraint.size() != nn)
     throw InternalError("smoothing: movable flags or constraints do not match the mesh");
+  NeighbourCache own(neighbours ? 0 : mesh.n_nodes());
+  if (!neighbours) neighbours = &own;
+  if (neighbours->n_nodes() != mesh.n_nodes())
+    throw InternalError("smoothing: the neighbour cache does not match the mesh");
   if (options.iterations < 0 || options.halvings < 0 || !(options.min_move >= 0))
     throw OptionError("smoothing iterations, halvings and min_move must be >= 0");
   std::vector<NodeId> nodes;
@@ -128,7 +132,7 @@ SmoothResult smooth(M& mesh, const IdVector<NodeId, char>& movable,
         const auto k = static_cast<std::size_t>(i);
         const NodeId n = todo[k];
         const Vec3 before = mesh.point(n);
-        gain[k] = smooth_node(mesh, n, constraint[n], options, size, cache);
+        gain[k] = smooth_node(mesh, n, constraint[n], options, size, *neighbours, cache);
         moved[k] = mesh.point(n) != before;
       });
       for (std::size_t k = 0; k < todo.size(); ++k) {
@@ -151,10 +155,10 @@ SmoothResult smooth(M& mesh, const IdVector<NodeId, char>& movable,
 template SmoothResult smooth<QuadMesh>(QuadMesh&, const IdVector<NodeId, char>&,
                                        const IdVector<NodeId, NodeConstraint>&,
                                        const SmoothOptions&, const std::vector<NodeId>*,
-                                       const SizeCriterion&);
+                                       const SizeCriterion&, NeighbourCache*);
 template SmoothResult smooth<HexMesh>(HexMesh&, const IdVector<NodeId, char>&,
                                       const IdVector<NodeId, NodeConstraint>&,
                                       const SmoothOptions&, const std::vector<NodeId>*,
-                                      const SizeCriterion&);
+                                      const SizeCriterion&, NeighbourCache*);
 
 }  // namespace hexadapt
