@@ -28,6 +28,22 @@ struct CellScoreCache {
       : score(static_cast<std::size_t>(n_cells), 0.0), known(static_cast<std::size_t>(n_cells), 0) {}
 };
 
+/// Smallest score of the cells around n at its current position (1 without cells), as
+/// min_score_around, from the cache; the scores it lacked are computed and kept.
+template <class M>
+double cached_min_score(const M& mesh, NodeId n, const SizeCriterion& size,
+                        CellScoreCache& cache) {
+  double s = 1.0;
+  for (CellId c : mesh.node_cells(n)) {
+    if (!cache.known[c]) {
+      cache.score[c] = cell_score(mesh, c, size);
+      cache.known[c] = 1;
+    }
+    s = std::min(s, cache.score[c]);
+  }
+  return s;
+}
+
 template <class M>
 class NodeScores {
  public:
@@ -44,13 +60,6 @@ class NodeScores {
       cells_.push_back({c, cache.score[c], 0.0});
     }
     sort_worst_first();
-  }
-
-  /// Smallest score at the current position (1 without cells), as min_score_around.
-  double min() const {
-    double s = 1.0;
-    for (const Entry& e : cells_) s = std::min(s, e.current);
-    return s;
   }
 
   /// min_score_around at the node's position in the mesh now, the worst cells first.

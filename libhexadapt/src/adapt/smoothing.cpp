@@ -11,21 +11,27 @@ namespace hexadapt {
 
 namespace {
 
-// One node: the largest halving of the Laplacian displacement that does not lower the local
-// minimum quality. Returns the gain in local minimum (0 when the node did not move). `q`: the
-// local minimum, on entry and on return; `scores`: the cells' scores at the node's position.
-// A pull shorter than min_move edge lengths is not made: the Laplacian relaxation would
-// otherwise creep over the whole mesh for ever, moving every node by ever smaller amounts.
+// The Laplacian displacement d of n toward the mean of `around`, within its constraint;
+// false when it is shorter than min_move edge lengths: such a pull is not made, or the
+// Laplacian relaxation would creep over the whole mesh for ever, moving every node by ever
+// smaller amounts.
 template <class M>
-double laplacian_step(M& mesh, NodeId n, const std::vector<NodeId>& around,
-                      const NodeConstraint& constraint, const SmoothOptions& options,
-                      detail::NodeScores<M>& scores, double& q) {
+bool laplacian_pull(const M& mesh, NodeId n, const std::vector<NodeId>& around,
+                    const NodeConstraint& constraint, const SmoothOptions& options, Vec3& d) {
   Vec3 mean = Vec3::Zero();
   for (NodeId o : around) mean += mesh.point(o);
   mean /= static_cast<double>(around.size());
+  d = constraint.project(mean - mesh.point(n));
+  return d.norm() > options.min_move * mean_edge_length(mesh, n, around);
+}
+
+// One node: the largest halving of the pull d that does not lower the local minimum quality.
+// Returns the gain in local minimum (-1 when no halving is kept). `q`: the local minimum, on
+// entry and on return; `scores`: the cells' scores at the node's position.
+template <class M>
+double laplacian_step(M& mesh, NodeId n, Vec3 d, const SmoothOptions& options,
+                      detail::NodeScores<M>& scores, double& q) {
   const Vec3 p = mesh.point(n);
-  Vec3 d = constraint.project(mean - p);
-  if (!(d.norm() > options.min_move * mean_edge_length(mesh, n, around))) return 0;
   const double before = q;
   for (int h = 0; h <= options.halvings; ++h, d *= 0.5) {
     mesh.set_point(n, p + d);
@@ -81,9 +87,12 @@ double smooth_node(M& mesh, NodeId n, const NodeConstraint& constraint,
                    NeighbourCache& neighbours, detail::CellScoreCache& cache) {
   const std::vector<NodeId>& around = neighbours.of(mesh, n);
   if (around.empty()) return 0;
+  double q = detail::cached_min_score(mesh, n, size, cache);
+  Vec3 d;
+  const bool pull = laplacian_pull(mesh, n, around, constraint, options, d);
+  if (!pull && !(q < options.optimise_below)) return 0;  // nothing to try: most tries
   detail::NodeScores<M> scores(mesh, n, size, cache);
-  double q = scores.min();
-  double gain = laplacian_step(mesh, n, around, constraint, options, scores, q);
+  double gain = pull ? laplacian_step(mesh, n, d, options, scores, q) : 0;
   if (q < options.optimise_below) {
     const double more =
         pattern_search(mesh, n, around, constraint, options.search_levels, scores, q);
