@@ -87,10 +87,11 @@ int move_smooth_loop(M& mesh, const Targets& targets,
   const IdVector<NodeId, char> movable = loop_movable(targets);
   int loops = 0;
   std::vector<NodeId> start;  // what the next smoothing must try; the first tries all
+  NeighbourCache neighbours(mesh.n_nodes());
   while (loops < options.max_loops && best > 0) {
     ++loops;
-    const SmoothResult s =
-        smooth(mesh, movable, sliding, options.smooth, loops == 1 ? nullptr : &start, size);
+    const SmoothResult s = smooth(mesh, movable, sliding, options.smooth,
+                                  loops == 1 ? nullptr : &start, size, &neighbours);
     const std::vector<Vec3> before = points_of(mesh);
     controlled_move(mesh, targets, mo, size, &sliding);
     start = nodes_around_moves(mesh, before, s.unsettled);

@@ -4,16 +4,21 @@
 
 namespace hexadapt {
 
+// Each neighbour goes in its sorted place unless it is there already: a node has a few
+// distinct neighbours, each seen from several cells.
 template <class M>
 std::vector<NodeId> edge_neighbours(const M& mesh, NodeId n) {
+  const Span<CellId> cells = mesh.node_cells(n);
   std::vector<NodeId> out;
-  for (CellId c : mesh.node_cells(n)) {
-    const auto nodes = mesh.cell_nodes(c);
-    for (int k : corner_edge_neighbours<M>(corner_of(mesh, c, n)))
-      out.push_back(nodes[static_cast<std::size_t>(k)]);
+  out.reserve(static_cast<std::size_t>(M::dim) * cells.size());
+  for (CellId c : cells) {
+    const auto& nodes = mesh.cell_nodes(c);
+    for (int k : corner_edge_neighbours<M>(corner_of(mesh, c, n))) {
+      const NodeId o = nodes[static_cast<std::size_t>(k)];
+      const auto at = std::lower_bound(out.begin(), out.end(), o);
+      if (at == out.end() || *at != o) out.insert(at, o);
+    }
   }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
 

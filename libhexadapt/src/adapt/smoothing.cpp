@@ -5,31 +5,39 @@
 #include "hexadapt/adapt/local_topology.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/core/parallel.h"
+#include "node_scores.h"
 
 namespace hexadapt {
 
 namespace {
 
-// One node: the largest halving of the Laplacian displacement that does not lower the local
-// minimum quality. Returns the gain in local minimum (0 when the node did not move). `q`: the
-// local minimum, on entry and on return (each evaluation costs the cells around the node).
-// A pull shorter than min_move edge lengths is not made: the Laplacian relaxation would
-// otherwise creep over the whole mesh for ever, moving every node by ever smaller amounts.
+// The Laplacian displacement d of n toward the mean of `around`, within its constraint;
+// false when it is shorter than min_move edge lengths: such a pull is not made, or the
+// Laplacian relaxation would creep over the whole mesh for ever, moving every node by ever
+// smaller amounts.
 template <class M>
-double laplacian_step(M& mesh, NodeId n, const std::vector<NodeId>& around,
-                      const NodeConstraint& constraint, const SmoothOptions& options,
-                      const SizeCriterion& size, double& q) {
+bool laplacian_pull(const M& mesh, NodeId n, const std::vector<NodeId>& around,
+                    const NodeConstraint& constraint, const SmoothOptions& options, Vec3& d) {
   Vec3 mean = Vec3::Zero();
   for (NodeId o : around) mean += mesh.point(o);
   mean /= static_cast<double>(around.size());
+  d = constraint.project(mean - mesh.point(n));
+  return d.norm() > options.min_move * mean_edge_length(mesh, n, around);
+}
+
+// One node: the largest halving of the pull d that does not lower the local minimum quality.
+// Returns the gain in local minimum (-1 when no halving is kept). `q`: the local minimum, on
+// entry and on return; `scores`: the cells' scores at the node's position.
+template <class M>
+double laplacian_step(M& mesh, NodeId n, Vec3 d, const SmoothOptions& options,
+                      detail::NodeScores<M>& scores, double& q) {
   const Vec3 p = mesh.point(n);
-  Vec3 d = constraint.project(mean - p);
-  if (!(d.norm() > options.min_move * mean_edge_length(mesh, n, around))) return 0;
   const double before = q;
   for (int h = 0; h <= options.halvings; ++h, d *= 0.5) {
     mesh.set_point(n, p + d);
-    const double after = min_score_around(mesh, n, size, before);
+    const double after = scores.trial(before);
     if (after >= before) {
+      scores.accept_trial();
       q = after;
       return after - before;
     }
@@ -42,8 +50,8 @@ double laplacian_step(M& mesh, NodeId n, const std::vector<NodeId>& around,
 // constraint, keeping the best strict improvement, halving the step when none improves.
 template <class M>
 double pattern_search(M& mesh, NodeId n, const std::vector<NodeId>& around,
-                      const NodeConstraint& constraint, int levels, const SizeCriterion& size,
-                      double& q) {
+                      const NodeConstraint& constraint, int levels,
+                      detail::NodeScores<M>& scores, double& q) {
   double h = 0.25 * mean_edge_length(mesh, n, around);
   const double start = q;
   double best = start;
@@ -58,8 +66,9 @@ double pattern_search(M& mesh, NodeId n, const std::vector<NodeId>& around,
           const Vec3 d = constraint.project(sign * h * Vec3::Unit(axis));
           if (!(d.norm() > 1e-3 * h)) continue;
           mesh.set_point(n, p + d);
-          const double trial = min_score_around(mesh, n, size, best + 1e-9);
+          const double trial = scores.trial(best + 1e-9);
           if (trial > best + 1e-9) {
+            scores.accept_trial();
             best = trial;
             best_p = p + d;
             improved = true;
@@ -74,16 +83,22 @@ double pattern_search(M& mesh, NodeId n, const std::vector<NodeId>& around,
 
 template <class M>
 double smooth_node(M& mesh, NodeId n, const NodeConstraint& constraint,
-                   const SmoothOptions& options, const SizeCriterion& size) {
-  const std::vector<NodeId> around = edge_neighbours(mesh, n);
+                   const SmoothOptions& options, const SizeCriterion& size,
+                   NeighbourCache& neighbours, detail::CellScoreCache& cache) {
+  const std::vector<NodeId>& around = neighbours.of(mesh, n);
   if (around.empty()) return 0;
-  double q = min_score_around(mesh, n, size);
-  double gain = laplacian_step(mesh, n, around, constraint, options, size, q);
+  double q = detail::cached_min_score(mesh, n, size, cache);
+  Vec3 d;
+  const bool pull = laplacian_pull(mesh, n, around, constraint, options, d);
+  if (!pull && !(q < options.optimise_below)) return 0;  // nothing to try: most tries
+  detail::NodeScores<M> scores(mesh, n, size, cache);
+  double gain = pull ? laplacian_step(mesh, n, d, options, scores, q) : 0;
   if (q < options.optimise_below) {
     const double more =
-        pattern_search(mesh, n, around, constraint, options.search_levels, size, q);
+        pattern_search(mesh, n, around, constraint, options.search_levels, scores, q);
     if (more > 0) gain = std::max(gain, 0.0) + more;
   }
+  scores.store(cache);
   return gain;
 }
 
@@ -93,10 +108,14 @@ template <class M>
 SmoothResult smooth(M& mesh, const IdVector<NodeId, char>& movable,
                     const IdVector<NodeId, NodeConstraint>& constraint,
                     const SmoothOptions& options, const std::vector<NodeId>* start,
-                    const SizeCriterion& size) {
+                    const SizeCriterion& size, NeighbourCache* neighbours) {
   const auto nn = static_cast<std::size_t>(mesh.n_nodes());
   if (movable.size() != nn || constraint.size() != nn)
     throw InternalError("smoothing: movable flags or constraints do not match the mesh");
+  NeighbourCache own(neighbours ? 0 : mesh.n_nodes());
+  if (!neighbours) neighbours = &own;
+  if (neighbours->n_nodes() != mesh.n_nodes())
+    throw InternalError("smoothing: the neighbour cache does not match the mesh");
   if (options.iterations < 0 || options.halvings < 0 || !(options.min_move >= 0))
     throw OptionError("smoothing iterations, halvings and min_move must be >= 0");
   std::vector<NodeId> nodes;
@@ -107,6 +126,7 @@ SmoothResult smooth(M& mesh, const IdVector<NodeId, char>& movable,
   // choice again (no move): only the nodes around a move are tried again.
   std::vector<char> active(nn, 0);
   for (NodeId n : start ? *start : nodes) active[n.idx()] = movable[n];
+  detail::CellScoreCache cache(mesh.n_cells());
   SmoothResult out;
   while (out.iterations < options.iterations) {
     ++out.iterations;
@@ -121,7 +141,7 @@ SmoothResult smooth(M& mesh, const IdVector<NodeId, char>& movable,
         const auto k = static_cast<std::size_t>(i);
         const NodeId n = todo[k];
         const Vec3 before = mesh.point(n);
-        gain[k] = smooth_node(mesh, n, constraint[n], options, size);
+        gain[k] = smooth_node(mesh, n, constraint[n], options, size, *neighbours, cache);
         moved[k] = mesh.point(n) != before;
       });
       for (std::size_t k = 0; k < todo.size(); ++k) {
@@ -144,10 +164,10 @@ SmoothResult smooth(M& mesh, const IdVector<NodeId, char>& movable,
 template SmoothResult smooth<QuadMesh>(QuadMesh&, const IdVector<NodeId, char>&,
                                        const IdVector<NodeId, NodeConstraint>&,
                                        const SmoothOptions&, const std::vector<NodeId>*,
-                                       const SizeCriterion&);
+                                       const SizeCriterion&, NeighbourCache*);
 template SmoothResult smooth<HexMesh>(HexMesh&, const IdVector<NodeId, char>&,
                                       const IdVector<NodeId, NodeConstraint>&,
                                       const SmoothOptions&, const std::vector<NodeId>*,
-                                      const SizeCriterion&);
+                                      const SizeCriterion&, NeighbourCache*);
 
 }  // namespace hexadapt

@@ -19,8 +19,11 @@ constexpr std::array<unsigned, 6> face_masks = [] {
   return m;
 }();
 
-// The local face of `cell` made of the nodes `face` (in any order), or -1.
+// The local face of `cell` made of the nodes `face` (in any order), or -1. A cell without
+// the face's third node (diagonal to the first) is told at once: most cells around a node
+// hold none of its faces.
 int local_face_of(const HexMesh::CellNodes& cell, const HexMesh::FaceNodes& face) {
+  if (std::find(cell.begin(), cell.end(), face[2]) == cell.end()) return -1;
   unsigned mask = 0;
   for (std::size_t k = 0; k < 8; ++k)
     for (NodeId n : face) mask |= static_cast<unsigned>(cell[k] == n) << k;

@@ -38,6 +38,28 @@ int corner_of(const M& mesh, CellId c, NodeId n) {
 template <class M>
 std::vector<NodeId> edge_neighbours(const M& mesh, NodeId n);
 
+/// edge_neighbours of the nodes asked for, each computed once: for the smoothing, which asks
+/// for a node's neighbours at every try, again and again on one topology. Different threads
+/// may ask for different nodes at the same time.
+class NeighbourCache {
+ public:
+  explicit NeighbourCache(index_t n_nodes)
+      : lists_(static_cast<std::size_t>(n_nodes)), known_(static_cast<std::size_t>(n_nodes), 0) {}
+  index_t n_nodes() const { return static_cast<index_t>(lists_.size()); }
+  template <class M>
+  const std::vector<NodeId>& of(const M& mesh, NodeId n) {
+    if (!known_[n]) {
+      lists_[n] = edge_neighbours(mesh, n);
+      known_[n] = 1;
+    }
+    return lists_[n];
+  }
+
+ private:
+  IdVector<NodeId, std::vector<NodeId>> lists_;
+  IdVector<NodeId, char> known_;
+};
+
 /// Mean distance from n to `around` (its edge_neighbours, not empty): the node's length scale.
 template <class M>
 double mean_edge_length(const M& mesh, NodeId n, const std::vector<NodeId>& around) {

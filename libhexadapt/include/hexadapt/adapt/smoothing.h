@@ -14,6 +14,7 @@
 
 #include <vector>
 
+#include "hexadapt/adapt/local_topology.h"
 #include "hexadapt/adapt/node_constraint.h"
 #include "hexadapt/adapt/size_criterion.h"
 #include "hexadapt/core/ids.h"
@@ -46,10 +47,13 @@ struct SmoothResult {
 /// other movable nodes are taken as settled: a previous call's `unsettled` plus the nodes
 /// around what moved since gives the result of a call on every node). `size`: the size
 /// criterion the scores include (off by default: the scores are the scaled Jacobians).
+/// `neighbours`, when given, keeps the nodes' edge neighbours for further calls on meshes of
+/// the same cells (a call without one computes them for itself).
 template <class M>
 SmoothResult smooth(M& mesh, const IdVector<NodeId, char>& movable,
                     const IdVector<NodeId, NodeConstraint>& constraint,
                     const SmoothOptions& options = {},
-                    const std::vector<NodeId>* start = nullptr, const SizeCriterion& size = {});
+                    const std::vector<NodeId>* start = nullptr, const SizeCriterion& size = {},
+                    NeighbourCache* neighbours = nullptr);
 
 }  // namespace hexadapt
