@@ -9,6 +9,7 @@
 #include "hexadapt/core/error.h"
 #include "hexadapt/core/parallel.h"
 #include "hexadapt/mesh/mesh_check.h"
+#include "mesh/scaled_mesh.h"
 
 namespace hexadapt {
 namespace {
@@ -165,17 +166,6 @@ TEST(GuaranteedMethod, AutomaticLayersFallBackToCavitiesWhereTheFirstLayerFallsS
   });
 }
 
-// The same grid in another unit and place: every coordinate times `scale`, plus `offset`.
-template <class M>
-M scaled(const M& mesh, double scale, double offset = 0) {
-  std::vector<Vec3> points;
-  std::vector<typename M::CellNodes> cells;
-  for (NodeId v : id_range<NodeId>(mesh.n_nodes()))
-    points.push_back(scale * mesh.point(v) + Vec3(offset, offset, M::dim == 3 ? offset : 0));
-  for (CellId c : id_range<CellId>(mesh.n_cells())) cells.push_back(mesh.cell_nodes(c));
-  return M(std::move(points), std::move(cells));
-}
-
 // The guarantee and the mesh do not depend on the unit or the place: the triple point in
 // units from 1e-300 to 1e300, or moved 1e6 away, gives the same assignment, and from it the
 // same cells, materials and smallest scaled Jacobian (at 1e-300 squared lengths underflow,
@@ -188,7 +178,7 @@ TEST(GuaranteedMethod, TheSameMeshInAnyUnitAndPlace) {
     const auto r = adapt(grid, f, m, guaranteed_options());
     for (auto [scale, offset] : {std::pair{1e-300, 0.0}, {1e-20, 0.0}, {1e-6, 0.0}, {1e6, 0.0},
                                  {1e20, 0.0}, {1e300, 0.0}, {1.0, 1e6}}) {
-      const auto moved = scaled(grid, scale, offset);
+      const auto moved = test::scaled(grid, scale, offset);
       EXPECT_EQ(assign::assign_materials(moved, f).correction.labels.raw(), m.raw())
           << scale << " " << offset;
       const auto s = adapt(moved, f, m, guaranteed_options());
@@ -202,7 +192,7 @@ TEST(GuaranteedMethod, TheSameMeshInAnyUnitAndPlace) {
       EXPECT_NEAR(s.dist_final / scale, r.dist_final, 1e-9 * r.dist_final) << scale;
     }
     for (double scale : {0x1p-1000, 0x1p-20, 0x1p40, 0x1p1000}) {
-      const auto s = adapt(scaled(grid, scale), f, m, guaranteed_options());
+      const auto s = adapt(test::scaled(grid, scale), f, m, guaranteed_options());
       ASSERT_EQ(s.mesh.n_nodes(), r.mesh.n_nodes()) << scale;
       for (NodeId v : id_range<NodeId>(r.mesh.n_nodes()))
         ASSERT_EQ(s.mesh.point(v), scale * r.mesh.point(v)) << scale << " node " << v.value();

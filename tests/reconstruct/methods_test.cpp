@@ -5,6 +5,7 @@
 
 #include "hexadapt/core/parallel.h"
 #include "hexadapt/reconstruct/reconstruct.h"
+#include "mesh/scaled_mesh.h"
 #include "reconstruct/cases.h"
 
 namespace hexadapt::reconstruct {
@@ -95,16 +96,6 @@ TEST(Greedy, SameResultWhateverTheThreadCount) {
   EXPECT_EQ(a.labels(), b.labels());
 }
 
-template <class M>
-M scaled(const M& mesh, double scale, double offset) {
-  std::vector<Vec3> points;
-  std::vector<typename M::CellNodes> cells;
-  for (NodeId v : id_range<NodeId>(mesh.n_nodes()))
-    points.push_back(scale * mesh.point(v) + Vec3(offset, offset, M::dim == 3 ? offset : 0));
-  for (CellId c : id_range<CellId>(mesh.n_cells())) cells.push_back(mesh.cell_nodes(c));
-  return M(std::move(points), std::move(cells));
-}
-
 // The same pixels, model and relative discrepancy in any unit and place: the greedy compares
 // volumes inside one cell only, in units of the cell's first pixel, and the stage runs in
 // the grid's UnitFrame (at 1e-300 pixel areas underflow, at 1e300 volumes overflow).
@@ -115,7 +106,7 @@ void expect_the_same_in_any_unit(const testcase::Case<M>& c) {
   for (auto [scale, offset] : {std::pair{1e-300, 0.0}, {1e-6, 0.0}, {1e6, 0.0}, {1e300, 0.0},
                                {1.0, 1e6}}) {
     const Reconstruction s =
-        reconstruct(scaled(c.mesh, scale, offset), c.fractions, assignment, {});
+        reconstruct(test::scaled(c.mesh, scale, offset), c.fractions, assignment, {});
     EXPECT_EQ(s.pixels.labels(), r.pixels.labels()) << scale << " " << offset;
     EXPECT_NEAR(s.result.relative_discrepancy, r.result.relative_discrepancy, 1e-12) << scale;
     ASSERT_EQ(s.model.points.size(), r.model.points.size()) << scale << " " << offset;
