@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 #include <type_traits>
 
@@ -81,6 +82,17 @@ TEST(AdaptTool, WritesTheMeshTheArraysAndTheReport) {
   // check targets pillow move cavity move-smooth
   EXPECT_EQ(report["result"]["steps"].size(), 6u);
   EXPECT_TRUE(report["threshold_met"].get<bool>());
+  // -v says each step and where the interface nodes ended (it said nothing).
+  const fs::path err = dir / "err.txt";
+  const std::string verbose = std::string(HEXADAPT_TOOLS_DIR) + "/hexadapt-adapt " +
+                              (dir / "in.vtu").string() + " -o " + out + " -v 2>" + err.string();
+  ASSERT_EQ(std::system(verbose.c_str()), 0);
+  std::ifstream log(err);
+  std::stringstream read;
+  read << log.rdbuf();
+  const std::string text = read.str();
+  for (const char* step : {"step check", "step targets", "step move-smooth", "interface nodes: "})
+    EXPECT_NE(text.find(step), std::string::npos) << step << " in:\n" << text;
   fs::remove_all(dir);
 }
 

@@ -206,6 +206,24 @@ void warn_blocked(const AdaptResult<M>& r, double near) {
   log_warning(text);
 }
 
+// -v: each step of the pipeline, then where the interface nodes ended.
+template <class M>
+void log_steps(const AdaptResult<M>& r, double near) {
+  char text[256];
+  for (const AdaptStep& s : r.steps) {
+    std::snprintf(text, sizeof text, "step %-12s %8.2f s  %9d cells  min scaled Jacobian %.4f",
+                  s.name.c_str(), s.seconds, s.cells, s.min_quality);
+    log_info(text);
+  }
+  std::snprintf(text, sizeof text,
+                "%d interface nodes: %d on their target, %d within %g local sizes of their "
+                "interface, %d blocked; %d cells, min scaled Jacobian %.4f, shortest edge %.3g "
+                "local sizes",
+                r.n_interface_nodes, r.n_reached, r.n_near_interface, near, r.n_blocked,
+                r.mesh.n_cells(), r.min_quality, r.min_edge_ratio);
+  log_info(text);
+}
+
 // The guaranteed method does not start from cells already failing a criterion: name them.
 int refuse_bad_input(const cli::CommonOptions& common, Json& report, const PhaseTimes& times,
                      const std::vector<CellId>& bad, const std::vector<CellFailure>& worst,
@@ -288,6 +306,7 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
         for (const auto& s : r.steps) times.emplace_back(s.name, s.seconds);
         report["result"] = result_json(r, mesh.n_cells(), options.threshold);
         below = r.n_below_threshold + r.n_below_min_edge;
+        log_steps(r, options.near_interface);
         if (!r.stopped_bad_input) warn_blocked(r, options.near_interface);
         out = adapt_mesh_data(r, fractions.names());
       },
