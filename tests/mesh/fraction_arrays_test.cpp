@@ -57,5 +57,39 @@ TEST(FractionArrays, AMissingArrayIsNamedWithTheArraysThereAre) {
   }
 }
 
+// --void naming a material that has an array: that material is the remainder, in its place,
+// recomputed rather than read (it was refused as "also a fraction array").
+TEST(FractionArrays, AVoidMaterialWithAnArrayIsRecomputedInItsPlace) {
+  io::MeshData d = io::from_mesh(make_quad_grid(2, 1));
+  d.set_cell_array({"vf_a", 1, io::ScalarType::float32, {0.5, 0.2}});
+  d.set_cell_array({"vf_air", 1, io::ScalarType::float32, {0.7, 0.9}});  // noisy
+  d.set_cell_array({"vf_b", 1, io::ScalarType::float32, {0.25, 0.3}});
+  FractionOptions o;
+  o.void_material = "air";
+  const Fractions f = extract_fractions(d, o, nullptr, "in.vtu");
+  EXPECT_EQ(f.names(), (std::vector<std::string>{"a", "air", "b"}));
+  EXPECT_NEAR(f(CellId(0), 1), 0.25, 1e-15);
+  EXPECT_NEAR(f(CellId(1), 1), 0.5, 1e-15);
+  EXPECT_NEAR(f(CellId(1), 2), 0.3, 1e-15);
+  o.void_material = "c";  // a new material, after the others
+  EXPECT_EQ(extract_fractions(two_cells({"vf_a", "vf_b"}), o, nullptr, "in.vtu").names(),
+            (std::vector<std::string>{"a", "b", "c"}));
+}
+
+// A sum above 1 cannot be helped by a void material: the message says what can.
+TEST(FractionArrays, ASumAboveOneDoesNotAdviseAVoidMaterial) {
+  io::MeshData d = io::from_mesh(make_quad_grid(1, 1));
+  d.set_cell_array({"vf_a", 1, io::ScalarType::float64, {0.6}});
+  d.set_cell_array({"vf_b", 1, io::ScalarType::float64, {0.41}});
+  try {
+    extract_fractions(d, FractionOptions{}, nullptr, "in.vtu");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.find("void"), std::string::npos) << what;
+    EXPECT_NE(what.find("larger sum tolerance"), std::string::npos) << what;
+  }
+}
+
 }  // namespace
 }  // namespace hexadapt

@@ -92,7 +92,9 @@ void add_input_options(CLI::App& app, InputOptions& options) {
                  "Fraction cell arrays, in material order (default: every vf_<material>): one "
                  "argument per array, or names separated by commas; an argument naming an "
                  "array is taken whole (\"Volume Fraction for Body, Nose\")");
-  app.add_option("--void", f.void_material, "Name a material that receives 1 - sum of the others");
+  app.add_option("--void", f.void_material,
+                 "Name a material that receives 1 - sum of the others (a fraction array of that "
+                 "material is then recomputed, not read)");
   app.add_option("--value-tolerance", f.value_tolerance,
                  "How far outside [0,1] a fraction may be and still be clipped")
       ->check(finite_non_negative)

@@ -57,38 +57,50 @@ std::vector<std::string> requested_arrays(const io::MeshData& data,
   return out;
 }
 
-std::vector<const io::DataArray*> fraction_arrays(const io::MeshData& data,
-                                                  const FractionOptions& options,
-                                                  std::vector<std::string>& names,
-                                                  const std::string& file) {
+// The arrays read and the material each fills; the void material, when named, is the
+// remainder: appended after them, or in the place of the array of its name, which is then
+// recomputed instead of read.
+struct Selection {
   std::vector<const io::DataArray*> arrays;
+  std::vector<int> material;  ///< per array, its material index
+  int void_material = -1;     ///< its material index, -1 when none
+};
+
+Selection fraction_arrays(const io::MeshData& data, const FractionOptions& options,
+                          std::vector<std::string>& names, const std::string& file) {
+  Selection s;
   if (options.arrays.empty()) {
     for (const auto& a : data.cell_data)
       if (a.name.size() > 3 && a.name.compare(0, 3, "vf_") == 0) {
-        arrays.push_back(&a);
+        s.arrays.push_back(&a);
         names.push_back(a.name.substr(3));
       }
-    if (arrays.empty())
+    if (s.arrays.empty())
       throw InputError(file, "", "no cell array named vf_<material>; name the fraction "
                                  "arrays explicitly");
   } else {
     for (const auto& n : requested_arrays(data, options.arrays, file)) {
-      arrays.push_back(data.find_cell_array(n));
+      s.arrays.push_back(data.find_cell_array(n));
       names.push_back(n.size() > 3 && n.compare(0, 3, "vf_") == 0 ? n.substr(3) : n);
     }
   }
-  for (const auto* a : arrays)
+  for (const auto* a : s.arrays)
     if (a->n_components != 1)
       throw InputError(file, "", "fraction array '" + a->name + "' has " +
                                      std::to_string(a->n_components) +
                                      " components, expected 1");
-  if (!options.void_material.empty()) {
-    if (std::find(names.begin(), names.end(), options.void_material) != names.end())
-      throw InputError(file, "", "void material '" + options.void_material +
-                                     "' is also a fraction array");
+  for (std::size_t k = 0; k < s.arrays.size(); ++k) s.material.push_back(static_cast<int>(k));
+  if (options.void_material.empty()) return s;
+  const auto named = std::find(names.begin(), names.end(), options.void_material);
+  if (named == names.end()) {
+    s.void_material = static_cast<int>(names.size());
     names.push_back(options.void_material);
+    return s;
   }
-  return arrays;
+  s.void_material = static_cast<int>(named - names.begin());
+  s.arrays.erase(s.arrays.begin() + s.void_material);
+  s.material.erase(s.material.begin() + s.void_material);
+  return s;
 }
 
 std::string cell_where(CellId c) { return "cell " + std::to_string(c.value()); }
@@ -102,10 +114,11 @@ Fractions extract_fractions(const io::MeshData& data, const FractionOptions& opt
     return fractions_from_labels(data, options, file);
   }
   std::vector<std::string> names;
-  const auto arrays = fraction_arrays(data, options, names, file);
+  const Selection selected = fraction_arrays(data, options, names, file);
+  const auto& arrays = selected.arrays;
   Fractions f(data.n_cells(), names);
   FractionReport rep;
-  const bool has_void = !options.void_material.empty();
+  const bool has_void = selected.void_material >= 0;
   const int n_read = static_cast<int>(arrays.size());
   for (CellId c : id_range<CellId>(data.n_cells())) {
     // Validate and clip, check the sum on the values as given, then drop traces and rescale.
@@ -122,7 +135,7 @@ Fractions extract_fractions(const io::MeshData& data, const FractionOptions& opt
         v = std::clamp(v, 0.0, 1.0);
         ++rep.clipped_values;
       }
-      f(c, m) = v;
+      f(c, selected.material[static_cast<std::size_t>(m)]) = v;
       sum += v;
     }
     if (has_void) {
@@ -132,15 +145,16 @@ Fractions extract_fractions(const io::MeshData& data, const FractionOptions& opt
             << "): no room for the void material";
         throw InputError(file, cell_where(c), msg.str());
       }
-      f(c, n_read) = std::max(0.0, 1 - sum);
-      sum += f(c, n_read);
+      f(c, selected.void_material) = std::max(0.0, 1 - sum);
+      sum += f(c, selected.void_material);
     }
     const double err = std::abs(sum - 1);
     rep.max_sum_error = std::max(rep.max_sum_error, err);
     if (err > options.sum_tolerance) {
       std::ostringstream msg;
-      msg << "fractions sum to " << sum << " (tolerance " << options.sum_tolerance
-          << "); name a void material to fill the remainder";
+      msg << "fractions sum to " << sum << " (tolerance " << options.sum_tolerance << "); "
+          << (sum > 1 ? "a larger sum tolerance would rescale the cell"
+                      : "name a void material to fill the remainder, or raise the sum tolerance");
       throw InputError(file, cell_where(c), msg.str());
     }
     double kept = 0;

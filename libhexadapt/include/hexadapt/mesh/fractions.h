@@ -56,7 +56,9 @@ struct FractionOptions {
   /// An entry that names no array but holds commas lists the names between them ("vf_a,vf_b");
   /// one naming an array is that array, commas or spaces in its name included.
   std::vector<std::string> arrays;
-  /// If not empty, a material of this name receives 1 - sum of the others.
+  /// If not empty, a material of this name receives 1 - sum of the others: a new material
+  /// after them, or, when an array of that material is among them (vf_<name>), that
+  /// material in its place, recomputed instead of read.
   std::string void_material;
   double value_tolerance = 1e-4;  ///< how far outside [0,1] a value may be and still be clipped
   double sum_tolerance = 1e-4;    ///< how far from 1 a cell's sum may be and still be rescaled
