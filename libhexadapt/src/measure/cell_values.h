@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <string>
 #include <vector>
 
@@ -46,13 +45,9 @@ std::array<Vec3, N> local_corners(const io::MeshData& data, std::size_t c, int* 
   std::array<Vec3, N> p = corners<N>(data, c);
   double extent = 0;
   for (const Vec3& x : p) extent = std::max(extent, (x - p[0]).cwiseAbs().maxCoeff());
-  *exponent = 0;
-  if (!(extent > 0) || !std::isfinite(extent)) return p;
-  std::frexp(extent, exponent);
-  --*exponent;
-  for (Vec3& x : p)
-    x = Vec3(std::ldexp(x.x(), -*exponent), std::ldexp(x.y(), -*exponent),
-             std::ldexp(x.z(), -*exponent));
+  const UnitFrame scale{Vec3::Zero(), unit_exponent(extent)};
+  *exponent = scale.exponent;
+  for (Vec3& x : p) x = scale.to_local(x);
   return p;
 }
 

@@ -1,5 +1,6 @@
 #include "hexadapt/mesh/unit_frame.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <limits>
 
@@ -10,19 +11,25 @@ namespace hexadapt {
 
 namespace {
 
-UnitFrame frame_of_box(const Vec3& low, const Vec3& high) {
+// The frame of the n points point(0), ..., point(n - 1); the identity when one is not finite.
+template <class Point>
+UnitFrame frame_of(std::size_t n, const Point& point) {
+  Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
+  for (std::size_t i = 0; i < n; ++i) {
+    low = low.cwiseMin(point(i));
+    high = high.cwiseMax(point(i));
+  }
   UnitFrame f;
   if (!low.allFinite() || !high.allFinite()) return f;
   // The largest extent, not the diagonal's norm: that one squares the extents first.
   const double size = (high - low).cwiseAbs().maxCoeff();
   if (!(size > 0)) return f;
-  int e = 0;
-  std::frexp(size, &e);  // size = m 2^e, m in [0.5, 1)
-  f.exponent = e - 1;    // size 2^-(e-1) in [1, 2)
-  const double far = low.cwiseAbs().maxCoeff();
-  if (far > size) f.origin = low;
+  f.exponent = unit_exponent(size);
+  if (low.cwiseAbs().maxCoeff() > size) f.origin = low;
   return f;
 }
+
+UnitFrame only_far(const UnitFrame& f) { return std::abs(f.exponent) > 64 ? f : UnitFrame{}; }
 
 template <class M, class Move>
 M moved(const M& mesh, const Move& move) {
@@ -33,34 +40,28 @@ M moved(const M& mesh, const Move& move) {
 
 }  // namespace
 
+int unit_exponent(double size) {
+  if (!(size > 0) || !std::isfinite(size)) return 0;
+  int e = 0;
+  std::frexp(size, &e);  // size = m 2^e, m in [0.5, 1)
+  return e - 1;          // size 2^-(e-1) in [1, 2)
+}
+
 UnitFrame unit_frame(const std::vector<Vec3>& points) {
-  Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
-  for (const Vec3& p : points) {
-    low = low.cwiseMin(p);
-    high = high.cwiseMax(p);
-  }
-  return frame_of_box(low, high);
+  return frame_of(points.size(), [&](std::size_t i) { return points[i]; });
 }
 
 template <class M>
 UnitFrame unit_frame(const M& mesh) {
-  Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
-  for (NodeId v : id_range<NodeId>(mesh.n_nodes())) {
-    low = low.cwiseMin(mesh.point(v));
-    high = high.cwiseMax(mesh.point(v));
-  }
-  return frame_of_box(low, high);
+  return frame_of(static_cast<std::size_t>(mesh.n_nodes()),
+                  [&](std::size_t i) { return mesh.point(NodeId(static_cast<index_t>(i))); });
 }
 
-UnitFrame far_unit_frame(const std::vector<Vec3>& points) {
-  const UnitFrame f = unit_frame(points);
-  return std::abs(f.exponent) > 64 ? f : UnitFrame{};
-}
+UnitFrame far_unit_frame(const std::vector<Vec3>& points) { return only_far(unit_frame(points)); }
 
 template <class M>
 UnitFrame far_unit_frame(const M& mesh) {
-  const UnitFrame f = unit_frame(mesh);
-  return std::abs(f.exponent) > 64 ? f : UnitFrame{};
+  return only_far(unit_frame(mesh));
 }
 
 template <class M>

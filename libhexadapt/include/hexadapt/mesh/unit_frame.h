@@ -1,7 +1,7 @@
 // UnitFrame: the frame a stage computes in, so that a grid meshes alike in any unit and place.
 //
-// world = local * 2^exponent + origin. The exponent brings the grid's bounding box diagonal
-// into [1, 2): scaling by a power of two is exact, so a grid in metres and the same grid in
+// world = local * 2^exponent + origin. The exponent brings the grid's largest extent (along
+// x, y or z) into [1, 2): scaling by a power of two is exact, so a grid in metres and the same grid in
 // any power-of-two multiple of metres go through the same arithmetic, and squared lengths and
 // volumes neither underflow (a grid at 1e-300) nor overflow (at 1e300). The origin is the
 // lowest corner when the grid lies farther from the point of coordinates 0 than its own size
@@ -32,6 +32,9 @@ struct UnitFrame {
     return Vec3(std::ldexp(v.x(), e), std::ldexp(v.y(), e), std::ldexp(v.z(), e));
   }
 };
+
+/// The power of two e with size x 2^-e in [1, 2); 0 for a size that is not positive and finite.
+int unit_exponent(double size);
 
 /// The frame of these points (identity when there are none or one is not finite).
 UnitFrame unit_frame(const std::vector<Vec3>& points);
