@@ -110,6 +110,31 @@ TEST(ControlledMove, NeverGoesBelowTheThresholdOnJitteredGrids) {
   expect_move_keeps_threshold(h, targets_of(h, disk(Vec3(4.2, 3.8, 0), 2.9), 2, 4), 0.3);
 }
 
+// Beside cells already below the threshold (a bad input, a pillow layer the move may mend),
+// the move keeps every passing cell passing and makes no failing cell worse. Judging by the
+// smallest score around the node alone let a passing cell sink to its failing neighbour's.
+TEST(ControlledMove, NeverMakesAPassingCellFailNorAFailingOneWorse) {
+  const QuadMesh grid = make_quad_grid(14, 14, test::jittered_points(14, 14, 0, 0.35, 5));
+  const double threshold = 0.75;
+  index_t failing = 0;
+  for (CellId c : id_range<CellId>(grid.n_cells())) failing += grid.cell_quality(c) < threshold;
+  ASSERT_GT(failing, 10);
+  ASSERT_LT(failing, grid.n_cells() - 10);
+  QuadMesh mesh = grid;
+  MoveOptions o;
+  o.threshold = threshold;
+  const MoveResult r = controlled_move(mesh, targets_of(grid, disk(Vec3(7.1, 6.8, 0), 4.6), 2), o);
+  EXPECT_GT(r.n_reached, 0);
+  for (CellId c : id_range<CellId>(grid.n_cells())) {
+    const double before = grid.cell_quality(c), after = mesh.cell_quality(c);
+    if (before >= threshold) {
+      EXPECT_GE(after, threshold) << "cell " << c.value() << " was passing";
+    } else {
+      EXPECT_GE(after, before) << "cell " << c.value() << " got worse";
+    }
+  }
+}
+
 // Every case of hexadapt-generate, in each dimension it has, extruded and jittered.
 class ControlledMoveOnGeneratedCases : public ::testing::TestWithParam<test::GeneratedCase> {};
 

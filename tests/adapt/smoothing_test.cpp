@@ -21,6 +21,38 @@ TEST(Smoothing, RepairsAPulledNodeAndNeverLowersTheMinimum) {
   EXPECT_GT(min_quality(mesh), 0.9);
 }
 
+// Cells at or above the floor stay there, where the local minimum alone lets a node beside a
+// poor cell it cannot mend (its other nodes fixed) sink its other cells to that cell's score.
+TEST(Smoothing, NoCellSinksBelowTheFloor) {
+  // A 5x5 grid: the ring of nodes around the 2x2 inner nodes is jittered and fixed.
+  const std::vector<Vec3> jittered = test::jittered_points(5, 5, 0, 0.45, 4);
+  QuadMesh grid = make_quad_grid(5, 5);
+  IdVector<NodeId, char> movable = all_movable(grid.n_nodes());
+  for (NodeId v : id_range<NodeId>(grid.n_nodes())) {
+    const Vec3 p = grid.point(v);
+    const bool inner = p.x() > 0.5 && p.x() < 4.5 && p.y() > 0.5 && p.y() < 4.5;
+    const bool ring = inner && (p.x() < 1.5 || p.x() > 3.5 || p.y() < 1.5 || p.y() > 3.5);
+    if (ring) grid.set_point(v, jittered[v.idx()]);
+    movable[v] = inner && !ring;
+  }
+  const double floor = 0.6;
+  auto sunk = [&](const QuadMesh& m) {
+    index_t n = 0;
+    for (CellId c : id_range<CellId>(grid.n_cells()))
+      n += grid.cell_quality(c) >= floor && m.cell_quality(c) < floor;
+    return n;
+  };
+  QuadMesh free = grid;
+  smooth(free, movable, boundary_constraints(grid));
+  ASSERT_GT(sunk(free), 0) << "the case no longer shows the effect";
+  QuadMesh floored = grid;
+  SmoothOptions o;
+  o.floor = floor;
+  smooth(floored, movable, boundary_constraints(grid), o);
+  EXPECT_EQ(sunk(floored), 0);
+  EXPECT_GE(min_quality(floored), min_quality(grid));
+}
+
 TEST(Smoothing, KeepsFixedNodesAndBoundaryNodesOnTheBoundary) {
   const int n = 6;
   HexMesh mesh = make_hex_grid(n, n, n, test::jittered_points(n, n, n, 0.3, 11));

@@ -30,8 +30,9 @@ struct Args {
   int cavity_range = 3;
   std::string layers = "automatic";
   double enough_share = AdaptOptions{}.enough_share;
-  int interface_pillow_rounds = 4;
-  int interface_pillow_carve = 1;
+  int interface_pillow_rounds = AdaptOptions{}.interface_pillow_rounds;
+  int interface_pillow_carve = AdaptOptions{}.interface_pillow_carve;
+  int mend_rounds = AdaptOptions{}.mend_rounds;
   double near_interface = 0.05;
   cli::InputOptions in;
   double threshold = 0.3;
@@ -117,8 +118,10 @@ Json result_json(const AdaptResult<M>& r, index_t input_cells, double threshold)
                        {"rounds", a.rounds},
                        {"kept", a.kept},
                        {"left_out", a.left_out},
-                       {"layer_cells", a.layer_cells}});
+                       {"layer_cells", a.layer_cells},
+                       {"failing", a.failing}});
   j["interface_pillows"] = pillows;
+  j["mend_failing"] = r.mend_failing;
   j["layers"] = to_string(r.layers);
   j["other_near_interface"] = r.other_near_interface;
   j["interface_layer_cells"] = r.n_interface_layer_cells;
@@ -261,6 +264,7 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   options.enough_share = args.enough_share;
   options.interface_pillow_rounds = args.interface_pillow_rounds;
   options.interface_pillow_carve = args.interface_pillow_carve;
+  options.mend_rounds = args.mend_rounds;
   options.near_interface = args.near_interface;
   options.correction = args.correction;
   options.targets = args.targets;
@@ -395,12 +399,19 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--interface-pillow-rounds", args.interface_pillow_rounds,
                  "guaranteed: attempts at pillowing each material's interfaces before the first "
-                 "move, kept only where every cell meets the criteria (0: no such pillowing)")
+                 "move, kept only where every cell meets the criteria, when the runs of "
+                 "--mend-rounds did not end with every cell passing (0: no such pillowing)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   app.add_option("--interface-pillow-carve", args.interface_pillow_carve,
                  "guaranteed: vertex distance of the cells left out of a material's layer "
                  "around a cell that fails the criteria, before the next attempt")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--mend-rounds", args.mend_rounds,
+                 "guaranteed, first layer: runs that keep each material's layer with its failing "
+                 "cells for the moves to mend, leaving it out around what stayed failing; then "
+                 "the layer is carved where it fails before the move (0: only that)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   app.add_option("--near-interface", args.near_interface,

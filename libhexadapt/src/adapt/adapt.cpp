@@ -51,8 +51,9 @@ void check_options(const AdaptOptions& o) {
     throw OptionError("max_loops must be >= 0, got " + std::to_string(o.max_loops));
   if (o.cavity_range < 0)
     throw OptionError("cavity_range must be >= 0, got " + std::to_string(o.cavity_range));
-  if (o.interface_pillow_rounds < 0 || o.interface_pillow_carve < 0)
-    throw OptionError("interface_pillow_rounds and interface_pillow_carve must be >= 0");
+  if (o.interface_pillow_rounds < 0 || o.interface_pillow_carve < 0 || o.mend_rounds < 0)
+    throw OptionError(
+        "interface_pillow_rounds, interface_pillow_carve and mend_rounds must be >= 0");
   if (!(o.enough_share >= 0 && o.enough_share <= 1))
     throw OptionError("enough_share must be in [0, 1], got " + std::to_string(o.enough_share));
   if (!(o.near_interface >= 0))

@@ -1,8 +1,10 @@
 #include "hexadapt/adapt/controlled_move.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "hexadapt/adapt/local_topology.h"
 #include "hexadapt/core/error.h"
@@ -12,20 +14,29 @@ namespace hexadapt {
 
 namespace {
 
-// Tries to put n at p; keeps it there when the cells around it stay acceptable: at or above
-// the threshold, or, where they were below it (a bad input), no worse than they were.
+// Tries to put n at p; keeps it there when every cell around it stays acceptable: at or above
+// the threshold, or, for a cell below it (a bad input, a layer cell the move may mend), no
+// worse than it was.
 template <class M>
 bool try_position(M& mesh, NodeId n, const Vec3& p, double threshold, const SizeCriterion& size) {
   const Vec3 old = mesh.point(n);
   mesh.set_point(n, p);
   if (min_score_around(mesh, n, size, threshold) >= threshold) return true;
   mesh.set_point(n, old);
-  if (min_score_around(mesh, n, size, threshold) >= threshold) return false;
-  const double before = min_score_around(mesh, n, size);
+  std::vector<double> before;
+  for (CellId c : mesh.node_cells(n)) before.push_back(cell_score(mesh, c, size));
+  if (*std::min_element(before.begin(), before.end()) >= threshold) return false;
   mesh.set_point(n, p);
-  if (min_score_around(mesh, n, size, before) >= before) return true;
-  mesh.set_point(n, old);
-  return false;
+  std::size_t k = 0;
+  for (CellId c : mesh.node_cells(n)) {
+    const double s = cell_score(mesh, c, size);
+    if (s < threshold && s < before[k]) {
+      mesh.set_point(n, old);
+      return false;
+    }
+    ++k;
+  }
+  return true;
 }
 
 // Puts n at p with its free edge neighbours ahead of it moved by the same displacement

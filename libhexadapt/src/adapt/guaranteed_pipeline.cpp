@@ -1,6 +1,8 @@
 // The guaranteed-quality pipeline (paper Fig. 10-b and 18-d, sec. 5.1-5.3): every step only
 // makes moves that keep the cells around a node at or above the threshold S_q, so the output
-// holds the threshold the user gave whenever the input does. The target correction (sec. 5.3)
+// holds the threshold the user gave whenever the input does. Beside a cell below it (a first
+// layer kept with its failing cells, first_layer), no move makes a passing cell fail nor the
+// controlled move a failing one worse; a run that still ends with such a cell is discarded. The target correction (sec. 5.3)
 // changes targets only, never the mesh, so it cannot break the guarantee. Between the first
 // controlled move and the move-smooth loop, cavities are pillowed around the nodes the move
 // left short of their targets (sec. 5.2, cavity_pillow.h); those still short at the end are
@@ -146,30 +148,38 @@ struct FirstMove {
   SizeCriterion size;
   MoveResult move;
   std::vector<InterfacePillowAttempt> pillows;
+  IdVector<CellId, CellId> cell_origin;  ///< the input cell each cell comes from
   index_t layer_cells = 0;
   double surface_dist = 0;  ///< sum of surface distances after the move
   double pillow_seconds = 0, move_seconds = 0;
 };
 
+// `mend`, when given: the layers are kept with their failing cells (interface_pillow.h), left
+// out around these input cells.
 template <class M>
 FirstMove<M> first_move(const M& mesh, const IdVector<CellId, int>& material,
                         const Targets& targets, const SizeCriterion& size, bool pillow_first,
-                        int n_materials, const MoveOptions& mo, const AdaptOptions& options) {
-  FirstMove<M> f{mesh, material, targets, size, {}, {}, 0, 0, 0, 0};
+                        int n_materials, const MoveOptions& mo, const AdaptOptions& options,
+                        const std::vector<CellId>* mend) {
+  FirstMove<M> f{mesh, material, targets, size, {}, {}, {}, 0, 0, 0, 0};
+  for (CellId c : id_range<CellId>(mesh.n_cells())) f.cell_origin.push_back(c);
   Timer clock;
   if (pillow_first && options.interface_pillow_rounds > 0) {
     InterfacePillowOptions io;
     io.threshold = options.threshold;
     io.rounds = options.interface_pillow_rounds;
     io.carve = options.interface_pillow_carve;
+    io.keep_failing = mend != nullptr;
     io.pillow = options.pillow;
     io.smooth = options.smooth;
     io.boundary = options.boundary;
-    InterfacePillowResult<M> p =
-        pillow_interfaces(f.mesh, f.material, n_materials, f.targets.has, f.size, io);
+    InterfacePillowResult<M> p = pillow_interfaces(f.mesh, f.material, n_materials,
+                                                   f.targets.has, f.size, io,
+                                                   mend ? *mend : std::vector<CellId>{});
     f.pillows = std::move(p.attempts);
     f.layer_cells = p.mesh.n_cells() - f.mesh.n_cells();
     f.size = f.size.remapped(p.cell_origin.raw());
+    f.cell_origin = std::move(p.cell_origin);
     f.mesh = std::move(p.mesh);
     f.material = std::move(p.material);
     extend_targets(f.mesh, f.targets);
@@ -228,13 +238,27 @@ void diagnose(AdaptResult<M>& r, const std::vector<NodeId>& failed_seeds) {
   r.blocking_cells = std::move(cells);
 }
 
+// The input cells the cells below a criterion come from, increasing.
+template <class M>
+std::vector<CellId> failing_origins(const M& mesh, const IdVector<CellId, CellId>& origin,
+                                    const SizeCriterion& size, double threshold) {
+  std::vector<CellId> out;
+  for (const CellFailure& f : failing_cells(mesh, threshold, size)) out.push_back(origin[f.cell]);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
 // The steps after the targets, with the given (resolved) layer strategy: the first move
 // (after a first layer, for `first` and `both`), cavities (for `cavities` and `both`), the
-// move-smooth loop; fills r.
+// move-smooth loop; fills r. `mend`, when given (a first layer only): in, the input cells
+// around which no layer goes; out, the input cells of the cells left failing, whose layers
+// were kept failing (first_move).
 template <class M>
 void run_layers(const M& grid, const IdVector<CellId, int>& material, const Targets& grid_targets,
                 const SizeCriterion& grid_size, int n_materials, LayerStrategy layers,
-                AdaptResult<M>& r, const AdaptOptions& options) {
+                AdaptResult<M>& r, const AdaptOptions& options,
+                std::vector<CellId>* mend = nullptr) {
   MoveOptions mo;
   mo.threshold = options.threshold;
   mo.steps = options.steps;
@@ -242,7 +266,7 @@ void run_layers(const M& grid, const IdVector<CellId, int>& material, const Targ
   r.layers = layers;
   FirstMove<M> f =
       first_move(grid, material, grid_targets, grid_size, pillows_first(layers), n_materials, mo,
-                 options);
+                 options, mend);
   M mesh = std::move(f.mesh);
   IdVector<CellId, int> out_material = std::move(f.material);
   Targets targets = std::move(f.targets);
@@ -264,6 +288,10 @@ void run_layers(const M& grid, const IdVector<CellId, int>& material, const Targ
   const auto sliding = sliding_constraints(boundary_constraints(mesh, options.boundary), targets);
   r.loops = move_smooth_loop(mesh, targets, sliding, mo, size, options);
   record_step(r, mesh, "move-smooth", clock, options.progress, 1.0);
+  if (mend) {
+    if (pillows_cavities(layers)) throw InternalError("mending a first layer with cavities");
+    *mend = failing_origins(mesh, f.cell_origin, size, options.threshold);
+  }
 
   r.mesh = std::move(mesh);
   r.material = std::move(out_material);
@@ -271,13 +299,50 @@ void run_layers(const M& grid, const IdVector<CellId, int>& material, const Targ
   diagnose(r, failed);
 }
 
+// A first layer (LayerStrategy::first): kept with its failing cells for the moves to mend,
+// left out around the input cells whose cells the run before left failing, at most
+// mend_rounds times; when no such run ends with every cell passing, the layers carved where
+// their cells fail before the move, which keeps the guarantee. The discarded runs' time is the
+// step "mend".
+template <class M>
+AdaptResult<M> first_layer(const M& grid, const IdVector<CellId, int>& material,
+                           const Targets& targets, const SizeCriterion& size, int n_materials,
+                           const AdaptResult<M>& before, const AdaptOptions& options) {
+  std::vector<CellId> left_out;
+  std::vector<index_t> failing;
+  double seconds = 0;
+  auto finish = [&](AdaptResult<M> r) {
+    r.mend_failing = failing;
+    if (seconds > 0) r.steps.push_back({"mend", r.min_quality, r.mesh.n_cells(), seconds});
+    return r;
+  };
+  for (int round = 0; round < options.mend_rounds; ++round) {
+    AdaptResult<M> r = before;
+    std::vector<CellId> mend = left_out;
+    run_layers(grid, material, targets, size, n_materials, LayerStrategy::first, r, options,
+               &mend);
+    failing.push_back(static_cast<index_t>(mend.size()));
+    if (mend.empty()) return finish(std::move(r));
+    for (std::size_t k = before.steps.size(); k < r.steps.size(); ++k)
+      seconds += r.steps[k].seconds;
+    left_out.insert(left_out.end(), mend.begin(), mend.end());
+    std::sort(left_out.begin(), left_out.end());
+    left_out.erase(std::unique(left_out.begin(), left_out.end()), left_out.end());
+  }
+  AdaptResult<M> r = before;
+  run_layers(grid, material, targets, size, n_materials, LayerStrategy::first, r, options);
+  return finish(std::move(r));
+}
+
 }  // namespace
 
 template <class M>
 AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions,
                                        const IdVector<CellId, int>& material,
-                                       const AdaptOptions& options,
+                                       const AdaptOptions& given,
                                        const reconstruct::InterfaceModel* model) {
+  AdaptOptions options = given;
+  options.smooth.floor = options.threshold;  // no smoothing sinks a cell below it
   AdaptResult<M> r;
   Timer clock;
   M mesh = grid;
@@ -308,8 +373,7 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
   if (options.layers == LayerStrategy::automatic && M::dim == 3) {
     // A first layer; when it leaves more than 1 - enough_share of the interface nodes off
     // their interface, cavities too, keeping the result that brings more nodes onto it.
-    AdaptResult<M> layered = r;
-    run_layers(grid, material, targets, size, n_materials, LayerStrategy::first, layered, options);
+    AdaptResult<M> layered = first_layer(grid, material, targets, size, n_materials, r, options);
     if (layered.n_near_interface >= options.enough_share * layered.n_interface_nodes) {
       r = std::move(layered);
     } else {
@@ -327,6 +391,8 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
       r.other_near_interface = other.n_near_interface;
       r.steps.push_back({"other-layers", r.min_quality, r.mesh.n_cells(), seconds});
     }
+  } else if (options.layers == LayerStrategy::first) {
+    r = first_layer(grid, material, targets, size, n_materials, r, options);
   } else {
     run_layers(grid, material, targets, size, n_materials,
                options.layers == LayerStrategy::automatic ? LayerStrategy::cavities

@@ -17,6 +17,7 @@ struct Attempt {
   PillowResult<M> p;
   SizeCriterion size;
   std::vector<CellId> failing_origins;
+  index_t failing_cells = 0;
 };
 
 // Nodes the smoothing may move: the new ones and the free nodes of the cells around them.
@@ -43,7 +44,10 @@ Attempt<M> try_pillow(const M& mesh, const IdVector<CellId, char>& set,
   smooth(a.p.mesh, layer_movable(a.p, mesh.n_nodes(), fixed),
          boundary_constraints(a.p.mesh, o.boundary), o.smooth, nullptr, a.size);
   for (CellId c : id_range<CellId>(a.p.mesh.n_cells()))
-    if (cell_score(a.p.mesh, c, a.size) < o.threshold) a.failing_origins.push_back(a.p.cell_origin[c]);
+    if (cell_score(a.p.mesh, c, a.size) < o.threshold) {
+      a.failing_origins.push_back(a.p.cell_origin[c]);
+      ++a.failing_cells;
+    }
   std::sort(a.failing_origins.begin(), a.failing_origins.end());
   a.failing_origins.erase(std::unique(a.failing_origins.begin(), a.failing_origins.end()),
                           a.failing_origins.end());
@@ -83,7 +87,8 @@ template <class M>
 InterfacePillowResult<M> pillow_interfaces(const M& mesh, const IdVector<CellId, int>& material,
                                            int n_materials, const IdVector<NodeId, char>& fixed,
                                            const SizeCriterion& size,
-                                           const InterfacePillowOptions& options) {
+                                           const InterfacePillowOptions& options,
+                                           const std::vector<CellId>& left_out_around) {
   if (options.rounds < 0 || options.carve < 0)
     throw OptionError("interface pillow rounds and carve must be >= 0");
   if (material.size() != static_cast<std::size_t>(mesh.n_cells()) ||
@@ -98,6 +103,10 @@ InterfacePillowResult<M> pillow_interfaces(const M& mesh, const IdVector<CellId,
     log.material = m;
     IdVector<CellId, char> set(static_cast<std::size_t>(r.mesh.n_cells()), 0);
     for (CellId c : id_range<CellId>(r.mesh.n_cells())) set[c] = r.material[c] == m;
+    std::vector<CellId> around;  // the region's own cells: another's layer is not its own
+    for (CellId c : left_out_around)
+      if (material[c] == m) around.push_back(c);
+    log.left_out = carve(mesh, around, options.carve, set);
     while (log.rounds < options.rounds && std::find(set.begin(), set.end(), 1) != set.end()) {
       ++log.rounds;
       std::optional<Attempt<M>> tried;
@@ -108,9 +117,10 @@ InterfacePillowResult<M> pillow_interfaces(const M& mesh, const IdVector<CellId,
       }
       Attempt<M>& a = *tried;
       if (a.p.n_new_cells == 0) break;
-      if (a.failing_origins.empty()) {
+      if (a.failing_origins.empty() || options.keep_failing) {
         log.kept = true;
         log.layer_cells = a.p.n_new_cells;
+        log.failing = a.failing_cells;
         for (CellId c : id_range<CellId>(a.p.mesh.n_cells()))
           if (c.value() >= r.mesh.n_cells()) {
             r.cell_origin.push_back(r.cell_origin[a.p.cell_origin[c]]);
@@ -133,9 +143,9 @@ InterfacePillowResult<M> pillow_interfaces(const M& mesh, const IdVector<CellId,
 
 template InterfacePillowResult<QuadMesh> pillow_interfaces<QuadMesh>(
     const QuadMesh&, const IdVector<CellId, int>&, int, const IdVector<NodeId, char>&,
-    const SizeCriterion&, const InterfacePillowOptions&);
+    const SizeCriterion&, const InterfacePillowOptions&, const std::vector<CellId>&);
 template InterfacePillowResult<HexMesh> pillow_interfaces<HexMesh>(
     const HexMesh&, const IdVector<CellId, int>&, int, const IdVector<NodeId, char>&,
-    const SizeCriterion&, const InterfacePillowOptions&);
+    const SizeCriterion&, const InterfacePillowOptions&, const std::vector<CellId>&);
 
 }  // namespace hexadapt

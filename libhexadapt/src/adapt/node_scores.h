@@ -73,6 +73,13 @@ class NodeScores {
     return s;
   }
 
+  /// Whether the last trial, which did not stop early, took a cell at or above `floor` below it.
+  bool sinks_below(double floor) const {
+    for (const Entry& e : cells_)
+      if (e.current >= floor && e.trial < floor) return true;
+    return false;
+  }
+
   /// The last trial, which did not stop early, is the current position.
   void accept_trial() {
     for (Entry& e : cells_) e.current = e.trial;

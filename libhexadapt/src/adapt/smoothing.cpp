@@ -36,7 +36,7 @@ double laplacian_step(M& mesh, NodeId n, Vec3 d, const SmoothOptions& options,
   for (int h = 0; h <= options.halvings; ++h, d *= 0.5) {
     mesh.set_point(n, p + d);
     const double after = scores.trial(before);
-    if (after >= before) {
+    if (after >= before && !scores.sinks_below(options.floor)) {
       scores.accept_trial();
       q = after;
       return after - before;
@@ -50,7 +50,7 @@ double laplacian_step(M& mesh, NodeId n, Vec3 d, const SmoothOptions& options,
 // constraint, keeping the best strict improvement, halving the step when none improves.
 template <class M>
 double pattern_search(M& mesh, NodeId n, const std::vector<NodeId>& around,
-                      const NodeConstraint& constraint, int levels,
+                      const NodeConstraint& constraint, int levels, double floor,
                       detail::NodeScores<M>& scores, double& q) {
   double h = 0.25 * mean_edge_length(mesh, n, around);
   const double start = q;
@@ -67,7 +67,7 @@ double pattern_search(M& mesh, NodeId n, const std::vector<NodeId>& around,
           if (!(d.norm() > 1e-3 * h)) continue;
           mesh.set_point(n, p + d);
           const double trial = scores.trial(best + 1e-9);
-          if (trial > best + 1e-9) {
+          if (trial > best + 1e-9 && !scores.sinks_below(floor)) {
             scores.accept_trial();
             best = trial;
             best_p = p + d;
@@ -95,7 +95,8 @@ double smooth_node(M& mesh, NodeId n, const NodeConstraint& constraint,
   double gain = pull ? laplacian_step(mesh, n, d, options, scores, q) : 0;
   if (q < options.optimise_below) {
     const double more =
-        pattern_search(mesh, n, around, constraint, options.search_levels, scores, q);
+        pattern_search(mesh, n, around, constraint, options.search_levels, options.floor,
+                       scores, q);
     if (more > 0) gain = std::max(gain, 0.0) + more;
   }
   scores.store(cache);

@@ -78,17 +78,22 @@ struct AdaptOptions {
   int max_loops = 20;    ///< guaranteed: move-smooth rounds at most
   LayerStrategy layers = LayerStrategy::automatic;  ///< guaranteed: cavities, first or both
   /// guaranteed, automatic, 3D: the share of interface nodes near their interface with a
-  /// first layer beyond which cavities are not tried. Measured: a first layer brings 94-100 %
-  /// of them near on the curved 3D cases, where cavities then never did better, and 51-72 %
-  /// on the extruded ones, where cavities bring 99-100 %.
-  double enough_share = 0.9;
+  /// first layer beyond which cavities are not tried. Measured with the layers mended
+  /// (mend_rounds): a first layer brings 86-100 % of them near on the 3D cases and 99.7-100 %
+  /// on the extruded ones, and cavities never did better (the vortex: 56-68 %).
+  double enough_share = 0.8;
   int cavity_range = 3;  ///< guaranteed: starting vertex distance of a cavity; 0 = no cavities
   /// guaranteed: attempts at pillowing each material's interfaces before the first move
   /// (interface_pillow.h); 0 = none.
   int interface_pillow_rounds = 4;
   /// guaranteed: vertex distance of the cells left out of a material's layer around a cell
   /// that fails the criteria.
-  int interface_pillow_carve = 1;
+  int interface_pillow_carve = 2;
+  /// guaranteed, first layer: runs that keep the layers with their failing cells for the
+  /// moves to mend (interface_pillow.h), each one leaving the layers out around the cells the
+  /// run before left failing; when none ends with every cell passing, the layers are carved
+  /// where they fail before the move. 0 = carve before the move only.
+  int mend_rounds = 4;
   /// guaranteed: the loop stops when a round lowers dist by no more than this share of it.
   double loop_tolerance = 1e-3;
   /// A node within this many local sizes (the mean local_size of its cells) of its interface
@@ -157,6 +162,9 @@ struct AdaptResult {
   /// their interface.
   index_t other_near_interface = 0;
   std::vector<InterfacePillowAttempt> interface_pillows;  ///< per material, before the move
+  /// Per run that kept the first layer's failing cells (AdaptOptions::mend_rounds): the input
+  /// cells whose cells still failed at its end (the last 0: that run is the result).
+  std::vector<index_t> mend_failing;
   index_t n_interface_layer_cells = 0;  ///< cells the interface pillowing added
   std::vector<CavityAttempt> cavities;  ///< every cavity tried, in order
   index_t n_cavities_published = 0;

@@ -11,9 +11,17 @@
 // size_criterion.h) once the new nodes are smoothed. Where cells fail (around the
 // staircase's concave corners, in sheets one cell thick), the cells of the region within
 // vertex distance `carve` of each failing cell's origin are left out of the pillowed set and
-// the material is pillowed again, at most `rounds` times; then, or when what is left of the region touches itself along an edge only
-// (no layer can follow it: pillow.h), it is left unpillowed. Nodes with a target never
-// move here; the cells outside a kept layer and its ring are the input's.
+// the material is pillowed again, at most `rounds` times; then, or when what is left of the
+// region touches itself along an edge only (no layer can follow it: pillow.h), it is left
+// unpillowed. Nodes with a target never move here; the cells outside a kept layer and its
+// ring are the input's.
+//
+// With `keep_failing`, a layer is kept at its first pillowing even where cells fail: on the
+// staircase a layer cell at a concave corner is sheared, and the moves that bring the
+// interface nodes onto their smooth surface often mend it (the controlled move and the
+// smoothing never make a failing cell worse nor a passing one fail). The caller then checks
+// the cells at the end, and pillows again with the regions around what stayed failing left
+// out (`left_out_around`: input cells, carved like failing cells before the first pillowing).
 #pragma once
 
 #include <vector>
@@ -27,7 +35,8 @@ namespace hexadapt {
 struct InterfacePillowOptions {
   double threshold = 0.3;  ///< S_q every cell keeps
   int rounds = 4;          ///< pillowing attempts per material
-  int carve = 1;           ///< vertex distance of the cells left out around a failing cell
+  int carve = 2;           ///< vertex distance of the cells left out around a failing cell
+  bool keep_failing = false;  ///< keep a layer at its first pillowing, failing cells and all
   PillowOptions pillow;
   SmoothOptions smooth;
   BoundaryOptions boundary;
@@ -40,6 +49,7 @@ struct InterfacePillowAttempt {
   bool kept = false;        ///< its layer is in the mesh
   index_t left_out = 0;     ///< cells of the region carved out of the pillowed set
   index_t layer_cells = 0;  ///< cells of the kept layer
+  index_t failing = 0;      ///< cells of the kept layer and its ring below a criterion
 };
 
 template <class M>
@@ -52,11 +62,13 @@ struct InterfacePillowResult {
 };
 
 /// `fixed`: one flag per node of mesh, nodes that must not move (those with a target); `size`:
-/// the size criterion on mesh's cells.
+/// the size criterion on mesh's cells; `left_out_around`: cells of mesh around which (within
+/// vertex distance `carve`) no region is pillowed.
 template <class M>
 InterfacePillowResult<M> pillow_interfaces(const M& mesh, const IdVector<CellId, int>& material,
                                            int n_materials, const IdVector<NodeId, char>& fixed,
                                            const SizeCriterion& size,
-                                           const InterfacePillowOptions& options = {});
+                                           const InterfacePillowOptions& options = {},
+                                           const std::vector<CellId>& left_out_around = {});
 
 }  // namespace hexadapt

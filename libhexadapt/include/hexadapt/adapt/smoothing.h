@@ -12,6 +12,7 @@
 // count.
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include "hexadapt/adapt/local_topology.h"
@@ -31,6 +32,10 @@ struct SmoothOptions {
   int search_levels = 4;  ///< pattern-search step halvings (first step: 1/4 edge length)
   /// Laplacian pulls shorter than this many mean edge lengths around the node are not made.
   double min_move = 1e-2;
+  /// A cell scoring at least this never drops below it (the threshold). The local minimum
+  /// alone would let a node beside a cell below the threshold sink its other cells to that
+  /// cell's score.
+  double floor = -std::numeric_limits<double>::infinity();
 };
 
 struct SmoothResult {

@@ -1,0 +1,101 @@
+#include "hexadapt/adapt/interface_pillow.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "adapt/generated_case.h"
+#include "hexadapt/adapt/targets.h"
+
+namespace hexadapt {
+namespace {
+
+// The asteroid's staircase at 20^3: pillowed on the unmoved grid, some layer cells fail at its
+// concave corners.
+template <class F>
+void on_asteroid(F&& check) {
+  test::with_generated_case({"asteroid", {20, 20, 20}}, [&](const auto& grid, const Fractions& f,
+                                                            const IdVector<CellId, int>& m) {
+    if constexpr (std::decay_t<decltype(grid)>::dim == 3) {
+      const Targets t = compute_targets(grid, f, m, boundary_constraints(grid));
+      check(grid, m, f.n_materials(), t.has, size_criterion(grid, 0.1));
+    }
+  });
+}
+
+index_t failing_cells(const HexMesh& mesh, const SizeCriterion& size, double threshold) {
+  index_t n = 0;
+  for (CellId c : id_range<CellId>(mesh.n_cells())) n += cell_score(mesh, c, size) < threshold;
+  return n;
+}
+
+TEST(InterfacePillow, CarvesWhereCellsFailOrKeepsThemForTheMovesToMend) {
+  on_asteroid([](const HexMesh& grid, const IdVector<CellId, int>& m, int n_materials,
+                 const IdVector<NodeId, char>& fixed, const SizeCriterion& size) {
+    InterfacePillowOptions o;
+    const auto carved = pillow_interfaces(grid, m, n_materials, fixed, size, o);
+    index_t left_out = 0;
+    for (const InterfacePillowAttempt& a : carved.attempts) {
+      left_out += a.left_out;
+      EXPECT_EQ(a.failing, 0);
+    }
+    EXPECT_GT(left_out, 0);
+    const SizeCriterion carved_size = size.remapped(carved.cell_origin.raw());
+    EXPECT_EQ(failing_cells(carved.mesh, carved_size, o.threshold), 0);
+
+    o.keep_failing = true;
+    const auto kept = pillow_interfaces(grid, m, n_materials, fixed, size, o);
+    index_t failing = 0;
+    for (const InterfacePillowAttempt& a : kept.attempts) {
+      EXPECT_TRUE(a.kept);
+      EXPECT_EQ(a.rounds, 1);
+      EXPECT_EQ(a.left_out, 0);
+      failing += a.failing;
+    }
+    EXPECT_GT(failing, 0);
+    EXPECT_GT(kept.mesh.n_cells(), carved.mesh.n_cells());
+    const SizeCriterion kept_size = size.remapped(kept.cell_origin.raw());
+    EXPECT_EQ(failing_cells(kept.mesh, kept_size, o.threshold), failing);
+    // The nodes with a target never move.
+    for (NodeId v : id_range<NodeId>(grid.n_nodes()))
+      if (fixed[v]) {
+        EXPECT_EQ(kept.mesh.point(v), grid.point(v));
+      }
+  });
+}
+
+TEST(InterfacePillow, LeavesTheRegionsOutAroundTheCellsGiven) {
+  on_asteroid([](const HexMesh& grid, const IdVector<CellId, int>& m, int n_materials,
+                 const IdVector<NodeId, char>& fixed, const SizeCriterion& size) {
+    InterfacePillowOptions o;
+    o.keep_failing = true;
+    o.carve = 1;
+    // The cells of the first layer that fail come from these input cells.
+    const auto first = pillow_interfaces(grid, m, n_materials, fixed, size, o);
+    const SizeCriterion first_size = size.remapped(first.cell_origin.raw());
+    std::vector<CellId> around;
+    for (CellId c : id_range<CellId>(first.mesh.n_cells()))
+      if (cell_score(first.mesh, c, first_size) < o.threshold) around.push_back(first.cell_origin[c]);
+    std::sort(around.begin(), around.end());
+    around.erase(std::unique(around.begin(), around.end()), around.end());
+    ASSERT_FALSE(around.empty());
+
+    const auto again = pillow_interfaces(grid, m, n_materials, fixed, size, o, around);
+    index_t left_out = 0;
+    for (const InterfacePillowAttempt& a : again.attempts) left_out += a.left_out;
+    EXPECT_GE(left_out, static_cast<index_t>(around.size()));
+    // No layer cell is inflated from a cell given, nor from a cell sharing a node with one.
+    IdVector<CellId, char> near(static_cast<std::size_t>(grid.n_cells()), 0);
+    for (CellId c : around)
+      for (NodeId v : grid.cell_nodes(c))
+        for (CellId o2 : grid.node_cells(v))
+          if (m[o2] == m[c]) near[o2] = 1;
+    for (CellId c : id_range<CellId>(again.mesh.n_cells()))
+      if (c.value() >= grid.n_cells()) {
+        EXPECT_FALSE(near[again.cell_origin[c]]) << c.value();
+      }
+  });
+}
+
+}  // namespace
+}  // namespace hexadapt
