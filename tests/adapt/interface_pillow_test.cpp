@@ -3,9 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 
+#include "adapt/adapt_cases.h"
 #include "adapt/generated_case.h"
 #include "hexadapt/adapt/targets.h"
+#include "hexadapt/mesh/mesh_check.h"
 
 namespace hexadapt {
 namespace {
@@ -95,6 +98,28 @@ TEST(InterfacePillow, LeavesTheRegionsOutAroundTheCellsGiven) {
         EXPECT_FALSE(near[again.cell_origin[c]]) << c.value();
       }
   });
+}
+
+// A region of two cells that share only an edge, joined by cells around both of its ends: no
+// layer follows it (pillow.h). The cells around that edge are carved out and the rest of
+// the region gets its layer; the material used to stay unpillowed.
+TEST(InterfacePillow, CarvesWhereTheRegionTouchesItselfAlongAnEdge) {
+  const HexMesh grid = make_hex_grid(5, 5, 5);
+  IdVector<CellId, int> material(static_cast<std::size_t>(grid.n_cells()), 0);
+  const std::array<std::array<int, 3>, 8> cells{{{1, 1, 2}, {2, 2, 2}, {1, 1, 3}, {2, 1, 3},
+                                                 {2, 2, 3}, {1, 1, 1}, {2, 1, 1}, {2, 2, 1}}};
+  for (const auto& [i, j, k] : cells) material[CellId(i + 5 * (j + 5 * k))] = 1;
+  const IdVector<NodeId, char> fixed(static_cast<std::size_t>(grid.n_nodes()), 0);
+  InterfacePillowOptions o;
+  o.carve = 0;
+  const auto r = pillow_interfaces(grid, material, 2, fixed, size_criterion(grid, 0.1), o);
+  ASSERT_EQ(r.attempts.size(), 2u);
+  const InterfacePillowAttempt& region = r.attempts[1];
+  EXPECT_TRUE(region.kept);
+  EXPECT_EQ(region.left_out, 2);  // the two cells that share the edge
+  EXPECT_GT(region.layer_cells, 0);
+  const MeshCheckResult check = check_mesh(r.mesh);
+  EXPECT_TRUE(check.ok());
 }
 
 }  // namespace

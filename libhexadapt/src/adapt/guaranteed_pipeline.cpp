@@ -238,6 +238,28 @@ void diagnose(AdaptResult<M>& r, const std::vector<NodeId>& failed_seeds) {
   r.blocking_cells = std::move(cells);
 }
 
+// Rounds of the move-smooth loop after which a run whose first layer was kept failing is
+// judged (run_layers). Measured at 48^3 on venn and balldrop t = 1: the cells failing after
+// 2-3 rounds are those failing at the end, or one more.
+constexpr int mend_probe_loops = 2;
+
+// Smooths the nodes of the cells around every cell below a criterion, those with a target
+// too, sliding on their interface surfaces (so they stay near them), each trying the pattern
+// search: the move-smooth loop holds the nodes with a target at their targets, where a layer
+// cell sheared on the staircase may stay failing. No passing cell fails (the floor).
+template <class M>
+void smooth_around_failing(M& mesh, const IdVector<NodeId, NodeConstraint>& sliding,
+                           const SizeCriterion& size, const AdaptOptions& options) {
+  IdVector<NodeId, char> movable(static_cast<std::size_t>(mesh.n_nodes()), 0);
+  for (const CellFailure& f : failing_cells(mesh, options.threshold, size))
+    for (NodeId v : mesh.cell_nodes(f.cell))
+      for (CellId c : mesh.node_cells(v))
+        for (NodeId w : mesh.cell_nodes(c)) movable[w] = 1;
+  SmoothOptions o = options.smooth;
+  o.optimise_below = 1.0;
+  smooth(mesh, movable, sliding, o, nullptr, size);
+}
+
 // The input cells the cells below a criterion come from, increasing.
 template <class M>
 std::vector<CellId> failing_origins(const M& mesh, const IdVector<CellId, CellId>& origin,
@@ -286,12 +308,24 @@ void run_layers(const M& grid, const IdVector<CellId, int>& material, const Targ
   record_step(r, mesh, "cavity", clock, options.progress, 0.5);
 
   const auto sliding = sliding_constraints(boundary_constraints(mesh, options.boundary), targets);
-  r.loops = move_smooth_loop(mesh, targets, sliding, mo, size, options);
-  record_step(r, mesh, "move-smooth", clock, options.progress, 1.0);
   if (mend) {
+    // No cell starts failing on the way, and what still fails after a few rounds of the loop
+    // and the local smoothing is what fails at the end: a run to be discarded stops there.
     if (pillows_cavities(layers)) throw InternalError("mending a first layer with cavities");
+    AdaptOptions probe = options;
+    probe.max_loops = std::min(options.max_loops, mend_probe_loops);
+    r.loops = move_smooth_loop(mesh, targets, sliding, mo, size, probe);
+    smooth_around_failing(mesh, sliding, size, options);
     *mend = failing_origins(mesh, f.cell_origin, size, options.threshold);
+    if (!mend->empty()) {
+      record_step(r, mesh, "move-smooth", clock, options.progress, 1.0);
+      return;  // the caller discards the run
+    }
   }
+  AdaptOptions rest = options;
+  rest.max_loops = options.max_loops - r.loops;
+  r.loops += move_smooth_loop(mesh, targets, sliding, mo, size, rest);
+  record_step(r, mesh, "move-smooth", clock, options.progress, 1.0);
 
   r.mesh = std::move(mesh);
   r.material = std::move(out_material);
@@ -299,8 +333,9 @@ void run_layers(const M& grid, const IdVector<CellId, int>& material, const Targ
   diagnose(r, failed);
 }
 
-// A first layer (LayerStrategy::first): kept with its failing cells for the moves to mend,
-// left out around the input cells whose cells the run before left failing, at most
+// A first layer (LayerStrategy::first): kept with its failing cells for the moves and
+// smooth_around_failing to mend, left out around the input cells whose cells the run before
+// left failing, at most
 // mend_rounds times; when no such run ends with every cell passing, the layers carved where
 // their cells fail before the move, which keeps the guarantee. The discarded runs' time is the
 // step "mend".

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "hexadapt/core/error.h"
+#include "hexadapt/mesh/geometry.h"
 
 namespace hexadapt {
 
@@ -81,6 +82,49 @@ index_t carve(const M& mesh, const std::vector<CellId>& origins, int range,
   return removed;
 }
 
+// Shared nodes of two cells.
+template <class M>
+int shared_nodes(const M& mesh, CellId a, CellId b) {
+  int n = 0;
+  for (NodeId u : mesh.cell_nodes(a))
+    for (NodeId v : mesh.cell_nodes(b)) n += u == v;
+  return n;
+}
+
+// In 3D, the set's cells around an edge that are not joined through faces around it: where
+// the set touches itself along an edge only, which a layer cannot always follow (pillow.h).
+// Increasing; none in 2D.
+template <class M>
+std::vector<CellId> edge_touching(const M& mesh, const IdVector<CellId, char>& set) {
+  std::vector<CellId> out;
+  if constexpr (M::dim == 3) {
+    for (CellId c : id_range<CellId>(mesh.n_cells())) {
+      if (!set[c]) continue;
+      const auto nodes = mesh.cell_nodes(c);
+      for (const auto& e : ref_hex::edges) {
+        const NodeId a = nodes[static_cast<std::size_t>(e[0])];
+        const NodeId b = nodes[static_cast<std::size_t>(e[1])];
+        std::vector<CellId> around;  // the set's cells around the edge, c first
+        for (CellId o : mesh.node_cells(a))
+          if (set[o] && std::find(mesh.node_cells(b).begin(), mesh.node_cells(b).end(), o) !=
+                            mesh.node_cells(b).end())
+            around.push_back(o);
+        // c's face neighbours around the edge, and theirs: what a face walk reaches.
+        std::vector<CellId> reached{c};
+        for (std::size_t k = 0; k < reached.size(); ++k)
+          for (CellId o : around)
+            if (std::find(reached.begin(), reached.end(), o) == reached.end() &&
+                shared_nodes(mesh, reached[k], o) >= 4)
+              reached.push_back(o);
+        if (reached.size() < around.size()) out.insert(out.end(), around.begin(), around.end());
+      }
+    }
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
 }  // namespace
 
 template <class M>
@@ -113,7 +157,12 @@ InterfacePillowResult<M> pillow_interfaces(const M& mesh, const IdVector<CellId,
       try {
         tried.emplace(try_pillow(r.mesh, set, still, current, options));
       } catch (const MeshError&) {
-        break;  // the carved set touches itself along an edge: no layer can follow it
+        // The set touches itself along an edge where no layer can follow it: those places
+        // are carved out, and the layer tried again.
+        const index_t removed = carve(r.mesh, edge_touching(r.mesh, set), options.carve, set);
+        if (removed == 0) break;
+        log.left_out += removed;
+        continue;
       }
       Attempt<M>& a = *tried;
       if (a.p.n_new_cells == 0) break;

@@ -79,8 +79,8 @@ struct AdaptOptions {
   LayerStrategy layers = LayerStrategy::automatic;  ///< guaranteed: cavities, first or both
   /// guaranteed, automatic, 3D: the share of interface nodes near their interface with a
   /// first layer beyond which cavities are not tried. Measured with the layers mended
-  /// (mend_rounds): a first layer brings 86-100 % of them near on the 3D cases and 99.7-100 %
-  /// on the extruded ones, and cavities never did better (the vortex: 56-68 %).
+  /// (mend_rounds): a first layer brings 97-100 % of them near on the 3D cases and 99.7-100 %
+  /// on the extruded ones, and cavities never did better.
   double enough_share = 0.8;
   int cavity_range = 3;  ///< guaranteed: starting vertex distance of a cavity; 0 = no cavities
   /// guaranteed: attempts at pillowing each material's interfaces before the first move
@@ -88,12 +88,12 @@ struct AdaptOptions {
   int interface_pillow_rounds = 4;
   /// guaranteed: vertex distance of the cells left out of a material's layer around a cell
   /// that fails the criteria.
-  int interface_pillow_carve = 2;
+  int interface_pillow_carve = 1;
   /// guaranteed, first layer: runs that keep the layers with their failing cells for the
-  /// moves to mend (interface_pillow.h), each one leaving the layers out around the cells the
-  /// run before left failing; when none ends with every cell passing, the layers are carved
-  /// where they fail before the move. 0 = carve before the move only.
-  int mend_rounds = 4;
+  /// moves and a local smoothing to mend (interface_pillow.h), each one leaving the layers
+  /// out around the cells the run before left failing; when none gets every cell passing,
+  /// the layers are carved where they fail before the move. 0 = carve before the move only.
+  int mend_rounds = 8;
   /// guaranteed: the loop stops when a round lowers dist by no more than this share of it.
   double loop_tolerance = 1e-3;
   /// A node within this many local sizes (the mean local_size of its cells) of its interface

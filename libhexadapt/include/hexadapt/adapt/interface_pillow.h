@@ -11,9 +11,9 @@
 // size_criterion.h) once the new nodes are smoothed. Where cells fail (around the
 // staircase's concave corners, in sheets one cell thick), the cells of the region within
 // vertex distance `carve` of each failing cell's origin are left out of the pillowed set and
-// the material is pillowed again, at most `rounds` times; then, or when what is left of the
-// region touches itself along an edge only (no layer can follow it: pillow.h), it is left
-// unpillowed. Nodes with a target never move here; the cells outside a kept layer and its
+// the material is pillowed again, at most `rounds` times; then it is left unpillowed. Where
+// what is left of the region touches itself along an edge in a way no layer can follow
+// (pillow.h), the cells around such edges are carved out the same way. Nodes with a target never move here; the cells outside a kept layer and its
 // ring are the input's.
 //
 // With `keep_failing`, a layer is kept at its first pillowing even where cells fail: on the
@@ -35,7 +35,7 @@ namespace hexadapt {
 struct InterfacePillowOptions {
   double threshold = 0.3;  ///< S_q every cell keeps
   int rounds = 4;          ///< pillowing attempts per material
-  int carve = 2;           ///< vertex distance of the cells left out around a failing cell
+  int carve = 1;           ///< vertex distance of the cells left out around a failing cell
   bool keep_failing = false;  ///< keep a layer at its first pillowing, failing cells and all
   PillowOptions pillow;
   SmoothOptions smooth;
