@@ -78,7 +78,8 @@ TEST(InterfacePillow, LeavesTheRegionsOutAroundTheCellsGiven) {
     const SizeCriterion first_size = size.remapped(first.cell_origin.raw());
     std::vector<CellId> around;
     for (CellId c : id_range<CellId>(first.mesh.n_cells()))
-      if (cell_score(first.mesh, c, first_size) < o.threshold) around.push_back(first.cell_origin[c]);
+      if (cell_score(first.mesh, c, first_size) < o.threshold)
+        around.push_back(first.cell_origin[c]);
     std::sort(around.begin(), around.end());
     around.erase(std::unique(around.begin(), around.end()), around.end());
     ASSERT_FALSE(around.empty());
@@ -106,8 +107,8 @@ TEST(InterfacePillow, LeavesTheRegionsOutAroundTheCellsGiven) {
 TEST(InterfacePillow, CarvesWhereTheRegionTouchesItselfAlongAnEdge) {
   const HexMesh grid = make_hex_grid(5, 5, 5);
   IdVector<CellId, int> material(static_cast<std::size_t>(grid.n_cells()), 0);
-  const std::array<std::array<int, 3>, 8> cells{{{1, 1, 2}, {2, 2, 2}, {1, 1, 3}, {2, 1, 3},
-                                                 {2, 2, 3}, {1, 1, 1}, {2, 1, 1}, {2, 2, 1}}};
+  const std::array<std::array<int, 3>, 8> cells{
+      {{1, 1, 2}, {2, 2, 2}, {1, 1, 3}, {2, 1, 3}, {2, 2, 3}, {1, 1, 1}, {2, 1, 1}, {2, 2, 1}}};
   for (const auto& [i, j, k] : cells) material[CellId(i + 5 * (j + 5 * k))] = 1;
   const IdVector<NodeId, char> fixed(static_cast<std::size_t>(grid.n_nodes()), 0);
   InterfacePillowOptions o;

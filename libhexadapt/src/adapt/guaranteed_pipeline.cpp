@@ -2,11 +2,11 @@
 // makes moves that keep the cells around a node at or above the threshold S_q, so the output
 // holds the threshold the user gave whenever the input does. Beside a cell below it (a first
 // layer kept with its failing cells, first_layer), no move makes a passing cell fail nor the
-// controlled move a failing one worse; a run that still ends with such a cell is discarded. The target correction (sec. 5.3)
-// changes targets only, never the mesh, so it cannot break the guarantee. Between the first
-// controlled move and the move-smooth loop, cavities are pillowed around the nodes the move
-// left short of their targets (sec. 5.2, cavity_pillow.h); those still short at the end are
-// reported as blocked.
+// controlled move a failing one worse; a run that still ends with such a cell is discarded.
+// The target correction (sec. 5.3) changes targets only, never the mesh, so it cannot break
+// the guarantee. Between the first controlled move and the move-smooth loop, cavities are
+// pillowed around the nodes the move left short of their targets (sec. 5.2,
+// cavity_pillow.h); those still short at the end are reported as blocked.
 #include "guaranteed_pipeline.h"
 
 #include <algorithm>
@@ -173,9 +173,9 @@ FirstMove<M> first_move(const M& mesh, const IdVector<CellId, int>& material,
     io.pillow = options.pillow;
     io.smooth = options.smooth;
     io.boundary = options.boundary;
-    InterfacePillowResult<M> p = pillow_interfaces(f.mesh, f.material, n_materials,
-                                                   f.targets.has, f.size, io,
-                                                   mend ? *mend : std::vector<CellId>{});
+    InterfacePillowResult<M> p =
+        pillow_interfaces(f.mesh, f.material, n_materials, f.targets.has, f.size, io,
+                          mend ? *mend : std::vector<CellId>{});
     f.pillows = std::move(p.attempts);
     f.layer_cells = p.mesh.n_cells() - f.mesh.n_cells();
     f.size = f.size.remapped(p.cell_origin.raw());
@@ -286,9 +286,8 @@ void run_layers(const M& grid, const IdVector<CellId, int>& material, const Targ
   mo.steps = options.steps;
   mo.drag = options.drag;
   r.layers = layers;
-  FirstMove<M> f =
-      first_move(grid, material, grid_targets, grid_size, pillows_first(layers), n_materials, mo,
-                 options, mend);
+  FirstMove<M> f = first_move(grid, material, grid_targets, grid_size, pillows_first(layers),
+                              n_materials, mo, options, mend);
   M mesh = std::move(f.mesh);
   IdVector<CellId, int> out_material = std::move(f.material);
   Targets targets = std::move(f.targets);
@@ -335,10 +334,9 @@ void run_layers(const M& grid, const IdVector<CellId, int>& material, const Targ
 
 // A first layer (LayerStrategy::first): kept with its failing cells for the moves and
 // smooth_around_failing to mend, left out around the input cells whose cells the run before
-// left failing, at most
-// mend_rounds times; when no such run ends with every cell passing, the layers carved where
-// their cells fail before the move, which keeps the guarantee. The discarded runs' time is the
-// step "mend".
+// left failing, at most mend_rounds times; when no such run ends with every cell passing, the
+// layers carved where their cells fail before the move, which keeps the guarantee. The
+// discarded runs' time is the step "mend".
 template <class M>
 AdaptResult<M> first_layer(const M& grid, const IdVector<CellId, int>& material,
                            const Targets& targets, const SizeCriterion& size, int n_materials,

@@ -94,9 +94,8 @@ double smooth_node(M& mesh, NodeId n, const NodeConstraint& constraint,
   detail::NodeScores<M> scores(mesh, n, size, cache);
   double gain = pull ? laplacian_step(mesh, n, d, options, scores, q) : 0;
   if (q < options.optimise_below) {
-    const double more =
-        pattern_search(mesh, n, around, constraint, options.search_levels, options.floor,
-                       scores, q);
+    const double more = pattern_search(mesh, n, around, constraint, options.search_levels,
+                                       options.floor, scores, q);
     if (more > 0) gain = std::max(gain, 0.0) + more;
   }
   scores.store(cache);
