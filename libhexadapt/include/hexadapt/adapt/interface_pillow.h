@@ -13,14 +13,14 @@
 // vertex distance `carve` of each failing cell's origin are left out of the pillowed set and
 // the material is pillowed again, at most `rounds` times; then it is left unpillowed. Where
 // what is left of the region touches itself along an edge in a way no layer can follow
-// (pillow.h), the cells around such edges are carved out the same way. Nodes with a target never move here; the cells outside a kept layer and its
-// ring are the input's.
+// (pillow.h), the cells around such edges are carved out the same way. Nodes with a target
+// never move here; the cells outside a kept layer and its ring are the input's.
 //
 // With `keep_failing`, a layer is kept at its first pillowing even where cells fail: on the
 // staircase a layer cell at a concave corner is sheared, and the moves that bring the
-// interface nodes onto their smooth surface often mend it (the controlled move and the
-// smoothing never make a failing cell worse nor a passing one fail). The caller then checks
-// the cells at the end, and pillows again with the regions around what stayed failing left
+// interface nodes onto their smooth surface often mend it (the controlled move makes no
+// passing cell fail nor a failing one worse, the smoothing no passing cell fail). The caller
+// then checks the cells, and pillows again with the regions around what stayed failing left
 // out (`left_out_around`: input cells, carved like failing cells before the first pillowing).
 #pragma once
 
