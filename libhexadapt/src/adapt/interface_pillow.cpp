@@ -82,13 +82,12 @@ index_t carve(const M& mesh, const std::vector<CellId>& origins, int range,
   return removed;
 }
 
-// Shared nodes of two cells.
+// Whether a and b share a face (mesh.neighbour).
 template <class M>
-int shared_nodes(const M& mesh, CellId a, CellId b) {
-  int n = 0;
-  for (NodeId u : mesh.cell_nodes(a))
-    for (NodeId v : mesh.cell_nodes(b)) n += u == v;
-  return n;
+bool face_neighbours(const M& mesh, CellId a, CellId b) {
+  for (int lf = 0; lf < M::faces_per_cell; ++lf)
+    if (mesh.neighbour(a, lf) == b) return true;
+  return false;
 }
 
 // In 3D, the set's cells around an edge that are not joined through faces around it: where
@@ -104,17 +103,17 @@ std::vector<CellId> edge_touching(const M& mesh, const IdVector<CellId, char>& s
       for (const auto& e : ref_hex::edges) {
         const NodeId a = nodes[static_cast<std::size_t>(e[0])];
         const NodeId b = nodes[static_cast<std::size_t>(e[1])];
-        std::vector<CellId> around;  // the set's cells around the edge, c first
+        const auto at_b = mesh.node_cells(b);
+        std::vector<CellId> around;  // the set's cells around the edge
         for (CellId o : mesh.node_cells(a))
-          if (set[o] && std::find(mesh.node_cells(b).begin(), mesh.node_cells(b).end(), o) !=
-                            mesh.node_cells(b).end())
-            around.push_back(o);
-        // c's face neighbours around the edge, and theirs: what a face walk reaches.
+          if (set[o] && std::find(at_b.begin(), at_b.end(), o) != at_b.end()) around.push_back(o);
+        // What a walk from c across faces reaches among them (two cells around the edge that
+        // share a face share one holding the edge).
         std::vector<CellId> reached{c};
         for (std::size_t k = 0; k < reached.size(); ++k)
           for (CellId o : around)
             if (std::find(reached.begin(), reached.end(), o) == reached.end() &&
-                shared_nodes(mesh, reached[k], o) >= 4)
+                face_neighbours(mesh, reached[k], o))
               reached.push_back(o);
         if (reached.size() < around.size()) out.insert(out.end(), around.begin(), around.end());
       }
