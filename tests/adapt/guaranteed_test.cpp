@@ -3,6 +3,8 @@
 // first controlled move, and the result does not depend on the thread count.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "adapt/flow_cases.h"
 #include "adapt/generated_case.h"
 #include "hexadapt/adapt/adapt.h"
@@ -38,7 +40,16 @@ void check_guaranteed(const M& grid, const AdaptResult<M>& r, double threshold =
   index_t published = 0;
   for (const auto& a : r.cavities) published += a.published;
   EXPECT_EQ(published, r.n_cavities_published);
-  for (const auto& s : r.steps) EXPECT_GE(s.min_quality, threshold) << s.name;
+  // A first layer kept with its failing cells fails until the moves and the smoothing have
+  // mended it (guaranteed_pipeline.cpp); every other step holds the threshold.
+  const bool kept_failing = std::any_of(r.interface_pillows.begin(), r.interface_pillows.end(),
+                                        [](const auto& a) { return a.failing > 0; });
+  for (const auto& s : r.steps) {
+    const bool before_mended = s.name == "pillow" || s.name == "move" || s.name == "cavity";
+    if (!(kept_failing && before_mended)) {
+      EXPECT_GE(s.min_quality, threshold) << s.name;
+    }
+  }
   EXPECT_LE(r.dist_final, r.dist_init);
   index_t blocked = 0;
   for (NodeId v : id_range<NodeId>(r.mesh.n_nodes())) {

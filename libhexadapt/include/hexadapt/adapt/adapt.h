@@ -88,12 +88,12 @@ struct AdaptOptions {
   int interface_pillow_rounds = 4;
   /// guaranteed: vertex distance of the cells left out of a material's layer around a cell
   /// that fails the criteria.
-  int interface_pillow_carve = 1;
+  int interface_pillow_carve = 0;
   /// guaranteed, first layer: runs that keep the layers with their failing cells for the
   /// moves and a local smoothing to mend (interface_pillow.h), each one leaving the layers
   /// out around the cells the run before left failing; when none gets every cell passing,
   /// the layers are carved where they fail before the move. 0 = carve before the move only.
-  int mend_rounds = 8;
+  int mend_rounds = 12;
   /// guaranteed: the loop stops when a round lowers dist by no more than this share of it.
   double loop_tolerance = 1e-3;
   /// A node within this many local sizes (the mean local_size of its cells) of its interface
