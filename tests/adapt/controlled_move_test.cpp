@@ -167,6 +167,51 @@ INSTANTIATE_TEST_SUITE_P(
         test::GeneratedCase{"stir", {24, 12}, 1.0, 3, 0.2}),
     [](const ::testing::TestParamInfo<test::GeneratedCase>& i) { return test::label(i.param); });
 
+// A thin layer (cells 1 x 0.2, as a pillow layer) under node (1, 1.2), which moves 0.4 along
+// it, at threshold 0.8: moving alone, it shears the layer cells, whose scaled Jacobian
+// 0.2 / sqrt(0.04 + s^2) reaches 0.8 at a shift s of 0.15 (6 of the 16 steps), and it ends
+// 0.3 from its target. No free node is ahead of it (its neighbours along the layer are on the
+// domain's sides), so each step after that is refused unless its free neighbours across the
+// layer, (1, 1) and (1, 2.2), are dragged along with it: 10 drags, which move them 0.25 and
+// leave the layer cells sheared by 0.15, and the node reaches its target.
+TEST(ControlledMove, ANodeCarriesItsNeighboursAcrossALayerAlong) {
+  const QuadMesh grid = make_quad_grid(std::vector<double>{0, 1, 2},
+                                       std::vector<double>{0, 1, 1.2, 2.2});
+  const auto nn = static_cast<std::size_t>(grid.n_nodes());
+  Targets t;
+  t.has.assign(nn, 0);
+  t.position = IdVector<NodeId, Vec3>(nn, Vec3::Zero());
+  for (NodeId n : id_range<NodeId>(grid.n_nodes())) t.position[n] = grid.point(n);
+  t.interface.resize(nn);
+  auto node_at = [&](const Vec3& p) {
+    for (NodeId n : id_range<NodeId>(grid.n_nodes()))
+      if ((grid.point(n) - p).norm() < 1e-12) return n;
+    return NodeId();
+  };
+  const NodeId node = node_at(Vec3(1, 1.2, 0));
+  const NodeId below = node_at(Vec3(1, 1, 0)), above = node_at(Vec3(1, 2.2, 0));
+  t.has[node] = 1;
+  t.position[node] = Vec3(1.4, 1.2, 0);
+  const auto surface = boundary_constraints(grid);
+  MoveOptions o;
+  o.threshold = 0.8;
+  o.drag = false;
+  QuadMesh alone = grid;
+  const MoveResult stopped = controlled_move(alone, t, o, SizeCriterion{}, &surface);
+  EXPECT_EQ(stopped.n_reached, 0);
+  EXPECT_GT((alone.point(node) - t.position[node]).norm(), 0.2) << alone.point(node).transpose();
+
+  o.drag = true;
+  QuadMesh mesh = grid;
+  const MoveResult r = controlled_move(mesh, t, o, SizeCriterion{}, &surface);
+  EXPECT_EQ(r.n_reached, 1);
+  EXPECT_EQ(r.n_drags, 10);
+  EXPECT_EQ(mesh.point(node), Vec3(1.4, 1.2, 0));
+  EXPECT_NEAR((mesh.point(below) - Vec3(1.25, 1, 0)).norm(), 0, 1e-12);
+  EXPECT_NEAR((mesh.point(above) - Vec3(1.25, 2.2, 0)).norm(), 0, 1e-12);  // on its side
+  EXPECT_GE(min_quality(mesh), 0.8);
+}
+
 TEST(ControlledMove, GivesTheSamePositionsWhateverTheThreadCount) {
   // Wavy stripes: enough interface nodes that the colour classes run on several threads.
   const HexMesh start = make_hex_grid(60, 40, 3);

@@ -370,7 +370,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_flag("--drag,!--no-drag", args.drag,
                "guaranteed: retry a refused step of the controlled move with the free nodes "
-               "ahead of the node moved along (default on)");
+               "ahead of the node moved along, then with all its free neighbours (default on)");
   app.add_option("--smooth-iterations", args.smooth_iterations, "Smoothing sweeps")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();

@@ -39,18 +39,21 @@ bool try_position(M& mesh, NodeId n, const Vec3& p, double threshold, const Size
   return true;
 }
 
-// Puts n at p with its free edge neighbours ahead of it moved by the same displacement
-// (projected on their constraints); keeps that when every cell around n and around them
-// keeps the criteria, and returns the dragged nodes then (none: nothing moved).
+// Puts n at p with its free edge neighbours moved by the same displacement (projected on
+// their constraints): those ahead of it, or with `all` every one (a node of a pillowed
+// interface then carries its layer copies on both sides along, and the layer cells keep
+// their shape); keeps that when every cell around n and around them keeps the criteria, and
+// returns the dragged nodes then (none: nothing moved).
 template <class M>
 std::vector<NodeId> try_drag(M& mesh, NodeId n, const Vec3& p, double threshold,
                              const SizeCriterion& size, const Targets& targets,
-                             const IdVector<NodeId, NodeConstraint>& constraint) {
+                             const IdVector<NodeId, NodeConstraint>& constraint, bool all) {
   const Vec3 old = mesh.point(n);
   const Vec3 d = p - old;
   std::vector<std::pair<NodeId, Vec3>> ahead;
   for (NodeId f : edge_neighbours(mesh, n))
-    if (!targets.has[f] && !constraint[f].fixed(M::dim) && (mesh.point(f) - old).dot(d) > 0)
+    if (!targets.has[f] && !constraint[f].fixed(M::dim) &&
+        (all || (mesh.point(f) - old).dot(d) > 0))
       ahead.emplace_back(f, mesh.point(f));
   if (ahead.empty()) return {};
   mesh.set_point(n, p);
@@ -200,8 +203,11 @@ MoveResult controlled_move(M& mesh, const Targets& targets, const MoveOptions& o
       std::vector<NodeId> dragged;
       for (std::size_t i = 0; options.drag && surface && i < set.size(); ++i) {
         if (!refused[i]) continue;
-        const std::vector<NodeId> d =
-            try_drag(mesh, set[i], step_target(set[i]), options.threshold, size, targets, *surface);
+        std::vector<NodeId> d;
+        for (bool all : {false, true})
+          if (d.empty())
+            d = try_drag(mesh, set[i], step_target(set[i]), options.threshold, size, targets,
+                         *surface, all);
         if (d.empty()) continue;
         moved[i] = 1;
         refused[i] = 0;

@@ -65,7 +65,7 @@ struct AdaptOptions {
   double min_edge = 0.1;
   int steps = 16;                                ///< steps of the controlled move
   /// guaranteed: a refused step of the controlled move is retried with the free nodes ahead
-  /// of the node dragged along (MoveOptions::drag).
+  /// of the node dragged along, then with all its free neighbours (MoveOptions::drag).
   bool drag = true;
   BoundaryOptions boundary;                      ///< feature detection on the domain boundary
   TargetOptions targets;                         ///< target computation

@@ -9,10 +9,12 @@
 // can unblock it; rounds stop when no node advances. With `drag`, a refused step is tried
 // once more with the node's free edge neighbours ahead of it (no target, not fixed by the
 // domain boundary, on the side it moves to) moved by the same displacement, projected on
-// their boundary constraint; it is kept when every cell around the node and around them
-// keeps the criteria. A free node in front of an interface node then makes way for it
-// instead of stopping it at the size criterion (most of the nodes the criterion stopped in
-// 2D). Drags run one node after another, after each parallel pass, in the set's order. When the interface surfaces are given
+// their boundary constraint, then, if refused, with all its free edge neighbours moved; it
+// is kept when every cell around the node and around them keeps the criteria. A free node
+// in front of an interface node then makes way for it instead of stopping it at the size
+// criterion (most of the nodes the criterion stopped in 2D), and a node of a pillowed
+// interface carries its layer copies along instead of shearing the layer cells (in 3D, most
+// of the nodes the move left off their surface). Drags run one node after another, after each parallel pass, in the set's order. When the interface surfaces are given
 // (the plane, line or point through each target that the node may slide on: the interface
 // normals and the domain boundary, sliding_constraints()), a node still short of its target
 // then slides onto its surface instead: it takes the nearest ring of points of the surface
@@ -34,7 +36,7 @@ struct MoveOptions {
   double threshold = 0.3;  ///< S_q: the smallest scaled Jacobian a step may leave
   int steps = 16;          ///< a node moves 1/steps of its way at a time
   int max_rounds = 0;      ///< rounds over all nodes; 0 = 4 * steps
-  bool drag = true;        ///< a refused step is retried with the free nodes ahead dragged
+  bool drag = true;        ///< a refused step is retried with free neighbours dragged along
 };
 
 struct MoveResult {
