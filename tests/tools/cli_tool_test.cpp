@@ -21,6 +21,21 @@ TEST_F(CliTool, EveryToolPrintsItsVersion) {
   }
 }
 
+// Help lists a choice by its words: a CLI11 transformer printed
+// "ENUM:value in {auto->0,xy->1,...} OR {0,1,...}", the enum's numbers included.
+TEST_F(CliTool, EveryToolsHelpNamesChoicesByTheirWords) {
+  for (const char* tool : {"generate", "assign", "reconstruct", "adapt", "measure", "render"}) {
+    const ToolRun r = run(tool, "--help");
+    EXPECT_EQ(r.code, 0) << tool << ": " << r.err;
+    for (const char* leak : {"ENUM", "->", "value in {"})
+      EXPECT_EQ(r.out.find(leak), std::string::npos) << tool << " --help shows " << leak;
+  }
+  EXPECT_NE(run("render", "--help").out.find("--plane TEXT:{auto,xy,yz,xz}=auto"),
+            std::string::npos);
+  EXPECT_NE(run("adapt", "--help").out.find("--volume-offset TEXT:{automatic,on,off}=automatic"),
+            std::string::npos);
+}
+
 // render draws PNG only: -o x.jpg or x.svg used to get PNG bytes under that name.
 TEST_F(CliTool, RenderRefusesAPictureFormatItDoesNotWrite) {
   for (const char* name : {"x.jpg", "x.svg", "x"}) {

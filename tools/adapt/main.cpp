@@ -428,7 +428,7 @@ int main(int argc, char** argv) {
                                               {"on", VolumeOffset::on},
                                               {"off", VolumeOffset::off}},
           CLI::ignore_case))
-      ->default_str("automatic");
+      ->option_text("TEXT:{automatic,on,off}=automatic");
   app.add_option("--volume-sweeps", args.targets.volume_sweeps,
                  "Volume offset: sweeps at most")
       ->check(CLI::NonNegativeNumber)

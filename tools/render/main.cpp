@@ -56,7 +56,7 @@ void add_options(CLI::App& app, Args& a) {
                                                    {"xz", io::Plane::xz}};
   app.add_option("--plane", a.plane, "Plane of 2D data sets: auto, xy, yz, xz")
       ->transform(CLI::CheckedTransformer(planes, CLI::ignore_case))
-      ->default_str("auto");
+      ->option_text("TEXT:{auto,xy,yz,xz}=auto");
   cli::add_time_options(app, a.time);
 }
 
