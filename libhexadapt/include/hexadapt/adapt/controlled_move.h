@@ -14,7 +14,8 @@
 // in front of an interface node then makes way for it instead of stopping it at the size
 // criterion (most of the nodes the criterion stopped in 2D), and a node of a pillowed
 // interface carries its layer copies along instead of shearing the layer cells (in 3D, most
-// of the nodes the move left off their surface). Drags run one node after another, after each parallel pass, in the set's order. When the interface surfaces are given
+// of the nodes the move left off their surface). Drags run one node after another, after
+// each parallel pass, in the set's order. When the interface surfaces are given
 // (the plane, line or point through each target that the node may slide on: the interface
 // normals and the domain boundary, sliding_constraints()), a node still short of its target
 // then slides onto its surface instead: it takes the nearest ring of points of the surface
