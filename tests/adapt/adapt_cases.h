@@ -9,11 +9,35 @@
 #include <set>
 #include <vector>
 
+#include "hexadapt/adapt/targets.h"
 #include "hexadapt/mesh/cell_complex.h"
 #include "hexadapt/mesh/fractions.h"
 #include "hexadapt/mesh/structured.h"
 
 namespace hexadapt::test {
+
+/// The node of mesh at p (invalid when none is).
+template <class M>
+NodeId node_at(const M& mesh, const Vec3& p) {
+  for (NodeId n : id_range<NodeId>(mesh.n_nodes()))
+    if ((mesh.point(n) - p).norm() < 1e-12) return n;
+  return NodeId();
+}
+
+/// Targets with one node, the one at `from`, heading for `to`.
+template <class M>
+Targets one_target(const M& mesh, const Vec3& from, const Vec3& to) {
+  const auto nn = static_cast<std::size_t>(mesh.n_nodes());
+  Targets t;
+  t.has.assign(nn, 0);
+  t.position = IdVector<NodeId, Vec3>(nn, Vec3::Zero());
+  for (NodeId n : id_range<NodeId>(mesh.n_nodes())) t.position[n] = mesh.point(n);
+  t.interface.resize(nn);
+  const NodeId moving = node_at(mesh, from);
+  t.has[moving] = 1;
+  t.position[moving] = to;
+  return t;
+}
 
 /// Material of a point in space.
 using Shape = std::function<int(const Vec3&)>;

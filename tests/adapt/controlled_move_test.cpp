@@ -177,21 +177,10 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(ControlledMove, ANodeCarriesItsNeighboursAcrossALayerAlong) {
   const QuadMesh grid = make_quad_grid(std::vector<double>{0, 1, 2},
                                        std::vector<double>{0, 1, 1.2, 2.2});
-  const auto nn = static_cast<std::size_t>(grid.n_nodes());
-  Targets t;
-  t.has.assign(nn, 0);
-  t.position = IdVector<NodeId, Vec3>(nn, Vec3::Zero());
-  for (NodeId n : id_range<NodeId>(grid.n_nodes())) t.position[n] = grid.point(n);
-  t.interface.resize(nn);
-  auto node_at = [&](const Vec3& p) {
-    for (NodeId n : id_range<NodeId>(grid.n_nodes()))
-      if ((grid.point(n) - p).norm() < 1e-12) return n;
-    return NodeId();
-  };
-  const NodeId node = node_at(Vec3(1, 1.2, 0));
-  const NodeId below = node_at(Vec3(1, 1, 0)), above = node_at(Vec3(1, 2.2, 0));
-  t.has[node] = 1;
-  t.position[node] = Vec3(1.4, 1.2, 0);
+  const Targets t = test::one_target(grid, Vec3(1, 1.2, 0), Vec3(1.4, 1.2, 0));
+  const NodeId node = test::node_at(grid, Vec3(1, 1.2, 0));
+  const NodeId below = test::node_at(grid, Vec3(1, 1, 0));
+  const NodeId above = test::node_at(grid, Vec3(1, 2.2, 0));
   const auto surface = boundary_constraints(grid);
   MoveOptions o;
   o.threshold = 0.8;

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "adapt/adapt_cases.h"
 #include "hexadapt/adapt/controlled_move.h"
 #include "hexadapt/adapt/pillow.h"
 #include "hexadapt/mesh/structured.h"
@@ -14,25 +15,12 @@ namespace {
 // Two unit squares side by side; node 4 is (1, 1), the top of their shared edge.
 QuadMesh two_squares() { return make_quad_grid(2, 1); }
 
-NodeId node_at(const QuadMesh& mesh, const Vec3& p) {
-  for (NodeId n : id_range<NodeId>(mesh.n_nodes()))
-    if ((mesh.point(n) - p).norm() < 1e-12) return n;
-  return NodeId();
-}
+using test::node_at;
 
 // Node (1, 1) heading for (1.95, 1): the right square's top edge shrinks to 0.05 while its
 // scaled Jacobian stays 0.725 (both squares' corners are at 0.725 or better all the way).
 Targets squeeze_target(const QuadMesh& mesh) {
-  const auto nn = static_cast<std::size_t>(mesh.n_nodes());
-  Targets t;
-  t.has.assign(nn, 0);
-  t.position = IdVector<NodeId, Vec3>(nn, Vec3::Zero());
-  for (NodeId n : id_range<NodeId>(mesh.n_nodes())) t.position[n] = mesh.point(n);
-  t.interface.resize(nn);
-  const NodeId top = node_at(mesh, Vec3(1, 1, 0));
-  t.has[top] = 1;
-  t.position[top] = Vec3(1.95, 1, 0);
-  return t;
+  return test::one_target(mesh, Vec3(1, 1, 0), Vec3(1.95, 1, 0));
 }
 
 TEST(SizeCriterion, LocalSizeIsTheMeanEdgeAndTheScoreDropsBelowEveryJacobian) {
