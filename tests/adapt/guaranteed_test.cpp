@@ -4,6 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <set>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
 
 #include "adapt/flow_cases.h"
 #include "adapt/generated_case.h"
@@ -131,6 +136,53 @@ TEST(GuaranteedMethod, InterfacesPillowedFirstReachWhereCavitiesDoNot) {
     check_guaranteed(grid, cavities);
     EXPECT_EQ(cavities.n_interface_layer_cells, 0);
     EXPECT_LT(cavities.n_near_interface, 0.95 * cavities.n_interface_nodes);
+  });
+}
+
+// The progress names each phase and moves on through every run: on the vortex at 12^3 and
+// t = 1.5 the first layer is mended (3 runs), and the bar, which said "adapt" at 30 %
+// through all of it, names the runs and the rounds of the move-smooth loop, never going back.
+TEST(GuaranteedMethod, ReportsItsPhasesAndMovesOnThroughEveryRun) {
+  test::with_generated_case({"vortex", {12, 12, 12}, 1.5}, [](const auto& grid, const Fractions& f,
+                                                              const IdVector<CellId, int>& m) {
+    for (AdaptMethod method : {AdaptMethod::guaranteed, AdaptMethod::base}) {
+      std::vector<std::pair<std::string, double>> seen;
+      AdaptOptions o;
+      o.method = method;
+      o.progress = [&](std::string_view phase, double fraction) {
+        seen.emplace_back(std::string(phase), fraction);
+      };
+      const auto r = adapt(grid, f, m, o);
+      ASSERT_GE(seen.size(), 5u);
+      EXPECT_EQ(seen.front().second, 0.0);
+      EXPECT_EQ(seen.back(), std::make_pair(std::string("done"), 1.0));
+      for (std::size_t k = 1; k < seen.size(); ++k) {
+        EXPECT_LE(seen[k - 1].second, seen[k].second) << seen[k].first;
+        if (k + 1 < seen.size()) {
+          EXPECT_LT(seen[k].second, 1.0) << seen[k].first;
+        }
+      }
+      auto has = [&](const std::string& phase) {
+        return std::any_of(seen.begin(), seen.end(), [&](const auto& p) { return p.first == phase; });
+      };
+      if (method == AdaptMethod::base) {
+        for (const char* phase : {"targets", "move", "pillow", "smooth"}) {
+          EXPECT_TRUE(has(phase)) << phase;
+        }
+        continue;
+      }
+      ASSERT_GE(r.mend_failing.size(), 2u);
+      const std::string last = "run " + std::to_string(r.mend_failing.size()) + ": ";
+      for (const std::string& phase :
+           {std::string("check"), std::string("targets"), std::string("run 1: pillow"),
+            std::string("run 1: move"), std::string("run 1: mend"), std::string("run 2: pillow"),
+            last + "move-smooth 1", last + "move-smooth 2"}) {
+        EXPECT_TRUE(has(phase)) << phase;
+      }
+      std::set<double> fractions;
+      for (const auto& p : seen) fractions.insert(p.second);
+      EXPECT_GE(fractions.size(), 12u);
+    }
   });
 }
 

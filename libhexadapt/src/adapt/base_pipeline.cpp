@@ -12,19 +12,20 @@ AdaptResult<M> run_base_pipeline(const M& grid, const Fractions& fractions,
                                  const AdaptOptions& options) {
   AdaptResult<M> r;
   Timer clock;
+  if (options.progress) options.progress("targets", 0.0);
   M mesh = grid;
   const auto boundary = boundary_constraints(mesh, options.boundary);
   const Targets targets = compute_targets(mesh, fractions, material, boundary, options.targets);
   r.n_interface_nodes = targets.n_interface_nodes;
-  record_step(r, mesh, "targets", clock, options.progress, 0.1);
+  record_step(r, mesh, "targets", clock, options.progress, 0.1, "move");
 
   r.dist_init = direct_move(mesh, targets).dist;
-  record_step(r, mesh, "move", clock, options.progress, 0.3);
+  record_step(r, mesh, "move", clock, options.progress, 0.3, "pillow");
 
   const SizeCriterion size = size_criterion(grid, options.min_edge);
   GlobalPillowResult<M> p = global_pillow(mesh, material, fractions.n_materials(), options.boundary,
                                           options.pillow, size);
-  record_step(r, p.mesh, "pillow", clock, options.progress, 0.6);
+  record_step(r, p.mesh, "pillow", clock, options.progress, 0.6, "smooth");
 
   // Interface nodes sit on their targets: only the nodes the pillowing made, and the nodes
   // away from the interfaces, may move.
@@ -39,7 +40,7 @@ AdaptResult<M> run_base_pipeline(const M& grid, const Fractions& fractions,
     }
   }
   smooth(p.mesh, movable, boundary_constraints(p.mesh, options.boundary), options.smooth);
-  record_step(r, p.mesh, "smooth", clock, options.progress, 1.0);
+  record_step(r, p.mesh, "smooth", clock, options.progress, 1.0, "done");
 
   r.mesh = std::move(p.mesh);
   r.material = std::move(p.material);

@@ -77,13 +77,15 @@ std::vector<NodeId> nodes_around_moves(const M& mesh, const std::vector<Vec3>& b
 
 // Controlled moves alternating with quality-preserving smoothing until a round no longer
 // brings the nodes closer to their interface surfaces by more than the tolerance; keeps the
-// best round. Nodes that slid onto their surface still try their target each round: moving
+// best round (each reported as "move-smooth k", k counted after `rounds_before`). Nodes that
+// slid onto their surface still try their target each round: moving
 // only the nodes off their surface was three times faster in 3D, but left the 2D cases'
 // discrepancy 9 % higher and ten times the distance to the targets.
 template <class M>
 int move_smooth_loop(M& mesh, const Targets& targets,
                      const IdVector<NodeId, NodeConstraint>& sliding, const MoveOptions& mo,
-                     const SizeCriterion& size, const AdaptOptions& options) {
+                     const SizeCriterion& size, const AdaptOptions& options,
+                     int rounds_before = 0) {
   double best = surface_distance_sum(mesh, targets, sliding);
   std::vector<Vec3> best_points = points_of(mesh);
   const IdVector<NodeId, char> movable = loop_movable(targets);
@@ -91,6 +93,9 @@ int move_smooth_loop(M& mesh, const Targets& targets,
   std::vector<NodeId> start;  // what the next smoothing must try; the first tries all
   NeighbourCache neighbours(mesh.n_nodes());
   while (loops < options.max_loops && best > 0) {
+    if (options.progress)
+      options.progress("move-smooth " + std::to_string(rounds_before + loops + 1),
+                       static_cast<double>(loops) / options.max_loops);
     ++loops;
     const SmoothResult s = smooth(mesh, movable, sliding, options.smooth,
                                   loops == 1 ? nullptr : &start, size, &neighbours);
@@ -162,6 +167,7 @@ FirstMove<M> first_move(const M& mesh, const IdVector<CellId, int>& material,
                         int n_materials, const MoveOptions& mo, const AdaptOptions& options,
                         const std::vector<CellId>* mend) {
   FirstMove<M> f{mesh, material, targets, size, {}, {}, {}, 0, 0, 0, 0};
+  if (options.progress) options.progress("pillow", 0.0);
   for (CellId c : id_range<CellId>(mesh.n_cells())) f.cell_origin.push_back(c);
   Timer clock;
   if (pillow_first && options.interface_pillow_rounds > 0) {
@@ -185,6 +191,7 @@ FirstMove<M> first_move(const M& mesh, const IdVector<CellId, int>& material,
     extend_targets(f.mesh, f.targets);
   }
   f.pillow_seconds = clock.seconds();
+  if (options.progress) options.progress("move", 0.2);
   clock.restart();
   const auto sliding =
       sliding_constraints(boundary_constraints(f.mesh, options.boundary), f.targets);
@@ -207,8 +214,9 @@ void correct(const M& mesh, const IdVector<CellId, int>& material,
   } else if (!model) {
     r.correction.skipped = "no model given";
   } else {
+    if (options.progress) options.progress("correct", 0.1);
     r.correction = correct_targets(mesh, material, boundary, *model, targets, options.correction);
-    if (r.correction.ran) record_step(r, mesh, "correct", clock, options.progress, 0.15);
+    if (r.correction.ran) record_step(r, mesh, "correct", clock, options.progress, 0.15, "layers");
   }
 }
 
@@ -304,31 +312,37 @@ void run_layers(const M& grid, const IdVector<CellId, int>& material, const Targ
   r.steps.push_back({"pillow", min_quality(mesh), mesh.n_cells(), f.pillow_seconds});
   r.steps.push_back({"move", min_quality(mesh), mesh.n_cells(), f.move_seconds});
   Timer clock;
-  if (options.progress) options.progress("adapt", 0.3);
+  if (options.progress) options.progress("cavity", 0.3);
 
   const std::vector<NodeId> failed = pillow_cavities(mesh, out_material, targets, size, first,
                                                      n_materials, r, options);
-  record_step(r, mesh, "cavity", clock, options.progress, 0.5);
+  record_step(r, mesh, "cavity", clock, options.progress, 0.4, "");  // the loop reports
+  // The loop's rounds report within what is left of the run.
+  AdaptOptions loop_options = options;
+  loop_options.progress = progress_part(options.progress, 0.4, 1.0);
 
   const auto sliding = sliding_constraints(boundary_constraints(mesh, options.boundary), targets);
   if (mend) {
     // No cell starts failing on the way, and what still fails after a few rounds of the loop
     // and the local smoothing is what fails at the end: a run to be discarded stops there.
     if (pillows_cavities(layers)) throw InternalError("mending a first layer with cavities");
-    AdaptOptions probe = options;
+    AdaptOptions probe = loop_options;
     probe.max_loops = std::min(options.max_loops, mend_probe_loops);
+    probe.progress = progress_part(options.progress, 0.4, 0.5);
     r.loops = move_smooth_loop(mesh, targets, sliding, mo, size, probe);
+    if (options.progress) options.progress("mend", 0.5);
     smooth_around_failing(mesh, sliding, size, options);
     *mend = failing_origins(mesh, f.cell_origin, size, options.threshold);
     if (!mend->empty()) {
-      record_step(r, mesh, "move-smooth", clock, options.progress, 1.0);
+      record_step(r, mesh, "move-smooth", clock, options.progress, 1.0, "");
       return;  // the caller discards the run
     }
+    loop_options.progress = progress_part(options.progress, 0.5, 1.0);
   }
-  AdaptOptions rest = options;
+  AdaptOptions rest = loop_options;
   rest.max_loops = options.max_loops - r.loops;
-  r.loops += move_smooth_loop(mesh, targets, sliding, mo, size, rest);
-  record_step(r, mesh, "move-smooth", clock, options.progress, 1.0);
+  r.loops += move_smooth_loop(mesh, targets, sliding, mo, size, rest, r.loops);
+  record_step(r, mesh, "move-smooth", clock, options.progress, 1.0, "");
 
   r.mesh = std::move(mesh);
   r.material = std::move(out_material);
@@ -353,11 +367,19 @@ AdaptResult<M> first_layer(const M& grid, const IdVector<CellId, int>& material,
     if (seconds > 0) r.steps.push_back({"mend", r.min_quality, r.mesh.n_cells(), seconds});
     return r;
   };
+  // Each run reports in half of the progress left, as the run that ends the mending may be any.
+  double from = 0;
+  auto run_options = [&](int run, double to) {
+    AdaptOptions o = options;
+    o.progress = progress_part(options.progress, from, to, "run " + std::to_string(run) + ": ");
+    from = to;
+    return o;
+  };
   for (int round = 0; round < options.mend_rounds; ++round) {
     AdaptResult<M> r = before;
     std::vector<CellId> mend = left_out;
-    run_layers(grid, material, targets, size, n_materials, LayerStrategy::first, r, options,
-               &mend);
+    run_layers(grid, material, targets, size, n_materials, LayerStrategy::first, r,
+               run_options(round + 1, 0.5 * (1 + from)), &mend);
     failing.push_back(static_cast<index_t>(mend.size()));
     if (mend.empty()) return finish(std::move(r));
     for (std::size_t k = before.steps.size(); k < r.steps.size(); ++k)
@@ -367,7 +389,8 @@ AdaptResult<M> first_layer(const M& grid, const IdVector<CellId, int>& material,
     left_out.erase(std::unique(left_out.begin(), left_out.end()), left_out.end());
   }
   AdaptResult<M> r = before;
-  run_layers(grid, material, targets, size, n_materials, LayerStrategy::first, r, options);
+  run_layers(grid, material, targets, size, n_materials, LayerStrategy::first, r,
+             run_options(options.mend_rounds + 1, 1.0));
   return finish(std::move(r));
 }
 
@@ -380,6 +403,7 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
                                        const reconstruct::InterfaceModel* model) {
   AdaptOptions options = given;
   options.smooth.floor = options.threshold;  // no smoothing sinks a cell below it
+  if (options.progress) options.progress("check", 0.0);
   AdaptResult<M> r;
   Timer clock;
   M mesh = grid;
@@ -398,25 +422,29 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
     r.blocked.assign(nn, 0);
     return r;
   }
-  record_step(r, mesh, "check", clock, options.progress, 0.05);
+  record_step(r, mesh, "check", clock, options.progress, 0.05, "targets");
 
   const auto grid_boundary = boundary_constraints(mesh, options.boundary);
   Targets targets = compute_targets(mesh, fractions, material, grid_boundary, options.targets);
   r.n_interface_nodes = targets.n_interface_nodes;
-  record_step(r, mesh, "targets", clock, options.progress, 0.1);
+  record_step(r, mesh, "targets", clock, options.progress, 0.1, "layers");
   correct(mesh, material, grid_boundary, targets, model, r, clock, options);
 
   const int n_materials = fractions.n_materials();
+  AdaptOptions layers = options;  // what is left reports as its part of the progress
+  layers.progress = progress_part(options.progress, 0.15, 1.0);
   if (options.layers == LayerStrategy::automatic && M::dim == 3) {
     // A first layer; when it leaves more than 1 - enough_share of the interface nodes off
     // their interface, cavities too, keeping the result that brings more nodes onto it.
-    AdaptResult<M> layered = first_layer(grid, material, targets, size, n_materials, r, options);
+    layers.progress = progress_part(options.progress, 0.15, 0.75);
+    AdaptResult<M> layered = first_layer(grid, material, targets, size, n_materials, r, layers);
     if (layered.n_near_interface >= options.enough_share * layered.n_interface_nodes) {
       r = std::move(layered);
     } else {
       AdaptResult<M> plain = r;
+      layers.progress = progress_part(options.progress, 0.75, 1.0, "cavities: ");
       run_layers(grid, material, targets, size, n_materials, LayerStrategy::cavities, plain,
-                 options);
+                 layers);
       const bool take = layered.n_near_interface > plain.n_near_interface ||
                         (layered.n_near_interface == plain.n_near_interface &&
                          layered.surface_dist_final < plain.surface_dist_final);
@@ -429,18 +457,19 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
       r.steps.push_back({"other-layers", r.min_quality, r.mesh.n_cells(), seconds});
     }
   } else if (options.layers == LayerStrategy::first) {
-    r = first_layer(grid, material, targets, size, n_materials, r, options);
+    r = first_layer(grid, material, targets, size, n_materials, r, layers);
   } else {
     run_layers(grid, material, targets, size, n_materials,
                options.layers == LayerStrategy::automatic ? LayerStrategy::cavities
                                                           : options.layers,
-               r, options);
+               r, layers);
   }
   if (good_input && (r.n_below_threshold > 0 || r.n_below_min_edge > 0))
     throw InternalError("guaranteed pipeline left " + std::to_string(r.n_below_threshold) +
                         " cells below the threshold " + std::to_string(options.threshold) +
                         " and " + std::to_string(r.n_below_min_edge) +
                         " below the size criterion " + std::to_string(options.min_edge));
+  if (options.progress) options.progress("done", 1.0);
   return r;
 }
 

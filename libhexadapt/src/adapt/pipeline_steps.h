@@ -5,19 +5,21 @@
 
 #include <limits>
 #include <string>
+#include <string_view>
 
 #include "hexadapt/adapt/adapt.h"
 #include "hexadapt/core/timer.h"
 
 namespace hexadapt::detail {
 
-// Records a finished step and restarts the step clock.
+// Records a finished step, restarts the step clock and reports the phase that follows it
+// (none when `next` is empty), `done` of the whole being behind.
 template <class M>
 void record_step(AdaptResult<M>& r, const M& mesh, const std::string& name, Timer& clock,
-                 const Progress& progress, double done) {
+                 const Progress& progress, double done, std::string_view next) {
   r.steps.push_back({name, min_quality(mesh), mesh.n_cells(), clock.seconds()});
   clock.restart();
-  if (progress) progress("adapt", done);
+  if (progress && !next.empty()) progress(next, done);
 }
 
 // Sum over the nodes with targets of their distance to their surface.

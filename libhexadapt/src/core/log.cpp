@@ -2,6 +2,8 @@
 
 #include <cstdio>
 #include <mutex>
+#include <string>
+#include <utility>
 
 namespace hexadapt {
 
@@ -43,6 +45,13 @@ void log(LogLevel level, std::string_view message) {
   std::lock_guard<std::mutex> lock(state().mutex);
   if (level < state().level || !state().sink) return;
   state().sink(level, message);
+}
+
+Progress progress_part(const Progress& whole, double from, double to, std::string prefix) {
+  if (!whole) return nullptr;
+  return [whole, from, to, prefix = std::move(prefix)](std::string_view phase, double fraction) {
+    whole(prefix + std::string(phase), from + fraction * (to - from));
+  };
 }
 
 }  // namespace hexadapt

@@ -30,4 +30,8 @@ inline void log_warning(std::string_view m) { log(LogLevel::warning, m); }
 /// Called from the calling thread only, never from inside a parallel region.
 using Progress = std::function<void(std::string_view phase, double fraction)>;
 
+/// The progress of a part of a longer task: the part's fractions in [0, 1] reach `whole` as
+/// from + fraction x (to - from), its phase names after `prefix`. Empty when `whole` is.
+Progress progress_part(const Progress& whole, double from, double to, std::string prefix = {});
+
 }  // namespace hexadapt
