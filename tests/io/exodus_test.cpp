@@ -160,9 +160,9 @@ TEST(Exodus, AFailedWriteLeavesTheOldFile) {
 
 // A time series made with the Exodus API: fractions as element variables on 2 x 1 quads,
 // the form Sculpt reads, at times 0, 0.5 and 1.
-std::string time_series(const std::string& name) {
+std::string time_series(const std::string& name, int stored_float_size = 8) {
   const std::string path = temp_path(name);
-  int cpu = 8, io = 8;
+  int cpu = 8, io = stored_float_size;
   const int id = ex_create(path.c_str(), EX_CLOBBER, &cpu, &io);
   EXPECT_GE(id, 0);
   ex_put_init(id, "series", 2, 6, 2, 1, 0, 0);
@@ -219,6 +219,22 @@ TEST(Exodus, ReadsTheChosenTimeStep) {
   EXPECT_THROW(read_mesh(path, o), InputError);
   EXPECT_THROW(read_mesh(path), InputError);  // several steps: one must be chosen
   std::filesystem::remove(path);
+}
+
+// A file storing its values as float32 (io word size 4) gives float32 arrays: the precision
+// the fractions' default tolerances follow (fraction_tolerances.h).
+TEST(Exodus, VariablesKeepTheStoredPrecision) {
+  ReadOptions o;
+  o.step = 1;
+  for (int size : {4, 8}) {
+    const std::string path = time_series("series" + std::to_string(size) + ".exo", size);
+    const MeshData d = read_mesh(path, o);
+    const DataArray* copper = d.find_cell_array("copper");
+    ASSERT_NE(copper, nullptr);
+    EXPECT_EQ(copper->type, size == 4 ? ScalarType::float32 : ScalarType::float64);
+    EXPECT_EQ(copper->values, (std::vector<double>{0.5, 0.5}));
+    std::filesystem::remove(path);
+  }
 }
 
 TEST(Exodus, BadFilesAreInputErrors) {

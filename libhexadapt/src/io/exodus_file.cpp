@@ -57,7 +57,7 @@ ExodusFile ExodusFile::create(const std::string& file_name, const std::string& p
   // 64-bit offsets (netCDF "64-bit offset" format): large meshes; no HDF5, no timestamps.
   const int id = ex_create(file_name.c_str(), EX_CLOBBER | EX_LARGE_MODEL, &comp_ws, &io_ws);
   if (id < 0) throw IoError(path + ": cannot create Exodus II file: " + last_message());
-  return ExodusFile(id, path, false);
+  return ExodusFile(id, path, false, io_ws);
 }
 
 ExodusFile ExodusFile::open(const std::string& path) {
@@ -73,11 +73,14 @@ ExodusFile ExodusFile::open(const std::string& path) {
   const int id = ex_open(path.c_str(), EX_READ, &comp_ws, &io_ws, &version);
   if (id < 0)
     throw InputError(path, "", "not a readable Exodus II (netCDF) file: " + last_message());
-  return ExodusFile(id, path, true);
+  return ExodusFile(id, path, true, io_ws);
 }
 
 ExodusFile::ExodusFile(ExodusFile&& other) noexcept
-    : id_(other.id_), path_(std::move(other.path_)), reading_(other.reading_) {
+    : id_(other.id_),
+      path_(std::move(other.path_)),
+      reading_(other.reading_),
+      stored_float_size_(other.stored_float_size_) {
   other.id_ = -1;
 }
 

@@ -21,6 +21,9 @@ class ExodusFile {
 
   int id() const { return id_; }
   const std::string& path() const { return path_; }
+  /// Bytes of the floating-point values as stored in the file (4: float32, 8: float64);
+  /// 8 for a file being written.
+  int stored_float_size() const { return stored_float_size_; }
   /// Throws when `status` < 0: InputError when reading, IoError when writing; the message
   /// names the call (`what`) and carries the library's own message.
   void check(int status, const std::string& what) const;
@@ -28,11 +31,12 @@ class ExodusFile {
   void close();
 
  private:
-  ExodusFile(int id, std::string path, bool reading)
-      : id_(id), path_(std::move(path)), reading_(reading) {}
+  ExodusFile(int id, std::string path, bool reading, int stored_float_size)
+      : id_(id), path_(std::move(path)), reading_(reading), stored_float_size_(stored_float_size) {}
   int id_ = -1;
   std::string path_;
   bool reading_ = true;
+  int stored_float_size_ = 8;
 };
 
 }  // namespace hexadapt::io::detail

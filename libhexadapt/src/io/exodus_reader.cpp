@@ -218,6 +218,12 @@ int variable_count(const ExodusFile& f, ex_entity_type type) {
   return n;
 }
 
+// The type the file stores its variables as (the library reads them as double either way):
+// kept in the arrays, as the precision of the values (fractions.h) depends on it.
+ScalarType stored_type(const ExodusFile& f) {
+  return f.stored_float_size() == 4 ? ScalarType::float32 : ScalarType::float64;
+}
+
 // Element variables of one step, as cell arrays; a variable a block lacks (truth table) is 0
 // on that block's cells.
 void read_element_variables(const ExodusFile& f, const std::vector<Block>& blocks, int step,
@@ -232,7 +238,7 @@ void read_element_variables(const ExodusFile& f, const std::vector<Block>& block
   f.check(ex_get_truth_table(f.id(), EX_ELEM_BLOCK, static_cast<int>(nb), n, table.data()),
           "element variable truth table");
   for (int k = 0; k < n; ++k) {
-    DataArray a{names[static_cast<std::size_t>(k)], 1, ScalarType::float64, {}};
+    DataArray a{names[static_cast<std::size_t>(k)], 1, stored_type(f), {}};
     a.values.reserve(static_cast<std::size_t>(d.n_cells()));
     for (std::size_t b = 0; b < nb; ++b) {
       const auto count = static_cast<std::size_t>(blocks[b].count);
@@ -254,7 +260,7 @@ void read_nodal_variables(const ExodusFile& f, int step, MeshData& d) {
   check_size(f, "nodal variables", static_cast<long long>(n) * d.n_points(), 1);
   const std::vector<std::string> names = variable_names(f, EX_NODAL, n);
   for (int k = 0; k < n; ++k) {
-    DataArray a{names[static_cast<std::size_t>(k)], 1, ScalarType::float64,
+    DataArray a{names[static_cast<std::size_t>(k)], 1, stored_type(f),
                 std::vector<double>(d.points.size(), 0.0)};
     f.check(ex_get_var(f.id(), step, EX_NODAL, k + 1, 1, d.n_points(), a.values.data()),
             "nodal variable " + quote_token(a.name));
@@ -278,7 +284,7 @@ void group_vectors(std::vector<DataArray>& arrays) {
         suffix(arrays[k + 2].name, 'Z') && arrays[k + 1].name.compare(0, base.size(), base) == 0 &&
         arrays[k + 2].name.compare(0, base.size(), base) == 0 &&
         arrays[k + 1].name.size() == x.size() && arrays[k + 2].name.size() == x.size()) {
-      DataArray v{base, 3, ScalarType::float64, {}};
+      DataArray v{base, 3, arrays[k].type, {}};
       const std::size_t n = arrays[k].values.size();
       v.values.reserve(3 * n);
       for (std::size_t i = 0; i < n; ++i)
