@@ -137,6 +137,54 @@ TEST_F(AssignTool, RunningOutOfConfigurationsExitsThreeAndWritesThePartialResult
   EXPECT_EQ(report["assign"]["failure"]["node"], 7);
 }
 
+// Float32 fractions whose sums are off by 2e-3 and 5e-3 (solver error, not float32
+// rounding): refused by default with the --sum-tolerance that accepts them; accepted with
+// it, and the report and -v say what was decided and where it came from.
+TEST_F(AssignTool, Float32FractionsReportTheToleranceDecided) {
+  io::MeshData data = io::from_mesh(make_quad_grid(3, 1));
+  data.set_cell_array({"vf_a", 1, io::ScalarType::float32, {0.5, 0.6, 0.5}});
+  data.set_cell_array({"vf_b", 1, io::ScalarType::float32, {0.5, 0.40213, 0.50473}});
+  io::write_mesh(data, path("f32.vtu"));
+  const ToolRun refused = run(path("f32.vtu") + " -o " + path("out.vtu"));
+  EXPECT_EQ(refused.code, 2) << refused.err;
+  EXPECT_NE(refused.err.find(path("f32.vtu") + ": cell 1: fractions sum to 1.00213"),
+            std::string::npos)
+      << refused.err;
+  EXPECT_NE(refused.err.find("the default for float32 data): --sum-tolerance 0.0022 would "
+                             "rescale this cell, --sum-tolerance 0.0048 every cell"),
+            std::string::npos)
+      << refused.err;
+  const ToolRun r = run(path("f32.vtu") + " -o " + path("out.vtu") + " --sum-tolerance 0.0048" +
+                        " -v --json " + path("r.json"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("fractions stored as float32 (their rounding in a cell: at most 2.4e-07)"
+                       ": sums within 0.0048 of 1 rescaled (--sum-tolerance), fractions below "
+                       "1e-05 set to 0 (default); 2 cells rescaled"),
+            std::string::npos)
+      << r.err;
+  std::ifstream in(path("r.json"));
+  const auto fr = nlohmann::json::parse(in)["assign"]["fractions"];
+  EXPECT_EQ(fr["stored_precision"], "float32");
+  EXPECT_EQ(fr["sum_tolerance"], 0.0048);
+  EXPECT_EQ(fr["sum_tolerance_given"], true);
+  EXPECT_EQ(fr["zero_below"], 1e-5);
+  EXPECT_EQ(fr["zero_below_given"], false);
+  EXPECT_GT(fr["float32_rounding"].get<double>(), 2e-7);
+  EXPECT_EQ(fr["rescaled_cells"], 2);
+}
+
+// The text format's fractions are judged by the same options: --sum-tolerance accepts a sum
+// of 1.0005, which the default refuses (naming the sum as written).
+TEST_F(AssignTool, TextCasesTakeTheSumTolerance) {
+  std::ofstream(path("t.txt")) << "2\n2 1\n1\n2\n0 a\n2\n0 0.6\n1 1\n1 b\n1\n0 0.4005\n";
+  const ToolRun refused = run(path("t.txt") + " -o " + path("out.vtu"));
+  EXPECT_EQ(refused.code, 2) << refused.err;
+  EXPECT_NE(refused.err.find("cell 0: fractions sum to 1.0005 (0.0005 above 1"), std::string::npos)
+      << refused.err;
+  const ToolRun r = run(path("t.txt") + " -o " + path("out.vtu") + " --sum-tolerance 1e-3");
+  EXPECT_EQ(r.code, 0) << r.err;
+}
+
 TEST_F(AssignTool, BadInputAndOptions) {
   EXPECT_EQ(run(path("case.vtu") + " -o " + path("o.vtu") + " --fractions vf_a,nope").code, 2);
   EXPECT_EQ(run(path("missing.vtu") + " -o " + path("o.vtu")).code, 2);

@@ -2,6 +2,7 @@
 // fractions (paper sec. 3). Reads any mesh file with fraction arrays, writes the same grid
 // and fractions plus Int32 cell arrays `material` (final) and `majority` (initial).
 #include <cstdio>
+#include <iomanip>
 #include <sstream>
 
 #include "cli.h"
@@ -88,10 +89,17 @@ cli::Json failure_json(const assign::CorrectionFailure& f, const Fractions& frac
 cli::Json result_json(const assign::AssignResult& r, const FractionReport& fr) {
   const auto& c = r.correction;
   cli::Json j;
+  const FractionTolerances& t = fr.tolerances;
   j["fractions"] = {{"clipped_values", fr.clipped_values},
                     {"zeroed_values", fr.zeroed_values},
                     {"rescaled_cells", fr.rescaled_cells},
-                    {"max_sum_error", fr.max_sum_error}};
+                    {"max_sum_error", fr.max_sum_error},
+                    {"stored_precision", precision_name(fr.precision)},
+                    {"float32_rounding", t.float32_rounding},
+                    {"sum_tolerance", t.sum_tolerance},
+                    {"sum_tolerance_given", t.sum_tolerance_given},
+                    {"zero_below", t.zero_below},
+                    {"zero_below_given", t.zero_below_given}};
   j["non_manifold_nodes_initial"] = c.non_manifold_initial;
   j["solved"] = c.solved;
   j["iterations"] = c.rounds;
@@ -117,6 +125,23 @@ cli::Json balance_json(const std::vector<assign::MaterialBalance>& balance,
                    {"assigned_volume", balance[m].assigned_volume},
                    {"assigned_cells", balance[m].assigned_cells}});
   return out;
+}
+
+// What extract_fractions decided and did: the precision, the tolerances and where they came
+// from, and the repairs.
+std::string fractions_message(const FractionReport& fr) {
+  const FractionTolerances& t = fr.tolerances;
+  std::ostringstream s;
+  s << "fractions stored as " << precision_name(fr.precision);
+  if (fr.precision == StoredPrecision::float32)
+    s << " (their rounding in a cell: at most " << std::setprecision(2) << t.float32_rounding
+      << std::setprecision(6) << ")";
+  s << ": sums within " << t.sum_tolerance << " of 1 rescaled ("
+    << (t.sum_tolerance_given ? "--sum-tolerance" : "default") << "), fractions below "
+    << t.zero_below << " set to 0 (" << (t.zero_below_given ? "--zero-below" : "default") << "); "
+    << fr.rescaled_cells << " cells rescaled, " << fr.zeroed_values << " traces set to 0, "
+    << fr.clipped_values << " values clipped into [0, 1]";
+  return s.str();
 }
 
 // A material nowhere the majority gets no cell and is gone from every later stage.
@@ -159,6 +184,7 @@ int run_assign(const CLI::App& app, Options& o) {
   t.restart();
   FractionReport fr;
   const Fractions fractions = extract_fractions(data, o.in.fractions, &fr, o.input);
+  if (o.in.fractions.labels.empty()) log_info(fractions_message(fr));
   const AnyMesh mesh = io::to_mesh(data, o.input);
   times.emplace_back("fractions", t.seconds());
   const assign::AssignResult r = std::visit(

@@ -93,19 +93,23 @@ void add_input_options(CLI::App& app, InputOptions& options) {
                  "argument per array, or names separated by commas; an argument naming an "
                  "array is taken whole (\"Volume Fraction for Body, Nose\")");
   app.add_option("--void", f.void_material,
-                 "Name a material that receives 1 - sum of the others (a fraction array of that "
-                 "material is then recomputed, not read)");
+                 "Name a material that receives 1 - sum of the others: a new material after "
+                 "them, or, when a fraction array of that material exists (vf_NAME), that "
+                 "material recomputed as the remainder instead of read");
   app.add_option("--value-tolerance", f.value_tolerance,
                  "How far outside [0,1] a fraction may be and still be clipped")
       ->check(finite_non_negative)
       ->capture_default_str();
-  app.add_option("--sum-tolerance", f.sum_tolerance,
-                 "How far from 1 a cell's sum may be and still be rescaled")
-      ->check(finite_non_negative)
-      ->capture_default_str();
-  app.add_option("--zero-below", f.zero_below, "Fractions below this are traces (set to 0)")
-      ->check(finite_non_negative)
-      ->capture_default_str();
+  app.add_option_function<double>(
+         "--sum-tolerance", [&f](const double& v) { f.sum_tolerance = v; },
+         "How far from 1 a cell's sum may be and still be rescaled (default: 1e-4; for "
+         "fractions stored as float32 at least 8 x materials x 2^-23, their rounding)")
+      ->check(finite_non_negative);
+  app.add_option_function<double>(
+         "--zero-below", [&f](const double& v) { f.zero_below = v; },
+         "Fractions below this are traces, set to 0 (default: 1e-5; for fractions stored as "
+         "float32 at least 8 x materials x 2^-23, their rounding)")
+      ->check(finite_non_negative);
   app.add_option("--labels", f.labels,
                  "Integer cell array of material ids (a label map): one material per value, "
                  "named label_<value>; instead of fraction arrays");

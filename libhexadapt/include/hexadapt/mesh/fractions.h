@@ -10,14 +10,18 @@
 //   - a sum farther than sum_tolerance from 1: InputError, unless a void material is named,
 //     which receives the remainder 1 - sum (a sum above 1 + sum_tolerance is still an error);
 //   - every cell is then rescaled to sum exactly 1 (a cell left with all zeros is an error).
+// sum_tolerance and zero_below follow the precision the arrays were stored in unless the
+// options give them (fraction_tolerances.h); the report says which values were used and why.
 #pragma once
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "hexadapt/core/ids.h"
+#include "hexadapt/mesh/fraction_tolerances.h"
 
 namespace hexadapt {
 namespace io {
@@ -61,8 +65,12 @@ struct FractionOptions {
   /// material in its place, recomputed instead of read.
   std::string void_material;
   double value_tolerance = 1e-4;  ///< how far outside [0,1] a value may be and still be clipped
-  double sum_tolerance = 1e-4;    ///< how far from 1 a cell's sum may be and still be rescaled
-  double zero_below = 1e-5;       ///< fractions below this are traces and become 0
+  /// How far from 1 a cell's sum may be and still be rescaled; unset: decided from the
+  /// stored precision (decide_tolerances: 1e-4, for float32 data at least 8 n FLT_EPSILON).
+  std::optional<double> sum_tolerance;
+  /// Fractions below this are traces and become 0; unset: decided from the stored precision
+  /// (decide_tolerances: 1e-5, for float32 data at least 8 n FLT_EPSILON).
+  std::optional<double> zero_below;
   /// A label map instead of fraction arrays: this integer cell array gives each cell's
   /// material; every distinct value is one material (fraction 1 in its cells), in increasing
   /// order of value. Exclusive with `arrays` and `void_material`.
@@ -78,10 +86,16 @@ struct FractionReport {
   index_t zeroed_values = 0;     ///< traces set to 0
   index_t rescaled_cells = 0;    ///< cells whose sum was not 1 (to 1e-12) before rescaling
   double max_sum_error = 0;      ///< largest |sum - 1| seen before repair
+  /// float32 when at least one array read was stored as float32 (a recomputed void
+  /// material's array is not read); float64 for label maps.
+  StoredPrecision precision = StoredPrecision::float64;
+  /// The sum tolerance and trace threshold used, given or decided from `precision`.
+  FractionTolerances tolerances;
 };
 
 /// Reads the fraction arrays of `data` (file name `file` only for error messages), or the
-/// label map when options.labels is set.
+/// label map when options.labels is set. A sum outside the tolerance is an InputError naming
+/// the cell, its sum and the --sum-tolerance that would accept it and every cell of the file.
 Fractions extract_fractions(const io::MeshData& data, const FractionOptions& options,
                             FractionReport* report = nullptr, const std::string& file = {});
 
