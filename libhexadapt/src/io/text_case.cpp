@@ -54,8 +54,6 @@ void read_structured_mesh(LegacyScanner& s, int dim, MeshData& data, CellNumberi
   if (n_points > (1 << 20) && static_cast<std::size_t>(n_points / 8) > s.remaining())
     s.fail("the grid has " + std::to_string(n_points) + " nodes but only " +
            std::to_string(s.remaining()) + " bytes follow");
-  const auto blocks = s.integer("the number of blocks", 0, kMaxIds);
-  if (blocks != 1) s.fail("only one block is supported, found " + std::to_string(blocks));
   std::vector<Vec3> pts;
   pts.reserve(static_cast<std::size_t>(n_points));
   for (std::int64_t k = 0; k < dims[2]; ++k)
@@ -88,32 +86,61 @@ void read_unstructured_mesh(LegacyScanner& s, MeshData& data, CellNumbering& num
   numbering.n_cells = data.n_cells();
 }
 
-void read_material(LegacyScanner& s, const CellNumbering& numbering, MeshData& data,
-                   std::vector<std::int64_t>& indices) {
+// The materials read so far, in the order they first appear, with the cells listed for them.
+struct Listed {
+  std::vector<DataArray> arrays;
+  std::vector<std::vector<bool>> seen;
+};
+
+// The material indices and names of the block being read.
+struct BlockMaterials {
+  std::vector<std::int64_t> indices;
+  std::vector<std::string> names;
+};
+
+// One material of a block: a new one, or the one of that name from an earlier block, which
+// the block lists more cells for (as the reference implementation reads blocks: materials
+// are known by name, their indices only number them within the block).
+void read_material(LegacyScanner& s, const CellNumbering& numbering, BlockMaterials& block,
+                   Listed& listed) {
   const std::size_t at = s.mark();
   const auto index = s.integer("a material index", 0, kMaxIds);
-  if (std::find(indices.begin(), indices.end(), index) != indices.end())
+  if (std::find(block.indices.begin(), block.indices.end(), index) != block.indices.end())
     s.fail_at(at, "material index " + std::to_string(index) + " listed twice");
-  indices.push_back(index);
-  DataArray a;
-  a.name = "vf_" + std::string(s.expect_token("a material name"));
-  if (data.find_cell_array(a.name))
-    s.fail_at(at, "material " + quote_token(a.name.substr(3)) + " listed twice");
-  a.values.assign(static_cast<std::size_t>(numbering.n_cells), 0.0);
-  std::vector<bool> seen(a.values.size(), false);
+  block.indices.push_back(index);
+  const std::string name = "vf_" + std::string(s.expect_token("a material name"));
+  if (std::find(block.names.begin(), block.names.end(), name) != block.names.end())
+    s.fail_at(at, "material " + quote_token(name.substr(3)) + " listed twice");
+  block.names.push_back(name);
+  const auto found = std::find_if(listed.arrays.begin(), listed.arrays.end(),
+                                  [&](const DataArray& a) { return a.name == name; });
+  const auto m = static_cast<std::size_t>(found - listed.arrays.begin());
+  if (m == listed.arrays.size()) {
+    listed.arrays.emplace_back().name = name;
+    listed.arrays.back().values.assign(static_cast<std::size_t>(numbering.n_cells), 0.0);
+    listed.seen.emplace_back(static_cast<std::size_t>(numbering.n_cells), false);
+  }
   const auto n = s.integer("a number of listed cells", 0, numbering.n_cells);
   for (std::int64_t e = 0; e < n; ++e) {
-    const auto c =
-        static_cast<std::size_t>(numbering(s.integer("a cell index", 0, numbering.n_cells - 1)));
+    const auto written = s.integer("a cell index", 0, numbering.n_cells - 1);
+    const auto c = static_cast<std::size_t>(numbering(written));
     // Values and sums are judged with the others', by the fraction options and their
     // tolerances (fractions.h); here only what is not a fraction at all.
     const double f = s.real("a volume fraction");
     if (!std::isfinite(f)) s.fail("volume fraction " + std::to_string(f) + " is not a number");
-    if (seen[c]) s.fail("cell listed twice for material " + quote_token(a.name.substr(3)));
-    seen[c] = true;
-    a.values[c] = f;
+    if (listed.seen[m][c])
+      s.fail("cell " + std::to_string(written) + " listed twice for material " +
+             quote_token(name.substr(3)));
+    listed.seen[m][c] = true;
+    listed.arrays[m].values[c] = f;
   }
-  data.set_cell_array(std::move(a));
+}
+
+// A block: its number of materials, then each material.
+void read_block(LegacyScanner& s, const CellNumbering& numbering, Listed& listed) {
+  const auto n_mat = s.integer("the number of materials", 1, 1 << 16);
+  BlockMaterials block;
+  for (std::int64_t m = 0; m < n_mat; ++m) read_material(s, numbering, block, listed);
 }
 
 }  // namespace
@@ -124,16 +151,19 @@ MeshData read_text_case(std::string_view content, const std::string& file) {
   CellNumbering numbering;
   const auto dim = static_cast<int>(s.integer("the dimension (2 or 3)", 2, 3));
   const std::size_t on_line_2 = tokens_on_next_line(s);
-  if (on_line_2 == static_cast<std::size_t>(dim))
+  std::int64_t blocks = 1;  // the unstructured format has one, uncounted
+  if (on_line_2 == static_cast<std::size_t>(dim)) {
     read_structured_mesh(s, dim, data, numbering);
-  else if (on_line_2 == 1 && dim == 2)
+    blocks = s.integer("the number of blocks", 1, 1 << 16);
+  } else if (on_line_2 == 1 && dim == 2) {
     read_unstructured_mesh(s, data, numbering);
-  else
+  } else {
     s.fail("expected " + std::to_string(dim) + " cell counts (structured format)" +
            (dim == 2 ? " or a node count (unstructured format)" : "") + " on the second line");
-  const auto n_mat = s.integer("the number of materials", 1, 1 << 16);
-  std::vector<std::int64_t> indices;
-  for (std::int64_t m = 0; m < n_mat; ++m) read_material(s, numbering, data, indices);
+  }
+  Listed listed;
+  for (std::int64_t b = 0; b < blocks; ++b) read_block(s, numbering, listed);
+  for (DataArray& a : listed.arrays) data.set_cell_array(std::move(a));
   if (!s.at_end()) s.fail("unexpected " + quote_token(s.peek_token()) + " after the last material");
   return data;
 }

@@ -1,7 +1,10 @@
 // The plain text formats of small hand-made cases (DESIGN sec. 7.1), compatible with the
 // reference implementation's test inputs: the structured "internal format" (unit cells,
 // origin 0) and the unstructured 2D "unstruct format". Fractions become cell arrays
-// vf_<material name>, in the order the materials are listed.
+// vf_<material name>, in the order the materials are first listed. The structured format
+// may hold several blocks, each a list of materials with their cells; as the reference reads
+// them, a material is known by its name, and a later block lists more of its cells (a cell
+// listed twice for one material is an error).
 #pragma once
 
 #include <string>
