@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli.h"
+#include "input_record.h"
 #include "hexadapt/adapt/adapt.h"
 #include "hexadapt/adapt/adapt_io.h"
 #include "hexadapt/core/error.h"
@@ -319,6 +320,7 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   if (stopped)
     return refuse_bad_input(common, report, times, bad_input, worst, options.threshold);
   for (auto& kv : cli::provenance(app)) out.metadata.push_back(kv);
+  cli::pass_input_record(in, out);
   io::write_mesh(out, common.output, common.write_options());
   times.emplace_back("write", clock.seconds());
   report["threshold_met"] = below == 0;

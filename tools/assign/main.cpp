@@ -1,11 +1,13 @@
 // hexadapt-assign: majority assignment and manifold correction of a grid with volume
 // fractions (paper sec. 3). Reads any mesh file with fraction arrays, writes the same grid
 // and fractions plus Int32 cell arrays `material` (final) and `majority` (initial).
+#include <algorithm>
 #include <cstdio>
 #include <iomanip>
 #include <sstream>
 
 #include "cli.h"
+#include "input_record.h"
 #include "hexadapt/assign/assign.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/mesh_file.h"
@@ -57,9 +59,11 @@ io::DataArray int_array(const std::string& name, const assign::Labels& labels) {
   return a;
 }
 
-/// The input data plus the repaired fractions (vf_<name>), the two assignments and provenance.
+/// The input data plus the repaired fractions (vf_<name>), the two assignments, provenance and
+/// the record of how the fractions were read (`record`, input_record.h).
 io::MeshData output_data(io::MeshData data, const Fractions& f, const assign::Labels& majority,
-                         const assign::Labels& material, const CLI::App& app) {
+                         const assign::Labels& material, const CLI::App& app,
+                         const std::string& record) {
   std::string names;
   for (int m = 0; m < f.n_materials(); ++m) {
     io::DataArray a;
@@ -72,6 +76,11 @@ io::MeshData output_data(io::MeshData data, const Fractions& f, const assign::La
   data.set_cell_array(int_array("majority", majority));
   for (const auto& kv : cli::provenance(app)) data.metadata.push_back(kv);
   data.metadata.emplace_back("hexadapt_materials", names);
+  auto& meta = data.metadata;
+  meta.erase(std::remove_if(meta.begin(), meta.end(),
+                            [](const auto& kv) { return kv.first == cli::input_record_key; }),
+             meta.end());
+  meta.emplace_back(cli::input_record_key, record);
   return data;
 }
 
@@ -196,7 +205,8 @@ int run_assign(const CLI::App& app, Options& o) {
   t.restart();
   const std::string out = r.correction.solved ? o.common.output : o.partial;
   if (!out.empty())
-    io::write_mesh(output_data(std::move(data), fractions, r.majority, r.correction.labels, app),
+    io::write_mesh(output_data(std::move(data), fractions, r.majority, r.correction.labels, app,
+                               cli::input_record(o.in, fr)),
                    out, o.common.write_options());
   times.emplace_back("write", t.seconds());
 

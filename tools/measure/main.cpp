@@ -5,11 +5,13 @@
 // --max-volume-error is not met. Report fields: docs/reports.md.
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <iostream>
 #include <map>
 #include <string>
 
 #include "cli.h"
+#include "input_record.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/mesh_file.h"
 #include "hexadapt/measure/discrepancy.h"
@@ -142,18 +144,19 @@ struct DiscrepancyRun {
 
 // Imprints the mesh's materials onto the reference grid; material m of the mesh is the
 // reference's m-th fraction array.
-DiscrepancyRun measure_discrepancy(const Args& a, const io::MeshData& mesh, const Progress& bar,
+DiscrepancyRun measure_discrepancy(const Args& a, const cli::InputOptions& reading,
+                                   const io::MeshData& mesh, const Progress& bar,
                                    PhaseTimes& times, double memory_limit) {
   DiscrepancyRun run;
   run.reference = cli::timed_phase(times, bar, "read_reference", [&] {
-    return io::read_mesh(a.reference, a.in.read_options());
+    return io::read_mesh(a.reference, reading.read_options());
   });
   const index_t cells = mesh.n_cells() + run.reference.n_cells();
   cli::check_memory("measuring " + std::to_string(cells) + " cells of mesh and reference",
                     static_cast<double>(cells) * cli::measure_bytes_per_cell, memory_limit);
   Fractions fractions;
   try {
-    fractions = extract_fractions(run.reference, a.in.fractions, nullptr, a.reference);
+    fractions = extract_fractions(run.reference, reading.fractions, nullptr, a.reference);
   } catch (const InputError& e) {
     rethrow_with_file(e, a.reference);
   }
@@ -253,7 +256,12 @@ int measure(const CLI::App& app, const cli::CommonOptions& common, const Args& a
   }
   times.emplace_back("quality", timer.seconds());
   DiscrepancyRun disc;
-  if (!a.reference.empty()) disc = measure_discrepancy(a, data, bar, times, common.memory_limit());
+  // The reference is read as the input was when no reading flag says otherwise.
+  const std::optional<cli::InputOptions> recorded =
+      cli::input_options_given(app) ? std::nullopt : cli::carried_input(data, a.input);
+  if (!a.reference.empty())
+    disc = measure_discrepancy(a, recorded.value_or(a.in), data, bar, times,
+                               common.memory_limit());
   timer.restart();
   SizeReport size;
   try {
@@ -286,6 +294,7 @@ int measure(const CLI::App& app, const cli::CommonOptions& common, const Args& a
       json["distances"] = cli::Json::parse(target_distances_json(distances));
       if (!a.reference.empty()) {
         json["reference"] = a.reference;
+        json["reference_read_with"] = recorded ? "the record in the input" : "the flags";
         json["discrepancy"] = cli::Json::parse(discrepancy_json(disc.report));
       }
       json["size"] = cli::Json::parse(size_report_json(size));
