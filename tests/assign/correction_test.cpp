@@ -18,7 +18,7 @@ namespace {
 /// Runs the whole stage and checks it with the independent checker.
 template <class M>
 AssignResult assign_and_check(const M& mesh, const Fractions& f, CorrectionOptions o = {}) {
-  AssignResult r = assign_materials(mesh, f, o);
+  AssignResult r = assign_materials(mesh, f, {o});
   EXPECT_TRUE(r.correction.solved);
   EXPECT_EQ(test::count_non_manifold(mesh, r.correction.labels, f.n_materials()), 0);
   EXPECT_GE(r.correction.cost_final, r.correction.cost_initial - 1e-12);  // majority is cheapest
@@ -103,7 +103,7 @@ TEST(Correction, Figure5LivelockIsAvoided) {
   CorrectionOptions one;
   one.spare_neighbours = false;  // the paper's order: strictly the next cheapest
   one.keep = 1;  // a single stored configuration: the second visit of A has nothing left
-  const AssignResult failed = assign_materials(mesh, f, one);
+  const AssignResult failed = assign_materials(mesh, f, {one});
   ASSERT_FALSE(failed.correction.solved);
   ASSERT_TRUE(failed.correction.failure.has_value());
   EXPECT_EQ(failed.correction.failure->node, NodeId(7));
@@ -127,7 +127,7 @@ TEST(Correction, SparingNeighboursConvergesWhereThePaperOrderFails) {
   const Fractions f = test::random_fractions(mesh.n_cells(), 3, 2, 1);
   CorrectionOptions paper;
   paper.spare_neighbours = false;
-  const AssignResult failed = assign_materials(mesh, f, paper);
+  const AssignResult failed = assign_materials(mesh, f, {paper});
   EXPECT_FALSE(failed.correction.solved);
   EXPECT_EQ(failed.correction.max_visits, 20);
   EXPECT_GT(test::count_non_manifold(mesh, failed.correction.labels, 3), 0);

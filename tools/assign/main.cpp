@@ -21,7 +21,7 @@ struct Options {
   std::string input;
   std::string partial;
   cli::InputOptions in;
-  assign::CorrectionOptions correction;
+  assign::AssignOptions assign;
   bool paper_order = false;
 };
 
@@ -33,16 +33,22 @@ void add_options(CLI::App& app, Options& o) {
   cli::add_common_options(app, o.common);
   cli::add_write_options(app, o.common);
   cli::add_input_options(app, o.in);
-  app.add_option("--keep", o.correction.keep, "Manifold configurations stored per node")
+  app.add_option("--keep", o.assign.correction.keep, "Manifold configurations stored per node")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  app.add_option("--max-materials", o.correction.max_materials,
+  app.add_option("--max-materials", o.assign.correction.max_materials,
                  "Candidate materials per node (the most present in its ball)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  app.add_option("--max-leaves", o.correction.max_leaves,
+  app.add_option("--max-leaves", o.assign.correction.max_leaves,
                  "Per node: complete configurations examined at most")
       ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--min-island", o.assign.min_island,
+                 "Pieces of one material (cells joined by faces) with fewer cells than this go "
+                 "to the material around them most present in their cells, before the manifold "
+                 "correction (0: off)")
+      ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   app.add_flag("--paper-order", o.paper_order,
                "Take stored configurations strictly by cost (do not prefer ones that keep "
@@ -153,6 +159,16 @@ std::string fractions_message(const FractionReport& fr) {
   return s.str();
 }
 
+// What --min-island did, and the small pieces the correction left (a warning: asked away).
+void log_islands(const assign::AssignResult& r, index_t min_cells) {
+  log_info(std::to_string(r.islands.islands) + " pieces smaller than " +
+           std::to_string(min_cells) + " cells (" + std::to_string(r.islands.cells) +
+           " cells) given to the material around them");
+  if (r.small_pieces_final > 0)
+    log_warning(std::to_string(r.small_pieces_final) + " pieces smaller than " +
+                std::to_string(min_cells) + " cells remain after the manifold correction");
+}
+
 // A material nowhere the majority gets no cell and is gone from every later stage.
 void warn_vanished(const std::vector<assign::MaterialBalance>& balance, const Fractions& fractions) {
   for (std::size_t m = 0; m < balance.size(); ++m) {
@@ -181,8 +197,8 @@ std::string failure_message(const assign::CorrectionFailure& f, const Fractions&
 int run_assign(const CLI::App& app, Options& o) {
   cli::check_files({{"input", o.input}},
                    {{"-o", o.common.output}, {"--partial", o.partial}, {"--json", o.common.json}});
-  o.correction.spare_neighbours = !o.paper_order;
-  o.correction.progress = cli::terminal_progress(o.common);
+  o.assign.correction.spare_neighbours = !o.paper_order;
+  o.assign.correction.progress = cli::terminal_progress(o.common);
   PhaseTimes times;
   Timer t;
   io::MeshData data = io::read_mesh(o.input, o.in.read_options());
@@ -197,10 +213,11 @@ int run_assign(const CLI::App& app, Options& o) {
   const AnyMesh mesh = io::to_mesh(data, o.input);
   times.emplace_back("fractions", t.seconds());
   const assign::AssignResult r = std::visit(
-      [&](const auto& m) { return assign::assign_materials(m, fractions, o.correction); }, mesh);
+      [&](const auto& m) { return assign::assign_materials(m, fractions, o.assign); }, mesh);
   for (const auto& p : r.times) times.push_back(p);
   log_info("non-manifold nodes at first: " + std::to_string(r.correction.non_manifold_initial) +
            ", cells changed: " + std::to_string(r.correction.cells_changed));
+  if (o.assign.min_island > 1) log_islands(r, o.assign.min_island);
   warn_vanished(r.balance, fractions);
   t.restart();
   const std::string out = r.correction.solved ? o.common.output : o.partial;
@@ -217,19 +234,24 @@ int run_assign(const CLI::App& app, Options& o) {
       std::visit([](const auto& m) { return std::decay_t<decltype(m)>::dim; }, mesh);
   report["cells"] = fractions.n_cells();
   report["materials"] = fractions.names();
-  report["options"] = {{"keep", o.correction.keep},
-                       {"max_materials", o.correction.max_materials},
-                       {"max_leaves", o.correction.max_leaves},
+  report["options"] = {{"keep", o.assign.correction.keep},
+                       {"min_island", o.assign.min_island},
+                       {"max_materials", o.assign.correction.max_materials},
+                       {"max_leaves", o.assign.correction.max_leaves},
                        {"paper_order", o.paper_order}};
   report["assign"] = result_json(r, fr);
   report["assign"]["materials"] = balance_json(r.balance, fractions);
+  report["assign"]["islands"] = {{"reassigned", r.islands.islands},
+                                 {"cells", r.islands.cells},
+                                 {"left", r.islands.left},
+                                 {"small_pieces_final", r.small_pieces_final}};
   if (r.correction.failure)
     report["assign"]["failure"] = failure_json(*r.correction.failure, fractions);
   report["exit_code"] = r.correction.failure ? cli::target_missed : cli::ok;
   report["times"] = cli::phase_times_json(times);
   cli::write_report(o.common, report);
   if (r.correction.failure) {
-    log(LogLevel::error, failure_message(*r.correction.failure, fractions, o.correction.keep));
+    log(LogLevel::error, failure_message(*r.correction.failure, fractions, o.assign.correction.keep));
     return cli::target_missed;
   }
   return cli::ok;

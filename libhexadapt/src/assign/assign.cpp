@@ -7,16 +7,22 @@ namespace hexadapt::assign {
 
 template <class M>
 AssignResult assign_materials(const M& mesh, const Fractions& fractions,
-                              const CorrectionOptions& options) {
+                              const AssignOptions& options) {
   AssignResult r;
   Timer t;
   r.majority = majority_assignment(fractions);
   r.times.emplace_back("majority", t.seconds());
+  Labels start = r.majority;
+  if (options.min_island > 1) {
+    t.restart();
+    r.islands = remove_islands(mesh, fractions, start, options.min_island);
+    r.times.emplace_back("islands", t.seconds());
+  }
   // A grid of 1e-300 (or 1e300) has no representable cell volumes: it is assigned in its
   // UnitFrame, and the costs, volumes too, go back to its units.
   const UnitFrame frame = far_unit_frame(mesh);
   auto assign_in_frame = [&](const M& local) {
-    r.correction = correct_assignment(local, fractions, r.majority, options);
+    r.correction = correct_assignment(local, fractions, start, options.correction);
     r.balance = material_balance(local, fractions, r.correction.labels);
   };
   if (frame.is_identity())
@@ -28,10 +34,12 @@ AssignResult assign_materials(const M& mesh, const Fractions& fractions,
   for (MaterialBalance& b : r.balance)
     for (double* v : {&b.input_volume, &b.assigned_volume}) *v = frame.to_world(*v, M::dim);
   for (const auto& phase : r.correction.times) r.times.push_back(phase);
+  if (options.min_island > 1)
+    r.small_pieces_final = count_small_pieces(mesh, r.correction.labels, options.min_island);
   return r;
 }
 
-template AssignResult assign_materials(const QuadMesh&, const Fractions&, const CorrectionOptions&);
-template AssignResult assign_materials(const HexMesh&, const Fractions&, const CorrectionOptions&);
+template AssignResult assign_materials(const QuadMesh&, const Fractions&, const AssignOptions&);
+template AssignResult assign_materials(const HexMesh&, const Fractions&, const AssignOptions&);
 
 }  // namespace hexadapt::assign

@@ -1,16 +1,28 @@
-// The assignment stage (paper sec. 3): majority assignment, then manifold correction.
-// This is what hexadapt-assign runs; the steps are also available one by one
-// (majority.h, manifold.h, enumerate.h, correction.h).
+// The assignment stage (paper sec. 3): majority assignment, small pieces given to the
+// materials around them when asked (islands.h), then manifold correction. This is what
+// hexadapt-assign runs; the steps are also available one by one (majority.h, islands.h,
+// manifold.h, enumerate.h, correction.h).
 #pragma once
 
 #include "hexadapt/assign/correction.h"
+#include "hexadapt/assign/islands.h"
 #include "hexadapt/assign/majority.h"
 #include "hexadapt/assign/material_balance.h"
 
 namespace hexadapt::assign {
 
+struct AssignOptions {
+  CorrectionOptions correction;
+  /// Pieces of one material smaller than this many cells go to a material around them
+  /// before the correction (islands.h); 0 or 1: off.
+  index_t min_island = 0;
+};
+
 struct AssignResult {
   Labels majority;              ///< eq. (2), before correction
+  IslandResult islands;         ///< the small pieces reassigned in the majority assignment
+  /// Pieces smaller than min_island in the final assignment (the correction may leave some).
+  index_t small_pieces_final = 0;
   CorrectionResult correction;  ///< labels: the final assignment, with statistics
   PhaseTimes times;             ///< majority, then the correction's phases
   /// Per material, input and assigned volumes of the final assignment (in the grid's units;
@@ -20,6 +32,6 @@ struct AssignResult {
 
 template <class M>
 AssignResult assign_materials(const M& mesh, const Fractions& fractions,
-                              const CorrectionOptions& options = {});
+                              const AssignOptions& options = {});
 
 }  // namespace hexadapt::assign
