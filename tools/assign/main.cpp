@@ -50,6 +50,9 @@ void add_options(CLI::App& app, Options& o) {
                  "correction (0: off)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  app.add_flag("--keep-materials", o.assign.keep_materials,
+               "Give a material that is nowhere the majority the cells where it is most present "
+               "(as many as its volume fills, at least one), before the manifold correction");
   app.add_flag("--paper-order", o.paper_order,
                "Take stored configurations strictly by cost (do not prefer ones that keep "
                "neighbouring nodes manifold)");
@@ -218,6 +221,10 @@ int run_assign(const CLI::App& app, Options& o) {
   log_info("non-manifold nodes at first: " + std::to_string(r.correction.non_manifold_initial) +
            ", cells changed: " + std::to_string(r.correction.cells_changed));
   if (o.assign.min_island > 1) log_islands(r, o.assign.min_island);
+  for (const assign::KeptMaterial& k : r.kept)
+    log_info("material '" + fractions.names()[static_cast<std::size_t>(k.material)] +
+             "', nowhere the majority, kept in the " + std::to_string(k.cells) +
+             " cells where it is most present");
   warn_vanished(r.balance, fractions);
   t.restart();
   const std::string out = r.correction.solved ? o.common.output : o.partial;
@@ -236,11 +243,16 @@ int run_assign(const CLI::App& app, Options& o) {
   report["materials"] = fractions.names();
   report["options"] = {{"keep", o.assign.correction.keep},
                        {"min_island", o.assign.min_island},
+                       {"keep_materials", o.assign.keep_materials},
                        {"max_materials", o.assign.correction.max_materials},
                        {"max_leaves", o.assign.correction.max_leaves},
                        {"paper_order", o.paper_order}};
   report["assign"] = result_json(r, fr);
   report["assign"]["materials"] = balance_json(r.balance, fractions);
+  report["assign"]["kept"] = cli::Json::array();
+  for (const assign::KeptMaterial& k : r.kept)
+    report["assign"]["kept"].push_back(
+        {{"name", fractions.names()[static_cast<std::size_t>(k.material)]}, {"cells", k.cells}});
   report["assign"]["islands"] = {{"reassigned", r.islands.islands},
                                  {"cells", r.islands.cells},
                                  {"left", r.islands.left},

@@ -22,6 +22,7 @@ AssignResult assign_materials(const M& mesh, const Fractions& fractions,
   // UnitFrame, and the costs, volumes too, go back to its units.
   const UnitFrame frame = far_unit_frame(mesh);
   auto assign_in_frame = [&](const M& local) {
+    if (options.keep_materials) r.kept = keep_vanished_materials(local, fractions, start);
     r.correction = correct_assignment(local, fractions, start, options.correction);
     r.balance = material_balance(local, fractions, r.correction.labels);
   };

@@ -1,11 +1,15 @@
 // The assignment stage (paper sec. 3): majority assignment, small pieces given to the
-// materials around them when asked (islands.h), then manifold correction. This is what
-// hexadapt-assign runs; the steps are also available one by one (majority.h, islands.h,
-// manifold.h, enumerate.h, correction.h).
+// materials around them and materials without a cell given some when asked (islands.h,
+// keep_materials.h), then manifold correction. This is what hexadapt-assign runs; the steps
+// are also available one by one (majority.h, islands.h, keep_materials.h, manifold.h,
+// enumerate.h, correction.h).
 #pragma once
+
+#include <vector>
 
 #include "hexadapt/assign/correction.h"
 #include "hexadapt/assign/islands.h"
+#include "hexadapt/assign/keep_materials.h"
 #include "hexadapt/assign/majority.h"
 #include "hexadapt/assign/material_balance.h"
 
@@ -16,6 +20,9 @@ struct AssignOptions {
   /// Pieces of one material smaller than this many cells go to a material around them
   /// before the correction (islands.h); 0 or 1: off.
   index_t min_island = 0;
+  /// Materials left without a cell take the cells where they are most present, before the
+  /// correction (keep_materials.h).
+  bool keep_materials = false;
 };
 
 struct AssignResult {
@@ -23,6 +30,7 @@ struct AssignResult {
   IslandResult islands;         ///< the small pieces reassigned in the majority assignment
   /// Pieces smaller than min_island in the final assignment (the correction may leave some).
   index_t small_pieces_final = 0;
+  std::vector<KeptMaterial> kept;  ///< with keep_materials: the materials given cells
   CorrectionResult correction;  ///< labels: the final assignment, with statistics
   PhaseTimes times;             ///< majority, then the correction's phases
   /// Per material, input and assigned volumes of the final assignment (in the grid's units;

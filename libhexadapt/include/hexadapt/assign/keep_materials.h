@@ -1,0 +1,28 @@
+// Materials that are nowhere the majority get no cell and vanish from every later stage.
+// Kept instead, each such material takes the cells where it is most present (largest
+// fraction first, ties to the lowest cell id), as many as its input volume fills in cells of
+// the grid's mean volume, at least one. A cell already taken for another kept material, or
+// the last cell of its material, is not taken. The manifold correction runs after: a taken
+// cell stays unless a non-manifold node around it makes the correction change it, which the
+// final balance (material_balance.h) then shows.
+#pragma once
+
+#include <vector>
+
+#include "hexadapt/assign/majority.h"
+#include "hexadapt/mesh/fractions.h"
+
+namespace hexadapt::assign {
+
+struct KeptMaterial {
+  int material = 0;
+  index_t cells = 0;  ///< cells given to it
+};
+
+/// Gives each material with volume in `fractions` and no cell in `labels` its cells, in
+/// place; one entry per material kept, in increasing material index.
+template <class M>
+std::vector<KeptMaterial> keep_vanished_materials(const M& mesh, const Fractions& fractions,
+                                                  Labels& labels);
+
+}  // namespace hexadapt::assign
