@@ -1,0 +1,71 @@
+#!/usr/bin/env python3
+"""The library's units depend one way (docs/architecture.md, "Dependency direction"): a unit
+includes only the public headers of the units to its left, and no file reaches into another
+unit's src/. The tools include public headers only. Prints every include that breaks this and
+fails; the few known crossings are listed below with the file that makes them."""
+import pathlib
+import re
+import sys
+
+ROOT = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else pathlib.Path(__file__).parents[2])
+
+# Level of each unit: a unit may include the public headers of units of a lower level.
+LEVEL = {"core": 0, "mesh": 1, "quality": 2, "io": 2, "assign": 3, "generate": 3,
+         "reconstruct": 4, "adapt": 5, "measure": 6}
+
+# Known crossings, each (file, what it includes: a unit, or another unit's private header):
+# the fraction readers in mesh/ read io's MeshData (to move to io/), the mesh kernels score
+# their cells with quality/ (whose functions take mesh/geometry.h's Vec3 and reference
+# cells), and the model reader of reconstruct/ tokenizes with io's legacy scanner.
+KNOWN = {
+    ("libhexadapt/src/mesh/fractions.cpp", "io"),
+    ("libhexadapt/src/mesh/label_fractions.cpp", "io"),
+    ("libhexadapt/src/mesh/hex_mesh.cpp", "quality"),
+    ("libhexadapt/src/mesh/quad_mesh.cpp", "quality"),
+    ("libhexadapt/src/reconstruct/model_reader.cpp", "../io/legacy_scanner.h"),
+}
+
+INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
+
+
+def unit_of(path):
+    parts = path.relative_to(ROOT).parts
+    if parts[:1] == ("libhexadapt",) and len(parts) > 2:
+        return parts[3] if parts[1] == "include" else parts[2]
+    return None
+
+
+def problems():
+    out = []
+    files = [p for p in (ROOT / "libhexadapt").rglob("*") if p.suffix in (".h", ".cpp")]
+    files += [p for p in (ROOT / "tools").rglob("*") if p.suffix in (".h", ".cpp")]
+    for path in sorted(files):
+        rel = str(path.relative_to(ROOT))
+        unit = unit_of(path)
+        for target in INCLUDE.findall(path.read_text(errors="replace")):
+            if "libhexadapt/src" in target or target.startswith("../"):
+                if (rel, target) not in KNOWN:
+                    out.append(f"{rel}: includes {target}, another unit's private header")
+                continue
+            m = re.match(r"hexadapt/([a-z_]+)/", target)
+            if not m or unit is None or m.group(1) == unit:
+                continue
+            other = m.group(1)
+            if other not in LEVEL or unit not in LEVEL:
+                out.append(f"{rel}: unit {unit} or {other} has no level in this check")
+            elif LEVEL[other] >= LEVEL[unit] and (rel, other) not in KNOWN:
+                out.append(f"{rel}: {unit} includes {target} ({other} is not to its left)")
+    for rel, other in sorted(KNOWN):
+        text = (ROOT / rel).read_text() if (ROOT / rel).exists() else ""
+        if f'"hexadapt/{other}/' not in text and f'"{other}"' not in text:
+            out.append(f"{rel}: listed as a known crossing into {other}, which it no longer is: "
+                       "remove it from KNOWN")
+    return out
+
+
+if __name__ == "__main__":
+    found = problems()
+    for p in found:
+        print(p)
+    print(f"layering: {len(found)} problem(s)")
+    sys.exit(1 if found else 0)
