@@ -9,7 +9,7 @@
 #include "hexadapt/assign/assign.h"
 #include "hexadapt/generate/generate.h"
 #include "hexadapt/io/mesh_data.h"
-#include "hexadapt/mesh/fractions.h"
+#include "hexadapt/io/fractions_reader.h"
 
 namespace hexadapt::test {
 
@@ -43,7 +43,7 @@ void with_generated_case(const GeneratedCase& c, F&& fn) {
   o.extrude = c.extrude;
   o.jitter = c.jitter;
   const auto g = generate::generate(o);
-  const Fractions f = extract_fractions(g.data, FractionOptions{});
+  const Fractions f = io::extract_fractions(g.data, io::FractionOptions{});
   std::visit(
       [&](const auto& grid) {
         const auto a = assign::assign_materials(grid, f);

@@ -7,7 +7,7 @@
 
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/mesh_file.h"
-#include "hexadapt/mesh/fractions.h"
+#include "hexadapt/io/fractions_reader.h"
 
 namespace hexadapt::io {
 namespace {
@@ -120,13 +120,13 @@ TEST(TextCase, MalformedCasesNameTheLine) {
 // --sum-tolerance said, and printed it as "1.000000, over 1").
 TEST(TextCase, FractionsAreJudgedByTheFractionOptions) {
   const MeshData d = read_text_case("2\n2 1\n1\n2\n0 a\n2\n0 0.6\n1 1.00005\n1 b\n1\n0 0.40005\n", "t.txt");
-  FractionOptions o;  // tolerances 1e-4: both cells pass, rescaled or clipped
-  const Fractions f = extract_fractions(d, o, nullptr, "t.txt");
+  io::FractionOptions o;  // tolerances 1e-4: both cells pass, rescaled or clipped
+  const Fractions f = io::extract_fractions(d, o, nullptr, "t.txt");
   EXPECT_NEAR(f(CellId(0), 0) + f(CellId(0), 1), 1.0, 1e-15);
   EXPECT_EQ(f(CellId(1), 0), 1.0);
   o.sum_tolerance = 1e-6;
   try {
-    extract_fractions(d, o, nullptr, "t.txt");
+    io::extract_fractions(d, o, nullptr, "t.txt");
     ADD_FAILURE() << "no error";
   } catch (const InputError& e) {
     EXPECT_EQ(e.file(), "t.txt");
@@ -134,7 +134,7 @@ TEST(TextCase, FractionsAreJudgedByTheFractionOptions) {
     EXPECT_NE(e.message().find("1.00005"), std::string::npos) << e.what();
   }
   const MeshData over = read_text_case("2\n1 1\n1\n1\n0 a\n1\n0 1.5\n", "t.txt");
-  EXPECT_THROW(extract_fractions(over, FractionOptions{}, nullptr, "t.txt"), InputError);
+  EXPECT_THROW(io::extract_fractions(over, io::FractionOptions{}, nullptr, "t.txt"), InputError);
 }
 
 TEST(TextCase, EveryTestdataCaseReadsWithFractionsSummingToOne) {

@@ -14,12 +14,10 @@ LEVEL = {"core": 0, "mesh": 1, "quality": 2, "io": 2, "assign": 3, "generate": 3
          "reconstruct": 4, "adapt": 5, "measure": 6}
 
 # Known crossings, each (file, what it includes: a unit, or another unit's private header):
-# the fraction readers in mesh/ read io's MeshData (to move to io/), the mesh kernels score
-# their cells with quality/ (whose functions take mesh/geometry.h's Vec3 and reference
-# cells), and the model reader of reconstruct/ tokenizes with io's legacy scanner.
+# the mesh kernels score their cells with quality/ (whose functions take mesh/geometry.h's
+# Vec3 and reference cells), and the model reader of reconstruct/ tokenizes with io's legacy
+# scanner.
 KNOWN = {
-    ("libhexadapt/src/mesh/fractions.cpp", "io"),
-    ("libhexadapt/src/mesh/label_fractions.cpp", "io"),
     ("libhexadapt/src/mesh/hex_mesh.cpp", "quality"),
     ("libhexadapt/src/mesh/quad_mesh.cpp", "quality"),
     ("libhexadapt/src/reconstruct/model_reader.cpp", "../io/legacy_scanner.h"),

@@ -1,4 +1,4 @@
-// Choosing the fraction arrays (FractionOptions::arrays): real solver output names them with
+// Choosing the fraction arrays (io::FractionOptions::arrays): real solver output names them with
 // spaces and commas ("Volume Fraction for Body, Nose").
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/mesh_data.h"
-#include "hexadapt/mesh/fractions.h"
+#include "hexadapt/io/fractions_reader.h"
 #include "hexadapt/mesh/structured.h"
 
 namespace hexadapt {
@@ -26,9 +26,9 @@ io::MeshData two_cells(const std::vector<std::string>& names) {
 
 TEST(FractionArrays, AnArrayIsNamedWholeWithItsCommasAndSpaces) {
   const io::MeshData d = two_cells({"Volume Fraction for Body, Nose", "Volume Fraction for Air"});
-  FractionOptions o;
+  io::FractionOptions o;
   o.arrays = {"Volume Fraction for Body, Nose", "Volume Fraction for Air"};
-  const Fractions f = extract_fractions(d, o, nullptr, "in.vtu");
+  const Fractions f = io::extract_fractions(d, o, nullptr, "in.vtu");
   EXPECT_EQ(f.names(), o.arrays);
   EXPECT_EQ(f(CellId(0), 0), 1.0);
   EXPECT_EQ(f(CellId(1), 1), 1.0);
@@ -36,18 +36,18 @@ TEST(FractionArrays, AnArrayIsNamedWholeWithItsCommasAndSpaces) {
 
 TEST(FractionArrays, CommasSeparateNamesWhenNoArrayHoldsThemAll) {
   const io::MeshData d = two_cells({"vf_a", "vf_b", "vf_c"});
-  FractionOptions o;
+  io::FractionOptions o;
   o.arrays = {"vf_c,vf_a", "vf_b"};
-  EXPECT_EQ(extract_fractions(d, o, nullptr, "in.vtu").names(),
+  EXPECT_EQ(io::extract_fractions(d, o, nullptr, "in.vtu").names(),
             (std::vector<std::string>{"c", "a", "b"}));
 }
 
 TEST(FractionArrays, AMissingArrayIsNamedWithTheArraysThereAre) {
   const io::MeshData d = two_cells({"vf_a", "vf_b"});
-  FractionOptions o;
+  io::FractionOptions o;
   o.arrays = {"vf_a,vf_x"};
   try {
-    extract_fractions(d, o, nullptr, "in.vtu");
+    io::extract_fractions(d, o, nullptr, "in.vtu");
     FAIL() << "no error";
   } catch (const InputError& e) {
     const std::string what = e.what();
@@ -64,15 +64,15 @@ TEST(FractionArrays, AVoidMaterialWithAnArrayIsRecomputedInItsPlace) {
   d.set_cell_array({"vf_a", 1, io::ScalarType::float32, {0.5, 0.2}});
   d.set_cell_array({"vf_air", 1, io::ScalarType::float32, {0.7, 0.9}});  // noisy
   d.set_cell_array({"vf_b", 1, io::ScalarType::float32, {0.25, 0.3}});
-  FractionOptions o;
+  io::FractionOptions o;
   o.void_material = "air";
-  const Fractions f = extract_fractions(d, o, nullptr, "in.vtu");
+  const Fractions f = io::extract_fractions(d, o, nullptr, "in.vtu");
   EXPECT_EQ(f.names(), (std::vector<std::string>{"a", "air", "b"}));
   EXPECT_NEAR(f(CellId(0), 1), 0.25, 1e-15);
   EXPECT_NEAR(f(CellId(1), 1), 0.5, 1e-15);
   EXPECT_NEAR(f(CellId(1), 2), 0.3, 1e-15);
   o.void_material = "c";  // a new material, after the others
-  EXPECT_EQ(extract_fractions(two_cells({"vf_a", "vf_b"}), o, nullptr, "in.vtu").names(),
+  EXPECT_EQ(io::extract_fractions(two_cells({"vf_a", "vf_b"}), o, nullptr, "in.vtu").names(),
             (std::vector<std::string>{"a", "b", "c"}));
 }
 
@@ -83,7 +83,7 @@ TEST(FractionArrays, ASumAboveOneDoesNotAdviseAVoidMaterial) {
   d.set_cell_array({"vf_a", 1, io::ScalarType::float64, {0.6}});
   d.set_cell_array({"vf_b", 1, io::ScalarType::float64, {0.41}});
   try {
-    extract_fractions(d, FractionOptions{}, nullptr, "in.vtu");
+    io::extract_fractions(d, io::FractionOptions{}, nullptr, "in.vtu");
     FAIL() << "no error";
   } catch (const InputError& e) {
     const std::string what = e.what();

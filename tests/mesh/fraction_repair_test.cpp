@@ -1,4 +1,4 @@
-// extract_fractions judging a file's sums and traces: the stored precision and the tolerances
+// io::extract_fractions judging a file's sums and traces: the stored precision and the tolerances
 // used are reported, and a sum outside them is an error that says what would accept it.
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/mesh_data.h"
-#include "hexadapt/mesh/fractions.h"
+#include "hexadapt/io/fractions_reader.h"
 #include "hexadapt/mesh/structured.h"
 
 namespace hexadapt {
@@ -27,9 +27,9 @@ io::MeshData cells(const std::vector<std::vector<double>>& rows, ScalarType type
   return d;
 }
 
-std::string message_of(const io::MeshData& d, const FractionOptions& o, std::string* where) {
+std::string message_of(const io::MeshData& d, const io::FractionOptions& o, std::string* where) {
   try {
-    extract_fractions(d, o, nullptr, "in.vtu");
+    io::extract_fractions(d, o, nullptr, "in.vtu");
   } catch (const InputError& e) {
     if (where) *where = e.where();
     EXPECT_EQ(e.file(), "in.vtu");
@@ -41,26 +41,26 @@ std::string message_of(const io::MeshData& d, const FractionOptions& o, std::str
 
 TEST(FractionRepair, TheStoredPrecisionAndTheTolerancesDecidedAreReported) {
   const std::vector<std::vector<double>> rows = {{0.5, 0.25, 0.25}};
-  FractionReport r;
-  extract_fractions(cells(rows, ScalarType::float32), FractionOptions{}, &r);
+  io::FractionReport r;
+  io::extract_fractions(cells(rows, ScalarType::float32), io::FractionOptions{}, &r);
   EXPECT_EQ(r.precision, StoredPrecision::float32);
   EXPECT_DOUBLE_EQ(r.tolerances.float32_rounding, 3 * static_cast<double>(FLT_EPSILON));
   EXPECT_EQ(r.tolerances.sum_tolerance, default_sum_tolerance);
   EXPECT_EQ(r.tolerances.zero_below, default_zero_below);
   EXPECT_FALSE(r.tolerances.sum_tolerance_given || r.tolerances.zero_below_given);
-  extract_fractions(cells(rows, ScalarType::float64), FractionOptions{}, &r);
+  io::extract_fractions(cells(rows, ScalarType::float64), io::FractionOptions{}, &r);
   EXPECT_EQ(r.precision, StoredPrecision::float64);
   EXPECT_EQ(r.tolerances.float32_rounding, 0);
   // One float32 array among float64 ones makes the data float32 ...
   io::MeshData mixed = cells(rows, ScalarType::float64);
   mixed.cell_data[1].type = ScalarType::float32;
-  extract_fractions(mixed, FractionOptions{}, &r);
+  io::extract_fractions(mixed, io::FractionOptions{}, &r);
   EXPECT_EQ(r.precision, StoredPrecision::float32);
   // ... unless it is the void material's, recomputed rather than read.
-  FractionOptions o;
+  io::FractionOptions o;
   o.void_material = "1";
   o.sum_tolerance = 1e-3;
-  extract_fractions(mixed, o, &r);
+  io::extract_fractions(mixed, o, &r);
   EXPECT_EQ(r.precision, StoredPrecision::float64);
   EXPECT_EQ(r.tolerances.sum_tolerance, 1e-3);
   EXPECT_TRUE(r.tolerances.sum_tolerance_given);
@@ -73,17 +73,17 @@ TEST(FractionRepair, TheTraceThresholdFollowsThePrecisionUnlessGiven) {
   std::vector<double> row(12, 0.0);
   row[0] = 1.1e-5;
   row[1] = 1 - 1.1e-5;
-  FractionReport r;
-  const Fractions f32 = extract_fractions(cells({row}, ScalarType::float32), FractionOptions{}, &r);
+  io::FractionReport r;
+  const Fractions f32 = io::extract_fractions(cells({row}, ScalarType::float32), io::FractionOptions{}, &r);
   EXPECT_EQ(f32(CellId(0), 0), 0.0);
   EXPECT_EQ(r.zeroed_values, 1);
   EXPECT_DOUBLE_EQ(r.tolerances.zero_below, 8 * 12 * static_cast<double>(FLT_EPSILON));
-  const Fractions f64 = extract_fractions(cells({row}, ScalarType::float64), FractionOptions{}, &r);
+  const Fractions f64 = io::extract_fractions(cells({row}, ScalarType::float64), io::FractionOptions{}, &r);
   EXPECT_NEAR(f64(CellId(0), 0), 1.1e-5, 1e-18);
   EXPECT_EQ(r.zeroed_values, 0);
-  FractionOptions given;
+  io::FractionOptions given;
   given.zero_below = 1e-5;
-  const Fractions g = extract_fractions(cells({row}, ScalarType::float32), given, &r);
+  const Fractions g = io::extract_fractions(cells({row}, ScalarType::float32), given, &r);
   EXPECT_NEAR(g(CellId(0), 0), 1.1e-5, 1e-18);
   EXPECT_TRUE(r.tolerances.zero_below_given);
 }
@@ -96,7 +96,7 @@ TEST(FractionRepair, TheTraceThresholdFollowsThePrecisionUnlessGiven) {
 TEST(FractionRepair, ASumAboveOneNamesTheToleranceThatWouldAcceptIt) {
   const io::MeshData d = cells({{0.5, 0.5}, {0.6, 0.40213}, {0.5, 0.50473}}, ScalarType::float32);
   for (const char* void_material : {"", "air"}) {
-    FractionOptions o;
+    io::FractionOptions o;
     o.void_material = void_material;
     std::string where;
     const std::string m = message_of(d, o, &where);
@@ -111,7 +111,7 @@ TEST(FractionRepair, ASumAboveOneNamesTheToleranceThatWouldAcceptIt) {
         << m;
     EXPECT_EQ(m.find("void"), std::string::npos) << m;
   }
-  FractionOptions o;
+  io::FractionOptions o;
   o.sum_tolerance = 0.0022;
   std::string where;
   const std::string m = message_of(d, o, &where);
@@ -120,8 +120,8 @@ TEST(FractionRepair, ASumAboveOneNamesTheToleranceThatWouldAcceptIt) {
   EXPECT_NE(m.find("--sum-tolerance 0.0048 would rescale this cell"), std::string::npos) << m;
   EXPECT_EQ(m.find("every cell"), std::string::npos) << m;  // this cell is the worst
   o.sum_tolerance = 0.0048;
-  FractionReport r;
-  const Fractions f = extract_fractions(d, o, &r);
+  io::FractionReport r;
+  const Fractions f = io::extract_fractions(d, o, &r);
   EXPECT_NEAR(f(CellId(2), 0) + f(CellId(2), 1), 1.0, 1e-15);
   EXPECT_EQ(r.rescaled_cells, 2);
   EXPECT_NEAR(r.max_sum_error, 0.00473, 1e-12);
@@ -131,7 +131,7 @@ TEST(FractionRepair, ASumAboveOneNamesTheToleranceThatWouldAcceptIt) {
 TEST(FractionRepair, ASumBelowOneOffersAVoidMaterialOrATolerance) {
   const io::MeshData d = cells({{0.5, 0.4687}, {0.5, 0.5}}, ScalarType::float64);
   std::string where;
-  const std::string m = message_of(d, FractionOptions{}, &where);
+  const std::string m = message_of(d, io::FractionOptions{}, &where);
   EXPECT_EQ(where, "cell 0");
   EXPECT_NE(m.find("sum to 0.9687 (0.0313 below 1; sum tolerance 0.0001, the default for "
                    "float64 data): name a void material (--void NAME) to receive the "

@@ -1,4 +1,4 @@
-// Label maps (fractions.h, fractions_from_labels): one material per distinct integer, named
+// Label maps (fractions.h, io::fractions_from_labels): one material per distinct integer, named
 // label_<value> or as given, and the refusals.
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/mesh_data.h"
-#include "hexadapt/mesh/fractions.h"
+#include "hexadapt/io/fractions_reader.h"
 #include "hexadapt/mesh/structured.h"
 
 namespace hexadapt {
@@ -23,15 +23,15 @@ io::MeshData labelled(std::vector<double> labels, io::ScalarType type = io::Scal
   return d;
 }
 
-FractionOptions labels_option() {
-  FractionOptions o;
+io::FractionOptions labels_option() {
+  io::FractionOptions o;
   o.labels = "grain";
   return o;
 }
 
 TEST(LabelFractions, OneMaterialPerLabelInIncreasingOrder) {
   const io::MeshData d = labelled({7, -2, 7, 3});
-  const Fractions f = extract_fractions(d, labels_option(), nullptr, "in.vtu");
+  const Fractions f = io::extract_fractions(d, labels_option(), nullptr, "in.vtu");
   EXPECT_EQ(f.names(), (std::vector<std::string>{"label_-2", "label_3", "label_7"}));
   const std::vector<int> expected{2, 0, 2, 1};
   for (CellId c : id_range<CellId>(f.n_cells())) {
@@ -41,17 +41,17 @@ TEST(LabelFractions, OneMaterialPerLabelInIncreasingOrder) {
 }
 
 TEST(LabelFractions, NamesGivenForSomeLabels) {
-  FractionOptions o = labels_option();
+  io::FractionOptions o = labels_option();
   o.label_names = {{3, "steel"}, {99, "unused"}};
-  const Fractions f = extract_fractions(labelled({7, 3}), o);
+  const Fractions f = io::extract_fractions(labelled({7, 3}), o);
   EXPECT_EQ(f.names(), (std::vector<std::string>{"steel", "label_7"}));
   o.label_names = {{3, "x"}, {7, "x"}};
-  EXPECT_THROW(extract_fractions(labelled({7, 3}), o), OptionError);
+  EXPECT_THROW(io::extract_fractions(labelled({7, 3}), o), OptionError);
 }
 
 TEST(LabelFractions, IntegralFloatsAreLabelsToo) {
   const Fractions f =
-      extract_fractions(labelled({1, 2, 1}, io::ScalarType::float32), labels_option());
+      io::extract_fractions(labelled({1, 2, 1}, io::ScalarType::float32), labels_option());
   EXPECT_EQ(f.n_materials(), 2);
 }
 
@@ -59,7 +59,7 @@ TEST(LabelFractions, BadLabelMapsNameTheFileArrayAndCell) {
   for (const double bad : {1.5, std::nan(""), 1e300, std::numeric_limits<double>::infinity()}) {
     SCOPED_TRACE(bad);
     try {
-      extract_fractions(labelled({1, bad}), labels_option(), nullptr, "in.vtu");
+      io::extract_fractions(labelled({1, bad}), labels_option(), nullptr, "in.vtu");
       FAIL();
     } catch (const InputError& e) {
       EXPECT_EQ(e.file(), "in.vtu");
@@ -68,10 +68,10 @@ TEST(LabelFractions, BadLabelMapsNameTheFileArrayAndCell) {
       EXPECT_NE(e.message().find("not an integer"), std::string::npos) << e.what();
     }
   }
-  FractionOptions o = labels_option();
+  io::FractionOptions o = labels_option();
   o.labels = "nope";
   try {
-    extract_fractions(labelled({1}), o, nullptr, "in.vtu");
+    io::extract_fractions(labelled({1}), o, nullptr, "in.vtu");
     FAIL();
   } catch (const InputError& e) {
     EXPECT_EQ(e.file(), "in.vtu");
@@ -79,13 +79,13 @@ TEST(LabelFractions, BadLabelMapsNameTheFileArrayAndCell) {
   }
   o = labels_option();
   o.max_labels = 2;
-  EXPECT_THROW(extract_fractions(labelled({1, 2, 3}), o), InputError);
+  EXPECT_THROW(io::extract_fractions(labelled({1, 2, 3}), o), InputError);
   o = labels_option();
   o.arrays = {"vf_a"};
-  EXPECT_THROW(extract_fractions(labelled({1}), o), OptionError);
+  EXPECT_THROW(io::extract_fractions(labelled({1}), o), OptionError);
   o = labels_option();
   o.void_material = "air";
-  EXPECT_THROW(extract_fractions(labelled({1}), o), OptionError);
+  EXPECT_THROW(io::extract_fractions(labelled({1}), o), OptionError);
 }
 
 }  // namespace

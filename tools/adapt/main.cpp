@@ -9,6 +9,7 @@
 
 #include "cli.h"
 #include "input_record.h"
+#include "hexadapt/io/fractions_reader.h"
 #include "hexadapt/adapt/adapt.h"
 #include "hexadapt/adapt/adapt_io.h"
 #include "hexadapt/core/error.h"
@@ -276,7 +277,7 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   cli::check_memory("adapting " + std::to_string(in.n_cells()) + " cells",
                     static_cast<double>(in.n_cells()) * cli::adapt_bytes_per_cell,
                     common.memory_limit());
-  const Fractions fractions = extract_fractions(in, args.in.fractions, nullptr, args.input);
+  const Fractions fractions = io::extract_fractions(in, args.in.fractions, nullptr, args.input);
   const IdVector<CellId, int> material =
       read_material_array(in, fractions.n_materials(), args.input);
   const AnyMesh grid = io::to_mesh(in, args.input);

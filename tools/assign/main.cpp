@@ -8,6 +8,7 @@
 
 #include "cli.h"
 #include "input_record.h"
+#include "hexadapt/io/fractions_reader.h"
 #include "hexadapt/assign/assign.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/mesh_file.h"
@@ -104,7 +105,7 @@ cli::Json failure_json(const assign::CorrectionFailure& f, const Fractions& frac
   return j;
 }
 
-cli::Json result_json(const assign::AssignResult& r, const FractionReport& fr) {
+cli::Json result_json(const assign::AssignResult& r, const io::FractionReport& fr) {
   const auto& c = r.correction;
   cli::Json j;
   const FractionTolerances& t = fr.tolerances;
@@ -145,9 +146,9 @@ cli::Json balance_json(const std::vector<assign::MaterialBalance>& balance,
   return out;
 }
 
-// What extract_fractions decided and did: the precision, the tolerances and where they came
+// What io::extract_fractions decided and did: the precision, the tolerances and where they came
 // from, and the repairs.
-std::string fractions_message(const FractionReport& fr) {
+std::string fractions_message(const io::FractionReport& fr) {
   const FractionTolerances& t = fr.tolerances;
   std::ostringstream s;
   s << "fractions stored as " << precision_name(fr.precision);
@@ -210,8 +211,8 @@ int run_assign(const CLI::App& app, Options& o) {
                     o.common.memory_limit());
   times.emplace_back("read", t.seconds());
   t.restart();
-  FractionReport fr;
-  const Fractions fractions = extract_fractions(data, o.in.fractions, &fr, o.input);
+  io::FractionReport fr;
+  const Fractions fractions = io::extract_fractions(data, o.in.fractions, &fr, o.input);
   if (o.in.fractions.labels.empty()) log_info(fractions_message(fr));
   const AnyMesh mesh = io::to_mesh(data, o.input);
   times.emplace_back("fractions", t.seconds());

@@ -7,6 +7,7 @@
 
 #include <unistd.h>
 
+#include "hexadapt/io/fractions_reader.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/core/parallel.h"
 #include "hexadapt/io/atomic_file.h"
@@ -87,7 +88,7 @@ io::WriteOptions CommonOptions::write_options() const {
 }
 
 void add_input_options(CLI::App& app, InputOptions& options) {
-  FractionOptions& f = options.fractions;
+  io::FractionOptions& f = options.fractions;
   app.add_option("--fractions", f.arrays,
                  "Fraction cell arrays, in material order (default: every vf_<material>): one "
                  "argument per array, or names separated by commas; an argument naming an "

@@ -13,7 +13,7 @@
 #include "hexadapt/core/log.h"
 #include "hexadapt/core/timer.h"
 #include "hexadapt/io/mesh_file.h"
-#include "hexadapt/mesh/fractions.h"
+#include "hexadapt/io/fractions_reader.h"
 #include "file_checks.h"
 #include "memory.h"
 
@@ -57,7 +57,7 @@ void add_write_options(CLI::App& app, CommonOptions& options);
 /// tool: --fractions, --void, --value-tolerance, --sum-tolerance, --zero-below, --labels,
 /// --label-names, --plane, --step, --time.
 struct InputOptions {
-  FractionOptions fractions;
+  io::FractionOptions fractions;
   std::string plane = "auto";  ///< auto, xy, yz or xz
   io::ReadOptions time;        ///< --step and --time (its other fields are unused)
   io::ReadOptions read_options() const;

@@ -3,6 +3,7 @@
 #include <array>
 #include <utility>
 
+#include "hexadapt/io/fractions_reader.h"
 #include "hexadapt/core/error.h"
 
 namespace hexadapt::cli {
@@ -21,7 +22,7 @@ Json label_names_json(const std::map<std::int64_t, std::string>& names) {
 
 InputOptions from_json(const Json& j) {
   InputOptions in;
-  FractionOptions& f = in.fractions;
+  io::FractionOptions& f = in.fractions;
   f.arrays = j.at("fractions").get<std::vector<std::string>>();
   f.void_material = j.at("void").get<std::string>();
   f.value_tolerance = j.at("value_tolerance").get<double>();
@@ -38,8 +39,8 @@ InputOptions from_json(const Json& j) {
 
 }  // namespace
 
-std::string input_record(const InputOptions& in, const FractionReport& report) {
-  const FractionOptions& f = in.fractions;
+std::string input_record(const InputOptions& in, const io::FractionReport& report) {
+  const io::FractionOptions& f = in.fractions;
   Json j;
   j["fractions"] = f.arrays;
   j["void"] = f.void_material;

@@ -12,7 +12,7 @@
 
 #include "cli.h"
 #include "hexadapt/io/mesh_data.h"
-#include "hexadapt/mesh/fractions.h"
+#include "hexadapt/io/fractions_reader.h"
 
 namespace hexadapt::cli {
 
@@ -20,7 +20,7 @@ namespace hexadapt::cli {
 inline constexpr const char* input_record_key = "hexadapt_input";
 
 /// The record of reading with `in`, the tolerances being those `report` says were used.
-std::string input_record(const InputOptions& in, const FractionReport& report);
+std::string input_record(const InputOptions& in, const io::FractionReport& report);
 
 /// The reading options of data's record, if it has one; a record that is not one is an
 /// InputError naming `file`.

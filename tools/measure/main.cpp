@@ -19,7 +19,7 @@
 #include "hexadapt/measure/quality_report.h"
 #include "hexadapt/measure/size_report.h"
 #include "hexadapt/measure/target_distance.h"
-#include "hexadapt/mesh/fractions.h"
+#include "hexadapt/io/fractions_reader.h"
 
 namespace {
 
@@ -156,7 +156,7 @@ DiscrepancyRun measure_discrepancy(const Args& a, const cli::InputOptions& readi
                     static_cast<double>(cells) * cli::measure_bytes_per_cell, memory_limit);
   Fractions fractions;
   try {
-    fractions = extract_fractions(run.reference, reading.fractions, nullptr, a.reference);
+    fractions = io::extract_fractions(run.reference, reading.fractions, nullptr, a.reference);
   } catch (const InputError& e) {
     rethrow_with_file(e, a.reference);
   }

@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "cli.h"
+#include "hexadapt/io/fractions_reader.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/mesh_file.h"
 #include "hexadapt/reconstruct/model_io.h"
@@ -210,7 +211,7 @@ int main(int argc, char** argv) {
                       {"--json", common.json}});
     const Timer read;
     io::MeshData data = io::read_mesh(o.input, o.in.read_options());
-    const Fractions f = extract_fractions(data, o.in.fractions, nullptr, o.input);
+    const Fractions f = io::extract_fractions(data, o.in.fractions, nullptr, o.input);
     const std::vector<int> assignment = read_assignment(data, f, o);
     const AnyMesh mesh = io::to_mesh(data, o.input);
     o.read_seconds = read.seconds();

@@ -5,17 +5,16 @@
 #include <sstream>
 
 #include "hexadapt/core/error.h"
-#include "hexadapt/io/mesh_data.h"
-#include "hexadapt/mesh/fractions.h"
+#include "hexadapt/io/fractions_reader.h"
 
-namespace hexadapt {
+namespace hexadapt::io {
 
 namespace {
 
 // Integers a double holds exactly, so labels survive a Float32/Float64 array.
 constexpr double max_label = 9007199254740992.0;  // 2^53
 
-std::int64_t label_of(const io::DataArray& a, std::size_t c, const std::string& file) {
+std::int64_t label_of(const DataArray& a, std::size_t c, const std::string& file) {
   const double v = a.values[c];
   if (!(std::abs(v) <= max_label) || v != std::floor(v)) {
     std::ostringstream msg;
@@ -42,10 +41,10 @@ std::string name_of(const FractionOptions& o, std::int64_t label) {
 
 }  // namespace
 
-Fractions fractions_from_labels(const io::MeshData& data, const FractionOptions& options,
+Fractions fractions_from_labels(const MeshData& data, const FractionOptions& options,
                                 const std::string& file) {
   check_options(options);
-  const io::DataArray* a = data.find_cell_array(options.labels);
+  const DataArray* a = data.find_cell_array(options.labels);
   if (!a)
     throw InputError(file, "",
                      "no cell array named " + quote_token(options.labels) + " (the label map)");
@@ -79,4 +78,4 @@ Fractions fractions_from_labels(const io::MeshData& data, const FractionOptions&
   return f;
 }
 
-}  // namespace hexadapt
+}  // namespace hexadapt::io
