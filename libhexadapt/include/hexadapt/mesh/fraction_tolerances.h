@@ -1,4 +1,4 @@
-// The sum tolerance and trace threshold extract_fractions (fractions.h) judges a file's
+// The sum tolerance and trace threshold extract_fractions (io/fractions_reader.h) judges a file's
 // fractions with: given in the options, or decided here from the precision the fractions
 // were stored in. One place decides them, so every tool reads a file the same way.
 //
