@@ -163,7 +163,8 @@ TEST(GuaranteedMethod, ReportsItsPhasesAndMovesOnThroughEveryRun) {
         }
       }
       auto has = [&](const std::string& phase) {
-        return std::any_of(seen.begin(), seen.end(), [&](const auto& p) { return p.first == phase; });
+        return std::any_of(seen.begin(), seen.end(),
+                           [&](const auto& p) { return p.first == phase; });
       };
       if (method == AdaptMethod::base) {
         for (const char* phase : {"targets", "move", "pillow", "smooth"}) {

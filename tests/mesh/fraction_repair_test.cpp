@@ -74,11 +74,13 @@ TEST(FractionRepair, TheTraceThresholdFollowsThePrecisionUnlessGiven) {
   row[0] = 1.1e-5;
   row[1] = 1 - 1.1e-5;
   io::FractionReport r;
-  const Fractions f32 = io::extract_fractions(cells({row}, ScalarType::float32), io::FractionOptions{}, &r);
+  const Fractions f32 =
+      io::extract_fractions(cells({row}, ScalarType::float32), io::FractionOptions{}, &r);
   EXPECT_EQ(f32(CellId(0), 0), 0.0);
   EXPECT_EQ(r.zeroed_values, 1);
   EXPECT_DOUBLE_EQ(r.tolerances.zero_below, 8 * 12 * static_cast<double>(FLT_EPSILON));
-  const Fractions f64 = io::extract_fractions(cells({row}, ScalarType::float64), io::FractionOptions{}, &r);
+  const Fractions f64 =
+      io::extract_fractions(cells({row}, ScalarType::float64), io::FractionOptions{}, &r);
   EXPECT_NEAR(f64(CellId(0), 0), 1.1e-5, 1e-18);
   EXPECT_EQ(r.zeroed_values, 0);
   io::FractionOptions given;

@@ -264,7 +264,8 @@ int run_assign(const CLI::App& app, Options& o) {
   report["times"] = cli::phase_times_json(times);
   cli::write_report(o.common, report);
   if (r.correction.failure) {
-    log(LogLevel::error, failure_message(*r.correction.failure, fractions, o.assign.correction.keep));
+    log(LogLevel::error,
+        failure_message(*r.correction.failure, fractions, o.assign.correction.keep));
     return cli::target_missed;
   }
   return cli::ok;
