@@ -4,26 +4,27 @@
 
 #include "adapt/adapt_cases.h"
 #include "hexadapt/core/error.h"
+#include "hexadapt/io/material_array.h"
 
 namespace hexadapt {
 namespace {
 
 TEST(AdaptIo, MaterialArrayIsCheckedCellByCell) {
   io::MeshData data = io::from_mesh(make_quad_grid(3, 1));
-  EXPECT_THROW(read_material_array(data, 2, "a.vtu"), InputError);  // missing
+  EXPECT_THROW(io::read_material_array(data, 2, "a.vtu"), InputError);  // missing
   data.set_cell_array({"material", 1, io::ScalarType::int32, {0, 1, 1}});
-  const auto m = read_material_array(data, 2, "a.vtu");
+  const auto m = io::read_material_array(data, 2, "a.vtu");
   EXPECT_EQ(m[CellId(1)], 1);
   data.set_cell_array({"material", 1, io::ScalarType::float64, {0, 1.5, 1}});
   try {
-    read_material_array(data, 2, "a.vtu");
+    io::read_material_array(data, 2, "a.vtu");
     FAIL() << "a fractional material was accepted";
   } catch (const InputError& e) {
     EXPECT_EQ(e.file(), "a.vtu");
     EXPECT_EQ(e.where(), "cell 1");
   }
   data.set_cell_array({"material", 1, io::ScalarType::int32, {0, 2, 1}});
-  EXPECT_THROW(read_material_array(data, 2, "a.vtu"), InputError);
+  EXPECT_THROW(io::read_material_array(data, 2, "a.vtu"), InputError);
 }
 
 TEST(AdaptIo, OutputCarriesMaterialTargetAndDistance) {

@@ -10,6 +10,7 @@
 #include "cli.h"
 #include "input_record.h"
 #include "hexadapt/io/fractions_reader.h"
+#include "hexadapt/io/material_array.h"
 #include "hexadapt/adapt/adapt.h"
 #include "hexadapt/adapt/adapt_io.h"
 #include "hexadapt/core/error.h"
@@ -279,7 +280,7 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
                     common.memory_limit());
   const Fractions fractions = io::extract_fractions(in, args.in.fractions, nullptr, args.input);
   const IdVector<CellId, int> material =
-      read_material_array(in, fractions.n_materials(), args.input);
+      io::read_material_array(in, fractions.n_materials(), args.input);
   const AnyMesh grid = io::to_mesh(in, args.input);
   reconstruct::ModelFile model;
   if (!args.model.empty()) model = read_model(args.model, fractions);

@@ -8,6 +8,7 @@
 
 #include "cli.h"
 #include "hexadapt/io/fractions_reader.h"
+#include "hexadapt/io/material_array.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/mesh_file.h"
 #include "hexadapt/reconstruct/model_io.h"
@@ -29,25 +30,12 @@ struct Options {
 
 std::vector<int> read_assignment(const io::MeshData& data, const Fractions& f,
                                  const Options& o) {
+  if (!o.majority && !data.find_cell_array("material"))
+    throw InputError(o.input, "", "no `material` cell array: run hexadapt-assign first, or "
+                                  "pass --majority to use the majority material");
+  if (!o.majority) return io::read_material_array(data, f.n_materials(), o.input).raw();
   std::vector<int> a(static_cast<std::size_t>(data.n_cells()));
-  const io::DataArray* m = data.find_cell_array("material");
-  if (o.majority || !m) {
-    if (!o.majority)
-      throw InputError(o.input, "", "no `material` cell array: run hexadapt-assign first, or "
-                                    "pass --majority to use the majority material");
-    for (CellId c : id_range<CellId>(data.n_cells())) a[c.idx()] = f.majority(c);
-    return a;
-  }
-  if (m->n_components != 1 || m->n_tuples() != a.size())
-    throw InputError(o.input, "", "the `material` array must have one value per cell");
-  for (std::size_t c = 0; c < a.size(); ++c) {
-    const double v = m->values[c];
-    if (v != std::floor(v) || v < 0 || v >= f.n_materials())
-      throw InputError(o.input, "cell " + std::to_string(c),
-                       "material " + std::to_string(v) + " is not a material index in [0, " +
-                           std::to_string(f.n_materials()) + ")");
-    a[c] = static_cast<int>(v);
-  }
+  for (CellId c : id_range<CellId>(data.n_cells())) a[c.idx()] = f.majority(c);
   return a;
 }
 

@@ -1,5 +1,5 @@
-// The files of the adaptation stage (DESIGN sec. 2): reading an assigned grid (`material`
-// cell array + volume-fraction arrays) and turning an adaptation result into the output mesh
+// The files of the adaptation stage (DESIGN sec. 2): an assigned grid is read with
+// io/fractions_reader.h and io/material_array.h; here an adaptation result becomes the output mesh
 // with its `material` cell array and the `target` and `distance` point arrays (targets can
 // be shown as arrows in ParaView: target - position).
 #pragma once
@@ -12,12 +12,6 @@
 #include "hexadapt/mesh/fractions.h"
 
 namespace hexadapt {
-
-/// The per-cell material of an assigned grid: the `array` cell array, whole numbers in
-/// [0, n_materials). Throws InputError naming `file` and the first bad cell.
-IdVector<CellId, int> read_material_array(const io::MeshData& data, int n_materials,
-                                          const std::string& file,
-                                          const std::string& array = "material");
 
 /// The output mesh: points, cells, `material` (int32) and `local_size` (each cell's local
 /// input size, size_criterion.h) cell arrays, `target` (3 components), `distance` and
