@@ -1,7 +1,6 @@
 // hexadapt-reconstruct: sub-pixel interface reconstruction of an assigned grid (paper
 // sec. 4). Reads the grid with its vf_ arrays and `material` array, writes the pixel mesh
 // (-o), the geometric model (--model) and a report (--json).
-#include <cmath>
 #include <iostream>
 #include <string>
 #include <variant>
