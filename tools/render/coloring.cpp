@@ -25,21 +25,77 @@ std::vector<std::string> split_commas(const std::string& s) {
   return out;
 }
 
-CellColors continuous(const std::vector<double>& values, const std::string& title) {
-  CellColors c;
-  c.has_bar = true;
-  c.bar_title = title;
-  if (!values.empty()) {
-    const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
-    c.bar_min = *lo;
-    c.bar_max = *hi;
+const Rgb below_scale{0.91, 0.16, 0.54};  // off the blue-green-yellow map: stands out
+const Rgb no_value{0.6, 0.6, 0.6};
+
+// The range of the finite values (NaN and infinities have no place on a scale).
+void data_range(const std::vector<double>& values, ColorBar& bar) {
+  for (double v : values) {
+    if (!std::isfinite(v)) continue;
+    bar.data_min = bar.has_values ? std::min(bar.data_min, v) : v;
+    bar.data_max = bar.has_values ? std::max(bar.data_max, v) : v;
+    bar.has_values = true;
   }
+}
+
+Rgb mapped_color(double v, const ColorBar& bar, bool& below, bool& missing) {
+  if (!std::isfinite(v)) {
+    missing = true;
+    return no_value;
+  }
+  if (bar.fixed_scale && v < bar.scale_min) {
+    below = true;
+    return below_scale;
+  }
+  const double span = bar.scale_max - bar.scale_min;
+  return colormap(span > 0 ? (v - bar.scale_min) / span : 0.5);
+}
+
+// Colours the cells on the bar's scale, then finishes the bar: its ticks and the swatches
+// of the colours outside the map that some cell has.
+CellColors continuous(const std::vector<double>& values, ColorBar bar, int max_ticks) {
+  CellColors c;
+  bool below = false, missing = false;
+  for (double v : values) c.cell.push_back(mapped_color(v, bar, below, missing));
+  bar.ticks = nice_ticks(bar.scale_min, bar.scale_max, max_ticks);
+  if (below)
+    bar.special.push_back({"below " + range_label(bar.scale_min, bar.scale_min, bar.scale_max) +
+                               (bar.scale_min == 0 ? " (inverted)" : ""),
+                           below_scale});
+  if (missing) bar.special.push_back({"no value (NaN, inf)", no_value});
+  c.bar = std::move(bar);
   return c;
 }
 
-void fill_continuous(CellColors& c, const std::vector<double>& values) {
-  const double span = c.bar_max - c.bar_min;
-  for (double v : values) c.cell.push_back(colormap(span > 0 ? (v - c.bar_min) / span : 0.5));
+// The scaled Jacobian on a fixed scale: the same colour is the same quality in every
+// picture, whatever the mesh's own range.
+CellColors quality_colors(const io::MeshData& data, const ColoringOptions& options) {
+  const std::vector<double> q = cell_qualities(data).scaled_jacobian;
+  ColorBar bar;
+  bar.title = "scaled Jacobian";
+  bar.fixed_scale = true;
+  bar.scale_min = std::min(0.0, options.threshold);
+  bar.scale_max = 1.0;
+  bar.threshold = options.threshold;
+  data_range(q, bar);
+  return continuous(q, std::move(bar), options.max_ticks);
+}
+
+// Any other cell array over its own range (vectors by their magnitude).
+CellColors field_colors(const io::DataArray& a, std::size_t n, const ColoringOptions& options) {
+  std::vector<double> values(n, 0.0);
+  const auto nc = static_cast<std::size_t>(a.n_components);
+  for (std::size_t c = 0; c < n; ++c) {
+    double s = 0;
+    for (std::size_t k = 0; k < nc; ++k) s += a.values[c * nc + k] * a.values[c * nc + k];
+    values[c] = nc == 1 ? a.values[c] : std::sqrt(s);
+  }
+  ColorBar bar;
+  bar.title = a.name;
+  data_range(values, bar);
+  bar.scale_min = bar.data_min;
+  bar.scale_max = bar.data_max;
+  return continuous(values, std::move(bar), options.max_ticks);
 }
 
 // Each cell mixes the materials' colours in proportion to its fractions.
@@ -125,7 +181,8 @@ std::vector<std::string> material_names(const io::MeshData& data) {
   return names;
 }
 
-CellColors color_cells(const io::MeshData& data, const std::string& field) {
+CellColors color_cells(const io::MeshData& data, const std::string& field,
+                       const ColoringOptions& options) {
   const auto n = static_cast<std::size_t>(data.n_cells());
   if (field == "none") {
     CellColors c;
@@ -133,30 +190,13 @@ CellColors color_cells(const io::MeshData& data, const std::string& field) {
     return c;
   }
   if (field == "fractions") return blended(data);
-  if (field == "quality") {
-    // A fixed top of 1 (the ideal cell) keeps pictures of different meshes comparable.
-    const std::vector<double> q = cell_qualities(data).scaled_jacobian;
-    CellColors c = continuous(q, "scaled Jacobian");
-    c.bar_min = std::min(c.bar_min, 0.0);
-    c.bar_max = 1.0;
-    fill_continuous(c, q);
-    return c;
-  }
+  if (field == "quality") return quality_colors(data, options);
   const io::DataArray* a = data.find_cell_array(field);
   if (!a)
     throw OptionError("--color: no cell array '" + field + "' (available: " +
                       available_arrays(data) + ")");
   if (field == "material" && a->n_components == 1) return categorical(data, *a);
-  std::vector<double> values(n, 0.0);
-  const auto nc = static_cast<std::size_t>(a->n_components);
-  for (std::size_t c = 0; c < n; ++c) {
-    double s = 0;
-    for (std::size_t k = 0; k < nc; ++k) s += a->values[c * nc + k] * a->values[c * nc + k];
-    values[c] = nc == 1 ? a->values[c] : std::sqrt(s);
-  }
-  CellColors c = continuous(values, field);
-  fill_continuous(c, values);
-  return c;
+  return field_colors(*a, n, options);
 }
 
 }  // namespace hexadapt::render

@@ -1,13 +1,15 @@
 // What colour each cell gets: a categorical palette for material indices (with the
 // materials' names for the legend) or a continuous colour map over a cell field (with its
-// range for the colour bar).
+// colour bar: scale, range, ticks, threshold).
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "hexadapt/io/mesh_data.h"
+#include "ticks.h"
 
 namespace hexadapt::render {
 
@@ -18,12 +20,31 @@ struct LegendEntry {
   Rgb color;
 };
 
+/// The colour bar of a continuous map: the values its colours span, the cells' own range,
+/// round ticks, and for quality the threshold.
+struct ColorBar {
+  std::string title;
+  double scale_min = 0, scale_max = 0;  ///< the values of the bottom and top colours
+  /// Quality: the scale is fixed, the same in every picture, rather than the cells' range.
+  bool fixed_scale = false;
+  bool has_values = false;            ///< some cell has a finite value
+  double data_min = 0, data_max = 0;  ///< the range of the cells' finite values
+  std::vector<Tick> ticks;            ///< inside the scale
+  std::optional<double> threshold;    ///< marked on the bar (quality: S_q)
+  /// Colours outside the map, shown under the bar when some cell has them: below a fixed
+  /// scale (inverted cells), no finite value.
+  std::vector<LegendEntry> special;
+};
+
 struct CellColors {
-  std::vector<Rgb> cell;              ///< one per cell of the mesh
-  std::vector<LegendEntry> legend;    ///< categorical: one entry per material
-  bool has_bar = false;               ///< continuous: draw a colour bar
-  std::string bar_title;
-  double bar_min = 0, bar_max = 0;
+  std::vector<Rgb> cell;            ///< one per cell of the mesh
+  std::vector<LegendEntry> legend;  ///< categorical: one entry per material
+  std::optional<ColorBar> bar;      ///< continuous: the colour bar
+};
+
+struct ColoringOptions {
+  double threshold = 0.3;  ///< S_q, marked on the bar of "quality"
+  int max_ticks = 6;       ///< ticks of the colour bar, at most
 };
 
 /// The k-th colour of the categorical palette (cycles after 10).
@@ -36,9 +57,12 @@ Rgb colormap(double t);
 std::vector<std::string> material_names(const io::MeshData& data);
 
 /// Colours by `field`: "material" (categorical), "fractions" (each cell mixes the material
-/// colours by its vf_ fractions), "quality" (scaled Jacobian computed here, bar from
-/// min(0, lowest) to 1), "none" (white), or any cell array (continuous; the magnitude of vector arrays). Throws
-/// OptionError naming the available arrays when `field` is not there.
-CellColors color_cells(const io::MeshData& data, const std::string& field);
+/// colours by its vf_ fractions), "quality" (scaled Jacobian computed here, on the fixed scale
+/// from min(0, threshold) to 1 so that pictures of different meshes compare; cells below it
+/// get their own colour), "none" (white), or any cell array (continuous over the cells' range;
+/// the magnitude of vector arrays). Cells without a finite value are grey. Throws OptionError
+/// naming the available arrays when `field` is not there.
+CellColors color_cells(const io::MeshData& data, const std::string& field,
+                       const ColoringOptions& options = {});
 
 }  // namespace hexadapt::render

@@ -25,7 +25,8 @@ struct Args {
   double z = 0;
   bool z_given = false, edges = false, no_edges = false, targets = false;
   io::Plane plane = io::Plane::automatic;
-  io::ReadOptions time;  ///< --step, --time
+  io::ReadOptions time;              ///< --step, --time
+  render::ColoringOptions coloring;  ///< --threshold
 };
 
 void add_options(CLI::App& app, Args& a) {
@@ -35,9 +36,14 @@ void add_options(CLI::App& app, Args& a) {
       ->required();
   app.add_option("--color", a.color,
                  "Cell colouring: material (legend of material names), fractions (material "
-                 "colours mixed by the vf_ arrays), quality (scaled Jacobian, computed), none, "
-                 "or any cell array (colour bar); auto: material when the file has it, else "
-                 "fractions when it has vf_ arrays, else none")
+                 "colours mixed by the vf_ arrays), quality (scaled Jacobian, computed; colour "
+                 "bar on the fixed scale 0 to 1, the same in every picture, with --threshold "
+                 "marked), none, or any cell array (colour bar over the cells' range); auto: "
+                 "material when the file has it, else fractions when it has vf_ arrays, else none")
+      ->capture_default_str();
+  app.add_option("--threshold", a.coloring.threshold,
+                 "Minimum scaled Jacobian S_q, marked on the colour bar of --color quality")
+      ->check(CLI::Range(-1.0, 1.0))
       ->capture_default_str();
   app.add_option("--z", a.z, "The cutting plane z = value of 3D meshes (default: mid-height)");
   app.add_flag("--edges", a.edges,
@@ -106,6 +112,17 @@ std::string default_title(const Args& a, const io::MeshData& d, const std::strin
   return t;
 }
 
+// The colour bar as drawn: the cells' range, the scale of the colours, ticks, threshold.
+void add_bar_json(cli::Json& json, const render::ColorBar& b) {
+  json["range"] = b.has_values ? cli::Json{b.data_min, b.data_max} : cli::Json(nullptr);
+  json["scale"] = {b.scale_min, b.scale_max};
+  json["fixed_scale"] = b.fixed_scale;
+  cli::Json ticks = cli::Json::array();
+  for (const render::Tick& t : b.ticks) ticks.push_back({{"value", t.value}, {"label", t.label}});
+  json["ticks"] = ticks;
+  if (b.threshold) json["threshold"] = *b.threshold;
+}
+
 bool ends_with_png(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -136,7 +153,7 @@ int render_mesh(const CLI::App& app, const cli::CommonOptions& common, Args& a) 
   const render::Picture pic = cli::timed_phase(times, bar, "slice", [&] {
     render::Picture p;
     p.polygons = render::slice_cells(data, slice);
-    p.colors = render::color_cells(data, field);
+    p.colors = render::color_cells(data, field, a.coloring);
     if (!a.overlay.empty()) p.overlay = render::slice_cells(overlay, slice);
     if (a.targets) p.arrows = render::target_arrows(data, p.polygons, slice);
     return p;
@@ -160,7 +177,7 @@ int render_mesh(const CLI::App& app, const cli::CommonOptions& common, Args& a) 
   json["cells_drawn"] = pic.polygons.size();
   json["overlay_cells_drawn"] = pic.overlay.size();
   json["arrows_drawn"] = pic.arrows.size();
-  if (pic.colors.has_bar) json["range"] = {pic.colors.bar_min, pic.colors.bar_max};
+  if (pic.colors.bar) add_bar_json(json, *pic.colors.bar);
   json["exit_code"] = cli::ok;
   json["times"] = cli::phase_times_json(times);
   cli::write_report(common, json);

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/atomic_file.h"
@@ -151,24 +153,104 @@ void draw_legend(cairo_t* cr, double left, double top, const CellColors& c) {
   }
 }
 
-void draw_bar(cairo_t* cr, double left, double top, double height, const CellColors& c) {
-  text(cr, left, top, c.bar_title);
-  const double bar_top = top + 12, bar_h = height - 24;
-  cairo_pattern_t* gradient = cairo_pattern_create_linear(0, bar_top + bar_h, 0, bar_top);
-  for (int i = 0; i <= 16; ++i) {
-    const Rgb col = colormap(i / 16.0);
-    cairo_pattern_add_color_stop_rgb(gradient, i / 16.0, col[0], col[1], col[2]);
+// The colour bar: value v at height y(v), the bottom colour at scale_min. A single value
+// (constant data) fills the bar with the middle colour, its one tick half-way up.
+struct BarGeometry {
+  double left = 0, top = 0, width = 22, height = 0;
+  double y(const ColorBar& b, double v) const {
+    const double span = b.scale_max - b.scale_min;
+    const double t = span > 0 ? (v - b.scale_min) / span : 0.5;
+    return top + height * (1 - std::clamp(t, 0.0, 1.0));
   }
-  cairo_rectangle(cr, left, bar_top, 22, bar_h);
-  cairo_set_source(cr, gradient);
-  cairo_fill(cr);
-  cairo_pattern_destroy(gradient);
-  cairo_rectangle(cr, left, bar_top, 22, bar_h);
+};
+
+void fill_bar(cairo_t* cr, const BarGeometry& g, const ColorBar& b) {
+  cairo_rectangle(cr, g.left, g.top, g.width, g.height);
+  if (b.scale_max > b.scale_min) {
+    cairo_pattern_t* gradient = cairo_pattern_create_linear(0, g.top + g.height, 0, g.top);
+    for (int i = 0; i <= 16; ++i) {
+      const Rgb col = colormap(i / 16.0);
+      cairo_pattern_add_color_stop_rgb(gradient, i / 16.0, col[0], col[1], col[2]);
+    }
+    cairo_set_source(cr, gradient);
+    cairo_fill(cr);
+    cairo_pattern_destroy(gradient);
+  } else {
+    set_rgb(cr, colormap(0.5));
+    cairo_fill(cr);
+  }
+  cairo_rectangle(cr, g.left, g.top, g.width, g.height);
   cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
   cairo_set_line_width(cr, 0.8);
   cairo_stroke(cr);
-  text(cr, left + 28, bar_top + 10, "max " + number(c.bar_max));
-  text(cr, left + 28, bar_top + bar_h, "min " + number(c.bar_min));
+}
+
+// A label at height y unless it would overlap one already placed (12-pixel text).
+void place_label(cairo_t* cr, std::vector<double>& taken, double x, double y,
+                 const std::string& s) {
+  for (double t : taken)
+    if (std::abs(t - y) < 13) return;
+  taken.push_back(y);
+  text(cr, x, y + 4, s);
+}
+
+// The threshold first, so that its label wins over a tick's: a black line across the bar.
+void draw_ticks(cairo_t* cr, const BarGeometry& g, const ColorBar& b) {
+  std::vector<double> taken;
+  const double label_x = g.left + g.width + 8;
+  if (b.threshold) {
+    const double y = g.y(b, *b.threshold);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_set_line_width(cr, 2);
+    cairo_move_to(cr, g.left - 8, y);
+    cairo_line_to(cr, g.left + g.width + 5, y);
+    cairo_stroke(cr);
+    place_label(cr, taken, label_x, y, "threshold " + number(*b.threshold));
+  }
+  cairo_set_line_width(cr, 1);
+  for (const Tick& t : b.ticks) {
+    const double y = std::round(g.y(b, t.value)) + 0.5;
+    cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+    cairo_move_to(cr, g.left + g.width, y);
+    cairo_line_to(cr, g.left + g.width + 5, y);
+    cairo_stroke(cr);
+    place_label(cr, taken, label_x, y, t.label);
+  }
+}
+
+// Under the bar: whether the scale is fixed, the cells' own range, the colours off the map.
+std::vector<std::string> notes(const ColorBar& b) {
+  std::vector<std::string> lines;
+  if (b.fixed_scale)
+    lines.push_back("fixed scale " + number(b.scale_min) + " to " + number(b.scale_max));
+  if (!b.has_values) {
+    lines.push_back("cells: no finite value");
+    return lines;
+  }
+  lines.push_back("cells min " + range_label(b.data_min, b.data_min, b.data_max));
+  lines.push_back("cells max " + range_label(b.data_max, b.data_min, b.data_max));
+  return lines;
+}
+
+void draw_bar(cairo_t* cr, double left, double top, double height, const ColorBar& b) {
+  text(cr, left, top, b.title);
+  const std::vector<std::string> lines = notes(b);
+  const double below = 16.0 * static_cast<double>(lines.size() + b.special.size()) + 6;
+  const BarGeometry g{left, top + 12, 22, std::max(height - 12 - below, 20.0)};
+  fill_bar(cr, g, b);
+  draw_ticks(cr, g, b);
+  double y = g.top + g.height + 18;
+  for (const std::string& line : lines) {
+    text(cr, left, y, line);
+    y += 16;
+  }
+  for (const LegendEntry& e : b.special) {
+    cairo_rectangle(cr, left, y - 11, 12, 12);
+    set_rgb(cr, e.color);
+    cairo_fill(cr);
+    text(cr, left + 18, y, e.label);
+    y += 16;
+  }
 }
 
 cairo_status_t write_to_stream(void* closure, const unsigned char* data, unsigned int length) {
@@ -201,7 +283,7 @@ void write_png(const Picture& pic, const PictureOptions& options, const std::str
   cairo_paint(cr);
   cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
 
-  const bool panel = pic.colors.has_bar || !pic.colors.legend.empty();
+  const bool panel = pic.colors.bar || !pic.colors.legend.empty();
   const double top = margin + (options.title.empty() ? 0 : title_height);
   const double plot_w = options.width - 2 * margin - (panel ? panel_width : 0);
   const double plot_h = options.height - top - margin;
@@ -225,7 +307,7 @@ void write_png(const Picture& pic, const PictureOptions& options, const std::str
   if (!options.title.empty()) text(cr, margin, margin + 13, options.title, 13);
   const double panel_left = options.width - panel_width;
   if (!pic.colors.legend.empty()) draw_legend(cr, panel_left, top + 4, pic.colors);
-  if (pic.colors.has_bar) draw_bar(cr, panel_left, top + 10, std::min(plot_h, 320.0), pic.colors);
+  if (pic.colors.bar) draw_bar(cr, panel_left, top + 10, std::min(plot_h, 320.0), *pic.colors.bar);
 
   if (options.progress) options.progress("draw", 0.9);
   cairo_surface_flush(surface);
