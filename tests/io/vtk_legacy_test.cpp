@@ -236,10 +236,69 @@ TEST(VtkLegacy, WriterRoundTripKeepsTypesAndHexOrder) {
   ASSERT_NE(cells, std::string::npos);
   EXPECT_EQ(content.substr(cells + 10 + 4 * 3, 4), be<std::int32_t>(3));
   // The title holds whole key=value pairs only: the 400-character options do not fit the
-  // 255 characters, so they are left out rather than cut in the middle.
+  // 255 characters, so they are left out rather than cut in the middle, and the title says so.
   const std::string title = r.metadata.at(0).second;
-  EXPECT_EQ(title, "hexadapt: tool=hexadapt-test");
+  EXPECT_EQ(title, "hexadapt: tool=hexadapt-test; ... 1 more");
   std::remove(path.c_str());
+}
+
+std::string written_legacy(const MeshData& d, const std::string& name) {
+  const std::string path = temp_path(name);
+  write_vtk_legacy(d, path);
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  std::remove(path.c_str());
+  return buffer.str();
+}
+
+// A file made by a second tool from the first one's: both tools' provenance, a long command
+// with characters a title or an XML comment cannot hold as they are.
+std::vector<std::pair<std::string, std::string>> pipeline_metadata(const std::string& command) {
+  return {{"hexadapt_case", "triple-point"},
+          {"hexadapt_tool", "hexadapt-generate"},
+          {"hexadapt_version", "0.1.0"},
+          {"hexadapt_command", "hexadapt-generate triple-point -o in.vtu"},
+          {"hexadapt_tool", "hexadapt-adapt"},
+          {"hexadapt_version", "0.1.0"},
+          {"hexadapt_command", command},
+          {"materials", "left,bottom,top"}};
+}
+
+TEST(VtkLegacy, TitleHasWholePairsThisFilesFirstAndTheCommandIsKeptExactly) {
+  MeshData d = read_vtk_legacy(binary_voxel_file(false), "bin.vtk");
+  const std::string command = "hexadapt-adapt '/data/run 7/case.assign.vtu' --model " +
+                              std::string(200, 'm') + ".vtk --threshold 0.3 -o 'it'\\''s.vtu'";
+  d.metadata = pipeline_metadata(command);
+  const std::string content = written_legacy(d, "provenance.vtk");
+  const std::size_t title_at = content.find('\n') + 1;
+  const std::string title = content.substr(title_at, content.find('\n', title_at) - title_at);
+  EXPECT_LE(title.size(), 255u);
+  // The tool that wrote the file first; the command does not fit, the rest does.
+  EXPECT_EQ(title,
+            "hexadapt: hexadapt_tool=hexadapt-adapt; hexadapt_version=0.1.0; "
+            "materials=left,bottom,top; hexadapt_case=triple-point; "
+            "hexadapt_tool=hexadapt-generate; hexadapt_version=0.1.0; "
+            "hexadapt_command=hexadapt-generate triple-point -o in.vtu; ... 1 more");
+  // The command whole, in the data set's field data, and read back as it was.
+  EXPECT_NE(content.find("\nFIELD FieldData 1\nhexadapt_command 1 " +
+                         std::to_string(command.size()) + " char\n" + command + "\nCELL_DATA"),
+            std::string::npos);
+  const MeshData r = read_vtk_legacy(content, "provenance.vtk");
+  std::vector<std::string> commands;
+  for (const auto& [key, value] : r.metadata)
+    if (key == "hexadapt_command") commands.push_back(value);
+  EXPECT_EQ(commands, std::vector<std::string>{command});
+  EXPECT_EQ(r.points, d.points);
+}
+
+TEST(VtkLegacy, TitleThatFitsHasNoMarkAndNoCommandMeansNoField) {
+  MeshData d = read_vtk_legacy(binary_voxel_file(false), "bin.vtk");
+  d.metadata = {{"hexadapt_tool", "hexadapt-test"}, {"note", "two\nlines"}};
+  const std::string content = written_legacy(d, "short.vtk");
+  EXPECT_NE(content.find("\nhexadapt: hexadapt_tool=hexadapt-test; note=two lines\nBINARY\n"),
+            std::string::npos);
+  EXPECT_EQ(content.find("hexadapt_command"), std::string::npos);
 }
 
 struct Malformed {

@@ -1,6 +1,9 @@
 #include <gtest/gtest.h>
 
 #include <pugixml.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "hexadapt/core/error.h"
 #include "hexadapt/core/parallel.h"
@@ -100,6 +103,81 @@ TEST(VtkXmlWriter, MetadataIsOneValidCommentAndNoStringArray) {
   std::size_t lines = 0;
   for (char ch : c) lines += ch == '\n';
   EXPECT_EQ(lines, 1 + d.metadata.size());
+}
+
+// The strings of a String field-data array written as ascii character codes, each ended by 0.
+std::vector<std::string> string_field(const std::string& file_text, const std::string& name) {
+  const std::string head = "<DataArray type=\"String\" Name=\"" + name + "\"";
+  const std::size_t at = file_text.find(head);
+  if (at == std::string::npos) return {};
+  const std::size_t from = file_text.find('>', at) + 1;
+  std::istringstream codes(file_text.substr(from, file_text.find('<', from) - from));
+  std::vector<std::string> out(1);
+  for (int c = 0; codes >> c;)
+    if (c == 0)
+      out.emplace_back();
+    else
+      out.back() += static_cast<char>(c);
+  out.pop_back();
+  return out;
+}
+
+// A file made by a second tool from the first one's, with a command an XML comment cannot
+// hold as it is.
+MeshData two_commands_mesh() {
+  MeshData d = test::sample_mesh(2, false);
+  d.metadata = {{"hexadapt_tool", "hexadapt-generate"},
+                {"hexadapt_command", "hexadapt-generate disk -o in.vtu"},
+                {"hexadapt_tool", "hexadapt-adapt"},
+                {"hexadapt_command",
+                 "hexadapt-adapt in.vtu --model m.vtk -o 'out dir/a.vtu' --threshold -0.5"}};
+  return d;
+}
+
+TEST(VtkXmlWriter, CommandIsExactInFieldDataAndReadsBackOnce) {
+  const MeshData d = two_commands_mesh();
+  for (bool vts : {false, true}) {
+    const std::string path = test::temp_path(vts ? "cmd.vts" : "cmd.vtu");
+    if (vts)
+      write_vts(d, path);
+    else
+      write_vtu(d, path);
+    const std::string text = test::read_text(path);
+    std::filesystem::remove(path);
+    // The file's own command, as typed: "--" and all (the comment escapes it).
+    EXPECT_EQ(string_field(text, "hexadapt_command"),
+              std::vector<std::string>{d.metadata.back().second});
+    EXPECT_NE(text.find("-\\x2Dmodel"), std::string::npos);
+    // Read back: the entries of the comment, the command not a second time.
+    EXPECT_EQ(read_vtk_xml(text, path).metadata, d.metadata);
+    // A file that lost the comment (saved again by ParaView) still has the command.
+    const std::size_t end = text.find("-->");
+    ASSERT_NE(end, std::string::npos);
+    const std::string no_comment = text.substr(0, text.find("<!--")) + text.substr(end + 3);
+    EXPECT_EQ(read_vtk_xml(no_comment, path).metadata,
+              (std::vector<std::pair<std::string, std::string>>{
+                  {"hexadapt_command", d.metadata.back().second}}));
+  }
+}
+
+TEST(VtkXmlWriter, NoStringFieldsLeavesTheCommandToTheComment) {
+  MeshData d = two_commands_mesh();
+  d.metadata.emplace_back("materials", "left,right");
+  WriteOptions o;
+  o.string_fields = false;
+  const std::string path = test::temp_path("nostrings.vtu");
+  write_vtu(d, path, o);
+  const std::string text = test::read_text(path);
+  std::filesystem::remove(path);
+  EXPECT_EQ(text.find("type=\"String\""), std::string::npos);
+  EXPECT_EQ(text.find("<FieldData"), std::string::npos);
+  EXPECT_EQ(read_vtk_xml(text, path).metadata, d.metadata);
+  write_vtu(d, path);  // both String arrays, in one FieldData
+  const std::string both = test::read_text(path);
+  std::filesystem::remove(path);
+  EXPECT_EQ(both.find("<FieldData"), both.rfind("<FieldData"));
+  EXPECT_EQ(string_field(both, "material_names"), (std::vector<std::string>{"left", "right"}));
+  EXPECT_EQ(string_field(both, "hexadapt_command").size(), 1u);
 }
 
 TEST(VtkXmlWriter, NoMetadataNoComment) {

@@ -1,5 +1,7 @@
 // Command-line conventions every tool shares: --version, usage errors for outputs a tool
 // cannot write, and listings a person can read.
+#include <filesystem>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -90,6 +92,39 @@ TEST_F(CliTool, MaterialNamesWithSpacesAndCommasGoThroughEveryStage) {
   r = run("adapt", path("a.vtu") + " -o " + path("o.vtu") + " --model " + path("m.vtk") +
                        " --correction -q " + arrays);
   EXPECT_EQ(r.code, 0) << r.err;
+}
+
+std::string last_command(const io::MeshData& d) {
+  std::string command;
+  for (const auto& [key, value] : d.metadata)
+    if (key == "hexadapt_command") command = value;
+  return command;
+}
+
+TEST_F(CliTool, RecordedCommandIsExactAndCanBePastedBack) {
+  std::filesystem::create_directories(path("out dir"));
+  // An output name with a space and a quote: typed in quotes, recorded in quotes.
+  const std::string typed =
+      "disk --dims 4,3 -o '" + path("out dir") + "/it'\\''s.EXT' --json " + path("r.json") + " -q";
+  const auto with = [](std::string s, const std::string& ext) {
+    return s.replace(s.find("EXT"), 3, ext);
+  };
+  for (const std::string ext : {"vtu", "vtk"}) {
+    ToolRun r = run("generate", with(typed, ext));
+    ASSERT_EQ(r.code, 0) << r.err;
+    const std::string expected = "hexadapt-generate " + with(typed, ext);
+    const std::string file = path("out dir") + "/it's." + ext;
+    EXPECT_EQ(nlohmann::json::parse(file_content(path("r.json")))["command"], expected);
+    EXPECT_EQ(last_command(io::read_mesh(file)), expected);
+    // Pasted into a shell (run before the tool's --version), it makes the same file again.
+    const std::string first = file_content(file);
+    std::filesystem::remove(file);
+    write("again.sh", expected + "\n");
+    r = run("generate", "--version",
+            "PATH=" + std::string(HEXADAPT_TOOLS_DIR) + ":$PATH sh " + path("again.sh") + " && ");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(file_content(file), first) << ext;
+  }
 }
 
 }  // namespace

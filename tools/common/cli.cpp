@@ -76,14 +76,15 @@ void add_write_options(CLI::App& app, CommonOptions& options) {
       ->check(CLI::IsMember({"none", "boundary", "interfaces", "all"}))
       ->capture_default_str();
   app.add_flag("--no-string-fields", options.no_string_fields,
-               "Leave the material names out of .vtu/.vts field data (a String array, which "
-               "ParaView shows but meshio 5 cannot read)");
+               "Leave the String arrays out of .vtu/.vts field data: the material names and "
+               "the exact command, which ParaView shows but meshio 5 cannot read (the comment "
+               "at the top of the file keeps both, escaped)");
 }
 
 io::WriteOptions CommonOptions::write_options() const {
   io::WriteOptions w;
   w.exodus_sets = io::parse_exodus_sets(exodus_sets);
-  w.material_names_field = !no_string_fields;
+  w.string_fields = !no_string_fields;
   return w;
 }
 
@@ -219,11 +220,25 @@ Progress terminal_progress(const CommonOptions& options) {
   };
 }
 
+namespace {
+// An argument as a POSIX shell reads it back: as it is when it holds only characters no shell
+// treats specially, else in single quotes (a quote inside as '\''), so that the recorded
+// command can be pasted back.
+std::string shell_word(const std::string& arg) {
+  static const char* plain =
+      "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_@%+=:,./-";
+  if (!arg.empty() && arg.find_first_not_of(plain) == std::string::npos) return arg;
+  std::string quoted = "'";
+  for (char c : arg) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+}  // namespace
+
 std::vector<std::pair<std::string, std::string>> provenance(const CLI::App& app) {
   std::string line;
   for (std::size_t i = 0; i < g_args.size(); ++i) {
     if (i) line += ' ';
-    line += i == 0 ? app.get_name() : g_args[i];
+    line += i == 0 ? app.get_name() : shell_word(g_args[i]);
   }
   return {{"hexadapt_tool", app.get_name()},
           {"hexadapt_version", HEXADAPT_VERSION},

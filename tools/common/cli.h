@@ -91,7 +91,9 @@ auto timed_phase(PhaseTimes& times, const Progress& bar, const std::string& name
   return result;
 }
 
-/// Key/value provenance of this run (tool, version, command line) for output metadata.
+/// Key/value provenance of this run for output metadata: hexadapt_tool, hexadapt_version and
+/// hexadapt_command, the command line with each argument quoted for a POSIX shell where it
+/// needs it (spaces, quotes, `$`...), so that it can be pasted back.
 std::vector<std::pair<std::string, std::string>> provenance(const CLI::App& app);
 
 /// The report skeleton every tool fills: tool, version, provenance, timings.

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "hexadapt/core/error.h"
+#include "provenance.h"
 
 namespace hexadapt::io::detail {
 
@@ -140,6 +141,18 @@ void read_section_start(LegacyScanner& s, MeshData& data, Section& sec, bool cel
                       " of the data set");
 }
 
+// Our `hexadapt_command`: the bytes of the command as a one-component char array.
+bool is_command(const DataArray& a) {
+  return a.name == command_key && a.n_components == 1 &&
+         (a.type == ScalarType::int8 || a.type == ScalarType::uint8);
+}
+
+std::string text_of(const DataArray& a) {
+  std::string text;
+  for (double v : a.values) text += static_cast<char>(static_cast<int>(v));
+  return text;
+}
+
 }  // namespace
 
 void read_attributes(LegacyScanner& s, MeshData& data) {
@@ -192,7 +205,11 @@ void read_dataset_field(LegacyScanner& s, MeshData& data) {
   for (std::int64_t k = 0; k < n_arrays; ++k) {
     DataArray a;
     std::string text;
-    if (!read_field_array(s, a, &text) && !a.name.empty()) data.metadata.emplace_back(a.name, text);
+    if (!read_field_array(s, a, &text)) {
+      if (!a.name.empty()) data.metadata.emplace_back(a.name, text);
+    } else if (is_command(a)) {
+      data.metadata.emplace_back(a.name, text_of(a));
+    }
     skip_metadata(s);
   }
 }

@@ -14,7 +14,8 @@ namespace hexadapt::io::detail {
 void read_attributes(LegacyScanner& s, MeshData& data);
 
 /// Reads a data-set level FIELD block (the FIELD keyword already read): string arrays become
-/// metadata (name, first value); numeric ones (e.g. a time value) are checked and dropped.
+/// metadata (name, first value), and so does our `hexadapt_command` char array (its bytes);
+/// other numeric ones (e.g. a time value) are checked and dropped.
 void read_dataset_field(LegacyScanner& s, MeshData& data);
 
 }  // namespace hexadapt::io::detail

@@ -8,9 +8,11 @@
 #include <limits>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 #include "hexadapt/io/atomic_file.h"
 #include "hexadapt/io/vtk_legacy.h"
+#include "provenance.h"
 #include "vtk_cells.h"
 
 namespace hexadapt::io {
@@ -134,20 +136,64 @@ std::string encode_name(const std::string& name) {
   return out.empty() ? std::string("unnamed") : out;
 }
 
-// The title line: provenance as "key=value" pairs, one line of at most 255 characters, with
-// as many whole pairs as fit (a pair cut in the middle read as another key or value).
-std::string title_of(const MeshData& data) {
-  std::string t = "hexadapt";
-  const char* separator = ": ";
-  for (const auto& [key, value] : data.metadata) {
-    const std::string pair = separator + key + "=" + value;
-    if (t.size() + pair.size() > 255) break;
-    t += pair;
-    separator = "; ";
+// The metadata as "key=value" pairs, this file's own provenance first: the entries from the
+// last `hexadapt_tool` on (the tool that wrote the file, its version and command, what it
+// added), then those of the files it read. A line break would end the title: a space.
+std::vector<std::string> title_pairs(const MeshData& data) {
+  const auto& md = data.metadata;
+  std::size_t own = 0;
+  for (std::size_t i = 0; i < md.size(); ++i)
+    if (md[i].first == "hexadapt_tool") own = i;
+  std::vector<std::string> pairs;
+  for (std::size_t k = 0; k < md.size(); ++k) {
+    const auto& [key, value] = md[(own + k) % md.size()];
+    std::string pair = key + "=" + value;
+    std::replace(pair.begin(), pair.end(), '\n', ' ');
+    std::replace(pair.begin(), pair.end(), '\r', ' ');
+    pairs.push_back(std::move(pair));
   }
-  for (char& c : t)
-    if (c == '\n' || c == '\r') c = ' ';
+  return pairs;
+}
+
+// "hexadapt: pair; pair; ..." with the pairs that fit in `limit` characters, whole.
+std::string whole_pairs(const std::vector<std::string>& pairs, std::size_t limit,
+                        std::size_t& left_out) {
+  std::string t = "hexadapt";
+  const std::size_t empty = t.size();
+  left_out = 0;
+  for (const std::string& pair : pairs) {
+    const char* separator = t.size() == empty ? ": " : "; ";
+    if (t.size() + 2 + pair.size() > limit) {
+      ++left_out;
+      continue;
+    }
+    t += separator + pair;
+  }
   return t;
+}
+
+// The title line: as many whole pairs as its 255 characters hold (VTK reads no more); a pair
+// is never cut (its end would read as another value). When some are left out the line ends
+// with "; ... N more"; the command is kept whole in the data-set field data anyway.
+std::string title_of(const MeshData& data) {
+  constexpr std::size_t limit = 255, mark_room = 16;
+  const std::vector<std::string> pairs = title_pairs(data);
+  std::size_t left_out = 0;
+  std::string t = whole_pairs(pairs, limit, left_out);
+  if (left_out == 0) return t;
+  t = whole_pairs(pairs, limit - mark_room, left_out);
+  return t + "; ... " + std::to_string(left_out) + " more";
+}
+
+// The exact command that made the file, as a char array of the data set's field data: VTK
+// and ParaView read it as a vtkCharArray, meshio as int8 field data (it refuses String
+// arrays; after the cells, as there, meshio files it under field_data), our reader back as
+// the `hexadapt_command` entry.
+void write_command_field(BigEndianBuffer& b, const MeshData& data) {
+  const std::string* command = detail::last_command(data);
+  if (command == nullptr || command->empty()) return;
+  b.text(std::string("FIELD FieldData 1\n") + detail::command_key + " 1 " +
+         std::to_string(command->size()) + " char\n" + *command + "\n");
 }
 
 void write_section(BigEndianBuffer& b, const std::vector<DataArray>& arrays, const char* keyword,
@@ -202,6 +248,7 @@ void write_vtk_legacy(const MeshData& data, const std::string& path) {
                       [&](std::size_t e) { return data.points[e / 3][static_cast<int>(e % 3)]; });
   b.text("\n");
   write_cells(b, data);
+  write_command_field(b, data);
   write_section(b, data.cell_data, "CELL_DATA", static_cast<std::size_t>(data.n_cells()));
   write_section(b, data.point_data, "POINT_DATA", data.points.size());
   write_file_atomically(path, b.str());

@@ -3,6 +3,7 @@
 #include "hexadapt/core/error.h"
 #include "hexadapt/core/log.h"
 #include "hexadapt/io/vtk_xml.h"
+#include "provenance.h"
 #include "vtk_xml_array.h"
 #include "vtk_xml_comment.h"
 
@@ -42,9 +43,14 @@ void read_arrays(const VtkXmlDocument& doc, const pugi::xml_node& group, std::si
   }
 }
 
-void read_field_data(const VtkXmlDocument& doc, const pugi::xml_node& field, MeshData& data) {
+// String arrays become metadata entries. Our own `hexadapt_command` repeats the last command
+// of the metadata comment: it is taken only from a file that lost the comment (saved again by
+// ParaView, which keeps field data).
+void read_field_data(const VtkXmlDocument& doc, const pugi::xml_node& field, bool have_comment,
+                     MeshData& data) {
   for (const pugi::xml_node e : field.children("DataArray")) {
     if (std::string(e.attribute("type").as_string()) != "String") continue;
+    if (have_comment && std::string(e.attribute("Name").as_string()) == command_key) continue;
     const std::vector<std::string> values = read_string_array(doc, e);
     std::string joined;
     for (std::size_t k = 0; k < values.size(); ++k) joined += (k ? "\n" : "") + values[k];
@@ -53,14 +59,16 @@ void read_field_data(const VtkXmlDocument& doc, const pugi::xml_node& field, Mes
 }
 
 // Our metadata comment, before <VTKFile> or among its children (the first one found).
-void read_metadata_comment(const VtkXmlDocument& doc, MeshData& data) {
+// Returns whether there was one.
+bool read_metadata_comment(const VtkXmlDocument& doc, MeshData& data) {
   for (const pugi::xml_node parent : {doc.xml.root(), doc.root})
     for (const pugi::xml_node c : parent.children())
       if (c.type() == pugi::node_comment)
         if (auto entries = parse_metadata_comment(c.value())) {
           for (auto& entry : *entries) data.metadata.push_back(std::move(entry));
-          return;
+          return true;
         }
+  return false;
 }
 
 }  // namespace
@@ -70,8 +78,8 @@ void read_attributes(const VtkXmlDocument& doc, const pugi::xml_node& dataset,
                      MeshData& data) {
   read_arrays(doc, piece.child("PointData"), n_points, data.point_data);
   read_arrays(doc, piece.child("CellData"), n_cells, data.cell_data);
-  read_metadata_comment(doc, data);
-  read_field_data(doc, dataset.child("FieldData"), data);
+  const bool have_comment = read_metadata_comment(doc, data);
+  read_field_data(doc, dataset.child("FieldData"), have_comment, data);
 }
 
 }  // namespace detail

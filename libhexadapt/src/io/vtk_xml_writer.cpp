@@ -9,6 +9,7 @@
 #include "hexadapt/io/vtk_xml.h"
 #include "hexadapt/mesh/structured.h"
 #include "material_names.h"
+#include "provenance.h"
 #include "vtk_xml_comment.h"
 #include "vtk_xml_encode.h"
 #include "vtk_xml_scalar.h"
@@ -112,23 +113,14 @@ class XmlFile {
         .set_value(detail::metadata_comment(d.metadata).c_str());
   }
 
-  // The material names as a String field-data array, the form ParaView shows (Information
-  // panel, spreadsheet view): ascii character codes, each string ended by a 0.
-  void add_material_names(const MeshData& d, const WriteOptions& options) {
+  // String field-data arrays, the form ParaView shows (Information panel, spreadsheet view):
+  // the material names, one per material index, and the exact command that made the file.
+  void add_string_fields(const MeshData& d, const WriteOptions& options) {
+    if (!options.string_fields) return;
     const std::vector<std::string> names = detail::material_names(d);
-    if (!options.material_names_field || names.empty()) return;
-    std::string codes;
-    for (const std::string& name : names) {
-      for (char c : name) codes += std::to_string(static_cast<unsigned char>(c)) + " ";
-      codes += "0 ";
-    }
-    codes.pop_back();
-    pugi::xml_node a = dataset_.prepend_child("FieldData").append_child("DataArray");
-    a.append_attribute("type") = "String";
-    a.append_attribute("Name") = "material_names";
-    a.append_attribute("NumberOfTuples") = static_cast<unsigned long long>(names.size());
-    a.append_attribute("format") = "ascii";
-    a.append_child(pugi::node_pcdata).set_value(codes.c_str());
+    if (!names.empty()) add_string_field("material_names", names);
+    if (const std::string* command = detail::last_command(d))
+      add_string_field(detail::command_key, {*command});
   }
 
   void write(const std::string& path) {
@@ -178,6 +170,24 @@ class XmlFile {
     }
   }
 
+  // One String array: ascii character codes, each string ended by a 0.
+  void add_string_field(const char* name, const std::vector<std::string>& strings) {
+    if (!field_data_) field_data_ = dataset_.prepend_child("FieldData");
+    std::string codes;
+    for (const std::string& s : strings) {
+      for (char c : s) codes += std::to_string(static_cast<unsigned char>(c)) + " ";
+      codes += "0 ";
+    }
+    codes.pop_back();
+    pugi::xml_node a = field_data_.append_child("DataArray");
+    a.append_attribute("type") = "String";
+    a.append_attribute("Name") = name;
+    a.append_attribute("NumberOfTuples") = static_cast<unsigned long long>(strings.size());
+    a.append_attribute("format") = "ascii";
+    a.append_child(pugi::node_pcdata).set_value(codes.c_str());
+  }
+
+  pugi::xml_node field_data_;
   detail::Encoding encoding_;
   std::vector<Encoded> arrays_;
   std::size_t offset_ = 0;
@@ -221,7 +231,7 @@ void write_vtu(const MeshData& data, const std::string& path, const WriteOptions
   check_writable(data, path);
   XmlFile f("UnstructuredGrid", options, largest_array(data));
   f.add_metadata(data);
-  f.add_material_names(data, options);
+  f.add_string_fields(data, options);
   pugi::xml_node piece = f.dataset().append_child("Piece");
   piece.append_attribute("NumberOfPoints") = static_cast<unsigned long long>(data.points.size());
   piece.append_attribute("NumberOfCells") = static_cast<long long>(data.n_cells());
@@ -244,7 +254,7 @@ void write_vts(const MeshData& data, const std::string& path, const WriteOptions
   XmlFile f("StructuredGrid", options, largest_array(data));
   f.dataset().append_attribute("WholeExtent") = extent.c_str();
   f.add_metadata(data);
-  f.add_material_names(data, options);
+  f.add_string_fields(data, options);
   pugi::xml_node piece = f.dataset().append_child("Piece");
   piece.append_attribute("Extent") = extent.c_str();
   add_attributes(f, piece, data);

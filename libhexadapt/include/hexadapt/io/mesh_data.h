@@ -39,7 +39,8 @@ struct MeshData {
   std::vector<DataArray> point_data;
   /// Provenance and other key/value strings (tool, version, options). Written as an XML
   /// comment in .vtu/.vts, as key=value pairs in the legacy .vtk title line (whole pairs, as
-  /// many as its 255 characters hold) and as Exodus II info records.
+  /// many as its 255 characters hold) and as Exodus II info records; the last
+  /// `hexadapt_command` also exactly as field data in .vtu/.vts/.vtk (vtk_xml.h, vtk_legacy.h).
   std::vector<std::pair<std::string, std::string>> metadata;
   /// Cells per axis when the source was a structured data set ({0,0,0} otherwise); writers
   /// of structured formats use it, others ignore it.

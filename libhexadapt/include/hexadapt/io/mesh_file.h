@@ -43,9 +43,9 @@ struct WriteOptions {
   bool compress = true;              ///< zlib-compress .vtu data blocks
   std::size_t compress_above = 1 << 16;  ///< bytes: smaller arrays are written raw
   ExodusSets exodus_sets = ExodusSets::all;  ///< side and node sets of .exo/.e/.g files
-  /// .vtu/.vts: the material names as a String field-data array `material_names` (ParaView
-  /// shows it; meshio 5 refuses String arrays and cannot read such a file).
-  bool material_names_field = true;
+  /// .vtu/.vts: String field-data arrays, which ParaView shows but meshio 5 refuses (it
+  /// cannot read such a file): `material_names` and the exact `hexadapt_command`.
+  bool string_fields = true;
 };
 
 /// "none", "boundary", "interfaces" or "all"; throws OptionError otherwise.

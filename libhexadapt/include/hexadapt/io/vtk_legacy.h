@@ -3,8 +3,8 @@
 // OFFSETS/CONNECTIVITY layout), with CELL_DATA / POINT_DATA as SCALARS, VECTORS, NORMALS,
 // TENSORS or FIELD arrays (names and element types kept; METADATA blocks and lookup tables
 // skipped; bit arrays refused); write binary UNSTRUCTURED_GRID.
-// Data-set level string field data becomes MeshData::metadata, as does the title line
-// ("title"). Every count is checked against the bytes left before anything is allocated.
+// Data-set level string field data becomes MeshData::metadata, as do the title line
+// ("title") and our `hexadapt_command` char array. Every count is checked against the bytes left before anything is allocated.
 #pragma once
 
 #include <string>
@@ -20,8 +20,13 @@ namespace hexadapt::io {
 MeshData read_vtk_legacy(std::string_view content, const std::string& file,
                          const ReadOptions& options = {});
 
-/// Writes a binary legacy UNSTRUCTURED_GRID (big-endian, as the format requires); the title
-/// line carries the provenance metadata. Atomic. Throws IoError.
+/// Writes a binary legacy UNSTRUCTURED_GRID (big-endian, as the format requires). The title
+/// line carries the metadata as "key=value" pairs, this file's own provenance first (from the
+/// last `hexadapt_tool` entry on), as many whole pairs as its 255 characters hold, ending with
+/// "; ... N more" when N were left out. The last `hexadapt_command` entry, the command exactly
+/// as typed, is also kept whole as a char array `hexadapt_command` in the data set's FIELD
+/// (VTK: vtkCharArray; meshio: int8 field data; read back here as that metadata entry).
+/// Atomic. Throws IoError.
 void write_vtk_legacy(const MeshData& data, const std::string& path);
 
 }  // namespace hexadapt::io

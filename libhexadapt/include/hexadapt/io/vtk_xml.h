@@ -37,12 +37,15 @@ namespace hexadapt::io {
 // Everything else, '&' and '>' included, is written as it is. The reader accepts the comment
 // before <VTKFile> or as a child of it.
 //
-// Material names. When the metadata names the materials (`materials` or
+// String field data. When the metadata names the materials (`materials` or
 // `hexadapt_materials`, comma-separated), they are also written as a String field-data array
 // `material_names`, one string per material index, so that ParaView shows them next to the
-// `material` index array. meshio 5 refuses String arrays (it cannot read such a file):
-// WriteOptions::material_names_field = false leaves the array out. The reader returns String
-// field-data arrays as metadata entries, one line per string.
+// `material` index array. The last `hexadapt_command` entry (the command that made the file;
+// the comment escapes its "--") is written exactly as a String array `hexadapt_command`, one
+// string, which ParaView shows and a user can paste back into a shell. meshio 5 refuses
+// String arrays (it cannot read such a file): WriteOptions::string_fields = false leaves both
+// out. The reader returns String field-data arrays as metadata entries, one line per string,
+// except `hexadapt_command` when the file has our comment (the comment holds it already).
 
 /// Parses a whole XML VTK file held in memory; `file` names it in error messages. The data
 /// set type is taken from the VTKFile element; a file must hold one Piece. Cells: quads,
