@@ -78,9 +78,9 @@ std::vector<NodeId> nodes_around_moves(const M& mesh, const std::vector<Vec3>& b
 // Controlled moves alternating with quality-preserving smoothing until a round no longer
 // brings the nodes closer to their interface surfaces by more than the tolerance; keeps the
 // best round (each reported as "move-smooth k", k counted after `rounds_before`). Nodes that
-// slid onto their surface still try their target each round: moving
-// only the nodes off their surface was three times faster in 3D, but left the 2D cases'
-// discrepancy 9 % higher and ten times the distance to the targets.
+// slid onto their surface still try their target each round: moving only the nodes off their
+// surface was three times faster in 3D, but left the 2D cases' discrepancy 9 % higher and
+// ten times the distance to the targets.
 template <class M>
 int move_smooth_loop(M& mesh, const Targets& targets,
                      const IdVector<NodeId, NodeConstraint>& sliding, const MoveOptions& mo,
@@ -317,16 +317,16 @@ void run_layers(const M& grid, const IdVector<CellId, int>& material, const Targ
   const std::vector<NodeId> failed = pillow_cavities(mesh, out_material, targets, size, first,
                                                      n_materials, r, options);
   record_step(r, mesh, "cavity", clock, options.progress, 0.4, "");  // the loop reports
-  // The loop's rounds report within what is left of the run.
-  AdaptOptions loop_options = options;
-  loop_options.progress = progress_part(options.progress, 0.4, 1.0);
+  // The loop's rounds report within what is left of the run (after a probe, its second half).
+  AdaptOptions rest = options;
+  rest.progress = progress_part(options.progress, 0.4, 1.0);
 
   const auto sliding = sliding_constraints(boundary_constraints(mesh, options.boundary), targets);
   if (mend) {
     // No cell starts failing on the way, and what still fails after a few rounds of the loop
     // and the local smoothing is what fails at the end: a run to be discarded stops there.
     if (pillows_cavities(layers)) throw InternalError("mending a first layer with cavities");
-    AdaptOptions probe = loop_options;
+    AdaptOptions probe = options;
     probe.max_loops = std::min(options.max_loops, mend_probe_loops);
     probe.progress = progress_part(options.progress, 0.4, 0.5);
     r.loops = move_smooth_loop(mesh, targets, sliding, mo, size, probe);
@@ -337,9 +337,8 @@ void run_layers(const M& grid, const IdVector<CellId, int>& material, const Targ
       record_step(r, mesh, "move-smooth", clock, options.progress, 1.0, "");
       return;  // the caller discards the run
     }
-    loop_options.progress = progress_part(options.progress, 0.5, 1.0);
+    rest.progress = progress_part(options.progress, 0.5, 1.0);
   }
-  AdaptOptions rest = loop_options;
   rest.max_loops = options.max_loops - r.loops;
   r.loops += move_smooth_loop(mesh, targets, sliding, mo, size, rest, r.loops);
   record_step(r, mesh, "move-smooth", clock, options.progress, 1.0, "");
