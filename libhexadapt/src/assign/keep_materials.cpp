@@ -3,24 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "hexadapt/assign/material_balance.h"
 #include "hexadapt/mesh/cell_complex.h"
 
 namespace hexadapt::assign {
 
 namespace {
-
-// How many cells of the grid's mean volume material m's input volume fills, at least one.
-template <class M>
-index_t cells_for(const M& mesh, const Fractions& f, int m) {
-  double material = 0, total = 0;
-  for (CellId c : id_range<CellId>(mesh.n_cells())) {
-    const double v = mesh.cell_volume(c);
-    material += f(c, m) * v;
-    total += v;
-  }
-  const double mean = total / static_cast<double>(mesh.n_cells());
-  return std::max<index_t>(1, static_cast<index_t>(std::llround(material / mean)));
-}
 
 // Material m's cells, most present first (ties to the lowest id), where it is present.
 std::vector<CellId> by_presence(const Fractions& f, int m) {
@@ -37,15 +25,20 @@ std::vector<CellId> by_presence(const Fractions& f, int m) {
 template <class M>
 std::vector<KeptMaterial> keep_vanished_materials(const M& mesh, const Fractions& fractions,
                                                   Labels& labels) {
-  std::vector<index_t> count(static_cast<std::size_t>(fractions.n_materials()), 0);
-  for (int m : labels) ++count[static_cast<std::size_t>(m)];
-  std::vector<char> vanished(count.size(), 0);
-  for (int m = 0; m < fractions.n_materials(); ++m)
-    vanished[static_cast<std::size_t>(m)] = count[static_cast<std::size_t>(m)] == 0;
+  const std::vector<MaterialBalance> balance = material_balance(mesh, fractions, labels);
+  std::vector<index_t> count;
+  std::vector<char> vanished;
+  for (const MaterialBalance& b : balance) {
+    count.push_back(b.assigned_cells);
+    vanished.push_back(b.vanished());
+  }
   std::vector<KeptMaterial> kept;
   for (int m = 0; m < fractions.n_materials(); ++m) {
     if (!vanished[static_cast<std::size_t>(m)]) continue;
-    const index_t want = cells_for(mesh, fractions, m);
+    // As many cells of the grid's mean volume as the material's input volume fills.
+    const double share = balance[static_cast<std::size_t>(m)].input_share;
+    const index_t want = std::max<index_t>(
+        1, static_cast<index_t>(std::llround(share * static_cast<double>(mesh.n_cells()))));
     KeptMaterial k{m, 0};
     for (CellId c : by_presence(fractions, m)) {
       if (k.cells == want) break;
