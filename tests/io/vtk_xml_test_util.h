@@ -1,6 +1,8 @@
 // Helpers of the VTK XML tests: small meshes with arrays, files as strings.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -18,8 +20,12 @@ inline std::string read_text(const std::string& path) {
   return s.str();
 }
 
+// Named after the running test too: ctest runs the tests of one file in parallel processes,
+// which must not write, read and remove the same file.
 inline std::string temp_path(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("hexadapt_xml_" + name)).string();
+  const ::testing::TestInfo* t = ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::string test = t ? std::string(t->test_suite_name()) + "." + t->name() + "_" : "";
+  return (std::filesystem::temp_directory_path() / ("hexadapt_xml_" + test + name)).string();
 }
 
 // A perturbed n x n x n hex grid (or n x n quads) with one array of every type.
