@@ -129,5 +129,49 @@ TEST(CellSize, ShapeAndSizeInOnePassAreTheTwoApart) {
   EXPECT_EQ(hex_shape_and_size(hexes[201]).edges.min, 0);
 }
 
+// What a cell can reach while one corner moves: over jittered boxes and quads, no position of
+// that corner scores above the bound (nor gets a longer shortest edge than the edges away
+// from it), and a cell whose worst corner is away from the moving one is at its bound.
+template <std::size_t N>
+void check_bounds(const std::vector<std::array<Vec3, N>>& cells, double (*sj)(const std::array<Vec3, N>&),
+                  ShapeAndSizeBound (*bound)(const std::array<Vec3, N>&, std::size_t),
+                  EdgeLengths (*edges)(const std::array<Vec3, N>&)) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> step(-1.5, 1.5);
+  int at_bound = 0;
+  for (const auto& p : cells)
+    for (std::size_t moving = 0; moving < N; ++moving) {
+      const ShapeAndSizeBound b = bound(p, moving);
+      at_bound += sj(p) == b.scaled_jacobian;
+      for (int k = 0; k < 40; ++k) {
+        std::array<Vec3, N> q = p;
+        q[moving] += Vec3(step(rng), step(rng), N == 8 ? step(rng) : 0.0);
+        EXPECT_LE(sj(q), b.scaled_jacobian);
+        EXPECT_LE(edges(q).min, b.shortest_edge);
+      }
+    }
+  EXPECT_GT(at_bound, static_cast<int>(cells.size()) / 2);  // the bound is often reached
+}
+
+TEST(CellSize, NoMoveOfOneCornerRaisesACellAboveItsBound) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> jitter(-0.4, 0.4);
+  std::vector<std::array<Vec3, 8>> hexes;
+  std::vector<std::array<Vec3, 4>> quads;
+  for (int k = 0; k < 60; ++k) {
+    hexes.push_back(box(1, 2, 0.5));
+    for (Vec3& x : hexes.back()) x += Vec3(jitter(rng), jitter(rng), jitter(rng));
+    quads.push_back(rectangle(1, 2));
+    for (Vec3& x : quads.back()) x += Vec3(jitter(rng), jitter(rng), 0);
+  }
+  check_bounds<8>(hexes, hex_scaled_jacobian, hex_bound_moving, hex_edge_lengths);
+  check_bounds<4>(quads, quad_scaled_jacobian, quad_bound_moving, quad_edge_lengths);
+  // A collapsed edge away from the moving corner caps the shortest edge at 0.
+  std::array<Vec3, 8> flat = box(1, 1, 1);
+  flat[7] = flat[6];
+  EXPECT_EQ(hex_bound_moving(flat, 0).shortest_edge, 0);
+  EXPECT_EQ(hex_bound_moving(flat, 0).scaled_jacobian, 1);  // no direction there: no bound
+}
+
 }  // namespace
 }  // namespace hexadapt

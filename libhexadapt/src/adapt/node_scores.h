@@ -49,7 +49,7 @@ class NodeScores {
  public:
   /// The scores of n's cells at its current position (cached or computed, and cached).
   NodeScores(const M& mesh, NodeId n, const SizeCriterion& size, CellScoreCache& cache)
-      : mesh_(mesh), size_(size) {
+      : mesh_(mesh), size_(size), node_(n) {
     const Span<CellId> cells = mesh.node_cells(n);
     cells_.reserve(cells.size());
     for (CellId c : cells) {
@@ -86,6 +86,19 @@ class NodeScores {
     sort_worst_first();
   }
 
+  /// Whether a cell scoring at most `at` now cannot score above it wherever the node goes
+  /// (cell_score_bound): then no position raises the local minimum above `at`.
+  bool capped(double at) const {
+    for (const Entry& e : cells_) {
+      if (e.current > at) break;  // worst first
+      const auto& nodes = mesh_.cell_nodes(e.cell);
+      const auto k = static_cast<std::size_t>(
+          std::find(nodes.begin(), nodes.end(), node_) - nodes.begin());
+      if (cell_score_bound(mesh_, e.cell, size_, k) <= at) return true;
+    }
+    return false;
+  }
+
   /// Records the current scores in the cache (the node has left or kept its position).
   void store(CellScoreCache& cache) const {
     for (const Entry& e : cells_) cache.score[e.cell] = e.current;
@@ -107,6 +120,7 @@ class NodeScores {
 
   const M& mesh_;
   const SizeCriterion& size_;
+  NodeId node_;
   std::vector<Entry> cells_;  ///< lowest current score first
 };
 

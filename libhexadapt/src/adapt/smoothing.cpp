@@ -46,6 +46,9 @@ double laplacian_step(M& mesh, NodeId n, Vec3 d, const SmoothOptions& options,
   return -1;
 }
 
+// The least rise of the local minimum the pattern search takes as an improvement.
+constexpr double search_gain = 1e-9;
+
 // Compass search on the local minimum quality: steps along +-x, +-y (+-z), projected on the
 // constraint, keeping the best strict improvement, halving the step when none improves.
 template <class M>
@@ -55,9 +58,17 @@ double pattern_search(M& mesh, NodeId n, const std::vector<NodeId>& around,
   double h = 0.25 * mean_edge_length(mesh, n, around);
   const double start = q;
   double best = start;
+  bool capped_checked = false;  // at this best
   for (int level = 0; level < levels; ++level, h *= 0.5) {
     bool improved = true;
     while (improved) {
+      // A worst cell that no position of n raises (its worst corner or its shortest edge is
+      // away from n) ends the search: most searches ended so, after trying every step.
+      if (!capped_checked && scores.capped(best + search_gain)) {
+        q = best;
+        return best - start;
+      }
+      capped_checked = true;
       improved = false;
       const Vec3 p = mesh.point(n);
       Vec3 best_p = p;
@@ -66,12 +77,13 @@ double pattern_search(M& mesh, NodeId n, const std::vector<NodeId>& around,
           const Vec3 d = constraint.project(sign * h * Vec3::Unit(axis));
           if (!(d.norm() > 1e-3 * h)) continue;
           mesh.set_point(n, p + d);
-          const double trial = scores.trial(best + 1e-9);
-          if (trial > best + 1e-9 && !scores.sinks_below(floor)) {
+          const double trial = scores.trial(best + search_gain);
+          if (trial > best + search_gain && !scores.sinks_below(floor)) {
             scores.accept_trial();
             best = trial;
             best_p = p + d;
             improved = true;
+            capped_checked = false;
           }
         }
       mesh.set_point(n, best_p);

@@ -44,6 +44,24 @@ HexShapeAndSize hex_shape_and_size(const std::array<Vec3, 8>& p) {
   return {quality_detail::hex_scaled_jacobian(p, e), edge_lengths(e.length)};
 }
 
+ShapeAndSizeBound hex_bound_moving(const std::array<Vec3, 8>& p, std::size_t moving) {
+  const quality_detail::HexEdges e = quality_detail::hex_edges(p);
+  ShapeAndSizeBound b{quality_detail::hex_scaled_jacobian_bound(e, moving),
+                      std::numeric_limits<double>::infinity()};
+  for (std::size_t k = 0; k < 12; ++k) {
+    const auto& ends = ref_hex::edges[k];
+    if (static_cast<std::size_t>(ends[0]) != moving && static_cast<std::size_t>(ends[1]) != moving)
+      b.shortest_edge = std::min(b.shortest_edge, e.length[k]);
+  }
+  return b;
+}
+
+ShapeAndSizeBound quad_bound_moving(const std::array<Vec3, 4>& p, std::size_t moving) {
+  const std::size_t v = (moving + 1) % 4, w = (moving + 2) % 4, x = (moving + 3) % 4;
+  return {quality_detail::quad_scaled_jacobian_bound(p, moving),
+          std::min((p[w] - p[v]).norm(), (p[x] - p[w]).norm())};
+}
+
 EdgeLengths quad_edge_lengths(const std::array<Vec3, 4>& p) {
   std::array<double, 4> lengths;
   for (std::size_t v = 0; v < 4; ++v) lengths[v] = (p[(v + 1) % 4] - p[v]).norm();

@@ -63,6 +63,14 @@ inline std::size_t hex_edge_index(std::size_t v, int axis) {
 /// hex_scaled_jacobian(p) from p's edges (scaled_jacobian.cpp).
 double hex_scaled_jacobian(const std::array<Vec3, 8>& p, const HexEdges& e);
 
+/// The largest scaled Jacobian the hex can have while only its corner `moving` moves: the
+/// smallest Jacobian of the four corners whose frames do not hold it, computed as
+/// hex_scaled_jacobian computes them (1 when one of their edges has no direction). The other
+/// corners and the centre only lower the score.
+double hex_scaled_jacobian_bound(const HexEdges& e, std::size_t moving);
+/// The same for a quad: the Jacobian of the corner opposite `moving`.
+double quad_scaled_jacobian_bound(const std::array<Vec3, 4>& p, std::size_t moving);
+
 /// The longest of the 12 edges: the length unit of the degeneracy test.
 inline double hex_scale(const std::array<Vec3, 8>& p) {
   double s = 0;

@@ -19,6 +19,27 @@ bool scaled_det(const Vec3& a, const Vec3& b, const Vec3& c, double scale, doubl
   return std::isfinite(out);
 }
 
+// Corner v's Jacobian from the unit edges (hex_corner_frame): its edges along x, y, z
+// pointing away from v, x and y swapped at the corners of odd parity.
+[[gnu::always_inline]] inline double corner_jacobian(const std::array<Vec3, 12>& unit,
+                                                     std::size_t v) {
+  std::array<Vec3, 3> f;
+  for (int axis = 0; axis < 3; ++axis) {
+    const Vec3& u = unit[quality_detail::hex_edge_index(v, axis)];
+    f[static_cast<std::size_t>(axis)] = (v >> axis) & 1u ? Vec3(-u) : u;
+  }
+  const unsigned parity = (v & 1u) ^ ((v >> 1) & 1u) ^ ((v >> 2) & 1u);
+  if (parity) std::swap(f[0], f[1]);
+  return f[0].dot(f[1].cross(f[2]));
+}
+
+// The unit vector of edge k of p; false when the edge has no direction.
+bool unit_edge(const quality_detail::HexEdges& e, std::size_t k, Vec3& out) {
+  if (!(e.length[k] > 0) || !std::isfinite(e.length[k])) return false;
+  out = e.vec[k] / e.length[k];
+  return true;
+}
+
 }  // namespace
 
 double quality_detail::hex_scaled_jacobian(const std::array<Vec3, 8>& p,
@@ -35,17 +56,8 @@ double quality_detail::hex_scaled_jacobian(const std::array<Vec3, 8>& p,
     if (!(e.length[k] > tiny)) return -1.0;  // also catches NaN
     unit[k] = e.vec[k] / e.length[k];
   }
-  // Corner v's frame (hex_corner_frame): its edges along x, y, z pointing away from v,
-  // x and y swapped at the corners of odd parity.
   for (std::size_t v = 0; v < 8; ++v) {
-    std::array<Vec3, 3> f;
-    for (int axis = 0; axis < 3; ++axis) {
-      const Vec3& u = unit[quality_detail::hex_edge_index(v, axis)];
-      f[static_cast<std::size_t>(axis)] = (v >> axis) & 1u ? Vec3(-u) : u;
-    }
-    const unsigned parity = (v & 1u) ^ ((v >> 1) & 1u) ^ ((v >> 2) & 1u);
-    if (parity) std::swap(f[0], f[1]);
-    const double j = f[0].dot(f[1].cross(f[2]));
+    const double j = corner_jacobian(unit, v);
     if (!std::isfinite(j)) return -1.0;
     worst = std::min(worst, j);
   }
@@ -54,6 +66,23 @@ double quality_detail::hex_scaled_jacobian(const std::array<Vec3, 8>& p,
 
 double hex_scaled_jacobian(const std::array<Vec3, 8>& p) {
   return quality_detail::hex_scaled_jacobian(p, quality_detail::hex_edges(p));
+}
+
+double quality_detail::hex_scaled_jacobian_bound(const quality_detail::HexEdges& e,
+                                                 std::size_t moving) {
+  double bound = 1.0;
+  std::array<Vec3, 12> unit;
+  for (std::size_t v = 0; v < 8; ++v) {
+    const std::size_t d = v ^ moving;
+    if (d == 0 || (d & (d - 1)) == 0) continue;  // v's frame holds the moving corner
+    for (int axis = 0; axis < 3; ++axis) {
+      const std::size_t k = quality_detail::hex_edge_index(v, axis);
+      if (!unit_edge(e, k, unit[k])) return 1.0;
+    }
+    const double j = corner_jacobian(unit, v);
+    if (std::isfinite(j)) bound = std::min(bound, j);
+  }
+  return std::max(bound, -1.0);
 }
 
 double hex_volume(const std::array<Vec3, 8>& p) {
@@ -92,6 +121,16 @@ double quad_scaled_jacobian(const std::array<Vec3, 4>& p) {
     worst = std::min(worst, ua.x() * ub.y() - ua.y() * ub.x());
   }
   return std::clamp(worst, -1.0, 1.0);
+}
+
+double quality_detail::quad_scaled_jacobian_bound(const std::array<Vec3, 4>& p,
+                                                  std::size_t moving) {
+  const auto [a, b] = quality_detail::quad_corner_frame(p, (moving + 2) % 4);
+  const double la = a.norm(), lb = b.norm();
+  if (!(la > 0 && lb > 0) || !std::isfinite(la) || !std::isfinite(lb)) return 1.0;
+  const Eigen::Vector2d ua = a / la, ub = b / lb;
+  const double j = ua.x() * ub.y() - ua.y() * ub.x();
+  return std::isfinite(j) ? std::clamp(j, -1.0, 1.0) : 1.0;
 }
 
 double quad_area(const std::array<Vec3, 4>& p) {

@@ -88,6 +88,22 @@ double cell_score(const M& mesh, CellId c, const SizeCriterion& size) {
   }
 }
 
+/// The highest score cell c can reach while only its node `moving` (its index in the cell's
+/// nodes) moves: -2 + the shortest edge not touching it / min length when that one already
+/// breaks the size criterion, else the scaled Jacobian of the corners whose frames do not
+/// hold it (cell_size.h). When c scores it already, no move of that node raises c's score.
+template <class M>
+double cell_score_bound(const M& mesh, CellId c, const SizeCriterion& size, std::size_t moving) {
+  ShapeAndSizeBound b;
+  if constexpr (M::dim == 3)
+    b = hex_bound_moving(mesh.cell_points(c), moving);
+  else
+    b = quad_bound_moving(mesh.cell_points(c), moving);
+  if (!size.on()) return b.scaled_jacobian;
+  const double r = b.shortest_edge / size.min_length(c);
+  return r < 1 ? -2.0 + r : b.scaled_jacobian;
+}
+
 /// Smallest score of the cells around n (1 when n has no cell). With `stop_below`, returns
 /// as soon as a cell scores below it: the result is then below it, but not always the
 /// smallest (a trial position that must reach a bound is refused at its first bad cell).

@@ -36,6 +36,17 @@ struct HexShapeAndSize {
 };
 HexShapeAndSize hex_shape_and_size(const std::array<Vec3, 8>& p);
 
+/// What a cell can still reach while only its corner `moving` (binary order for a hex,
+/// counter-clockwise for a quad) moves: its scaled Jacobian stays at or below
+/// `scaled_jacobian` (the corners whose frames do not hold the moving corner), its shortest
+/// edge at or below `shortest_edge` (the edges not touching it).
+struct ShapeAndSizeBound {
+  double scaled_jacobian = 1;
+  double shortest_edge = 0;
+};
+ShapeAndSizeBound hex_bound_moving(const std::array<Vec3, 8>& p, std::size_t moving);
+ShapeAndSizeBound quad_bound_moving(const std::array<Vec3, 4>& p, std::size_t moving);
+
 /// Hex volume / largest face area (0 for an inverted or degenerate hex).
 double hex_time_step_length(const std::array<Vec3, 8>& p);
 /// Quad area (xy plane) / longest edge (0 for an inverted or degenerate quad).
