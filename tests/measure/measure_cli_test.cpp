@@ -301,8 +301,8 @@ TEST_F(MeasureCli, SliverFailsTheMinEdge) {
   EXPECT_EQ(run(path("sliver.vtu") + " -q --min-edge 0.04"), 0);
   // No local size: measured without it, not checked, not failed.
   EXPECT_EQ(run(path("plain.vtu") + " --json " + path("report.json"), &out), 0);
-  EXPECT_NE(out.find("no local_size array and no --reference"), std::string::npos) << out;
-  EXPECT_EQ(report()["size"]["not_checked"], "no local_size array and no --reference");
+  EXPECT_NE(out.find("no local_size array and no reference grid"), std::string::npos) << out;
+  EXPECT_EQ(report()["size"]["not_checked"], "no local_size array and no reference grid");
   // The reference grid gives the local size: unit squares, the same verdict.
   io::MeshData ref = io::from_mesh(make_quad_grid(2, 2));
   ref.set_cell_array({"vf_a", 1, io::ScalarType::float64, {1, 1, 1, 1}});

@@ -119,7 +119,7 @@ TEST(SizeReport, NoLocalSizeIsNotChecked) {
   const SizeReport r = size_report(squares(0.05), nullptr);
   EXPECT_EQ(r.local_size, LocalSizeSource::none);
   EXPECT_FALSE(r.checked());
-  EXPECT_EQ(r.not_checked, "no local_size array and no --reference");
+  EXPECT_EQ(r.not_checked, "no local_size array and no reference grid");
   EXPECT_TRUE(r.passed());
   EXPECT_FALSE(r.mesh.has_local_size);
   EXPECT_NEAR(r.mesh.edge_ratio.min, 1, 1e-15);  // the rest is measured
@@ -236,7 +236,7 @@ TEST(SizeReport, Json) {
   EXPECT_NEAR(j["time_step_ratio"].get<double>(), 0.525 / std::sqrt(0.95 * 0.95 + 1), 1e-12);
   const auto none = nlohmann::json::parse(size_report_json(size_report(squares(0.05), nullptr)));
   EXPECT_TRUE(none["passed"].get<bool>());
-  EXPECT_EQ(none["not_checked"], "no local_size array and no --reference");
+  EXPECT_EQ(none["not_checked"], "no local_size array and no reference grid");
   EXPECT_TRUE(none["local_size"].is_null());
   EXPECT_TRUE(none["relative_edge"].is_null());
   EXPECT_FALSE(none.contains("reference"));

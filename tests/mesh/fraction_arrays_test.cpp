@@ -88,7 +88,7 @@ TEST(FractionArrays, ASumAboveOneDoesNotAdviseAVoidMaterial) {
   } catch (const InputError& e) {
     const std::string what = e.what();
     EXPECT_EQ(what.find("void"), std::string::npos) << what;
-    EXPECT_NE(what.find("--sum-tolerance 0.011 would rescale this cell"), std::string::npos)
+    EXPECT_NE(what.find("{sum_tolerance} 0.011 would rescale this cell"), std::string::npos)
         << what;
   }
 }

@@ -107,7 +107,7 @@ TEST(FractionRepair, ASumAboveOneNamesTheToleranceThatWouldAcceptIt) {
                      "float32 data)"),
               std::string::npos)
         << m;
-    EXPECT_NE(m.find("--sum-tolerance 0.0022 would rescale this cell, --sum-tolerance 0.0048 "
+    EXPECT_NE(m.find("{sum_tolerance} 0.0022 would rescale this cell, {sum_tolerance} 0.0048 "
                      "every cell"),
               std::string::npos)
         << m;
@@ -119,7 +119,7 @@ TEST(FractionRepair, ASumAboveOneNamesTheToleranceThatWouldAcceptIt) {
   const std::string m = message_of(d, o, &where);
   EXPECT_EQ(where, "cell 2");
   EXPECT_NE(m.find("sum tolerance 0.0022, given"), std::string::npos) << m;
-  EXPECT_NE(m.find("--sum-tolerance 0.0048 would rescale this cell"), std::string::npos) << m;
+  EXPECT_NE(m.find("{sum_tolerance} 0.0048 would rescale this cell"), std::string::npos) << m;
   EXPECT_EQ(m.find("every cell"), std::string::npos) << m;  // this cell is the worst
   o.sum_tolerance = 0.0048;
   io::FractionReport r;
@@ -136,8 +136,8 @@ TEST(FractionRepair, ASumBelowOneOffersAVoidMaterialOrATolerance) {
   const std::string m = message_of(d, io::FractionOptions{}, &where);
   EXPECT_EQ(where, "cell 0");
   EXPECT_NE(m.find("sum to 0.9687 (0.0313 below 1; sum tolerance 0.0001, the default for "
-                   "float64 data): name a void material (--void NAME) to receive the "
-                   "remainder, or --sum-tolerance 0.032 would rescale this cell"),
+                   "float64 data): name a void material ({void_material} NAME) to receive the "
+                   "remainder, or {sum_tolerance} 0.032 would rescale this cell"),
             std::string::npos)
       << m;
 }

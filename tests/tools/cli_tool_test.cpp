@@ -38,6 +38,21 @@ TEST_F(CliTool, EveryToolsHelpNamesChoicesByTheirWords) {
             std::string::npos);
 }
 
+// The library names an option by its Options field in braces; each tool shows its own flag
+// there, in errors and warnings alike, and leaves other braces in a message alone.
+TEST_F(CliTool, LibraryMessagesShowTheToolsFlags) {
+  const ToolRun bad = run("generate", "asteroid --dims 8,8,8 --extrude 2 -o " + path("a.vtu"));
+  EXPECT_EQ(bad.code, 1);
+  EXPECT_NE(bad.err.find("error: --extrude sweeps a 2D case"), std::string::npos) << bad.err;
+  const ToolRun warned = run("generate", "asteroid --dims 4,4,4 --time 1 -o " + path("b.vtu"));
+  EXPECT_EQ(warned.code, 0) << warned.err;
+  EXPECT_NE(warned.err.find("has no flow: --time is ignored"), std::string::npos) << warned.err;
+  const ToolRun braces = run("generate", "disk --dims 4,4 -o " + path("{nsub}.vtu") + " -q");
+  EXPECT_EQ(braces.code, 0) << braces.err;
+  EXPECT_TRUE(std::filesystem::exists(path("{nsub}.vtu")));
+  for (const ToolRun* r : {&bad, &warned}) EXPECT_EQ(r->err.find('{'), std::string::npos) << r->err;
+}
+
 // render draws PNG only: -o x.jpg or x.svg used to get PNG bytes under that name.
 TEST_F(CliTool, RenderRefusesAPictureFormatItDoesNotWrite) {
   for (const char* name : {"x.jpg", "x.svg", "x"}) {

@@ -1,5 +1,6 @@
 #include "cli.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -148,6 +149,38 @@ io::ReadOptions InputOptions::read_options() const {
   return r;
 }
 
+namespace {
+
+// The flag of an Options field: the field's name with dashes, or where the two differ, this.
+const std::map<std::string, std::string, std::less<>> flag_names = {{"void_material", "void"}};
+
+std::string flag_of(const CLI::App& app, std::string_view field) {
+  if (field.empty() || field.find_first_not_of("abcdefghijklmnopqrstuvwxyz_0123456789") !=
+                           std::string_view::npos)
+    return {};
+  const auto named = flag_names.find(field);
+  std::string flag = "--" + (named != flag_names.end() ? named->second : std::string(field));
+  std::replace(flag.begin(), flag.end(), '_', '-');
+  return app.get_option_no_throw(flag) ? flag : std::string();
+}
+
+}  // namespace
+
+std::string with_flags(const CLI::App& app, std::string_view text) {
+  std::string out;
+  std::size_t from = 0;
+  for (std::size_t open; (open = text.find('{', from)) != std::string_view::npos;) {
+    const std::size_t close = text.find('}', open);
+    if (close == std::string_view::npos) break;
+    const std::string flag = flag_of(app, text.substr(open + 1, close - open - 1));
+    out += text.substr(from, (flag.empty() ? close + 1 : open) - from);
+    out += flag;
+    from = close + 1;
+  }
+  out += text.substr(from);
+  return out;
+}
+
 int run(CLI::App& app, int argc, char** argv, CommonOptions& options,
         const std::function<int()>& body) {
   g_args.assign(argv, argv + argc);
@@ -159,11 +192,11 @@ int run(CLI::App& app, int argc, char** argv, CommonOptions& options,
   }
   const std::string tool = app.get_name();
   set_log_sink(
-      [tool](LogLevel level, std::string_view message) {
+      [tool, &app](LogLevel level, std::string_view message) {
         const char* tag = level >= LogLevel::error     ? "error: "
                           : level == LogLevel::warning ? "warning: "
                                                        : "";
-        std::cerr << tool << ": " << tag << message << '\n';
+        std::cerr << tool << ": " << tag << with_flags(app, message) << '\n';
       },
       options.quiet ? LogLevel::error
                     : options.verbose >= 2 ? LogLevel::debug
@@ -178,19 +211,19 @@ int run(CLI::App& app, int argc, char** argv, CommonOptions& options,
     outputs.commit();
     return code;
   } catch (const OptionError& e) {
-    std::cerr << tool << ": error: " << e.what() << '\n';
+    std::cerr << tool << ": error: " << with_flags(app, e.what()) << '\n';
     return usage;
   } catch (const InputError& e) {
-    std::cerr << tool << ": error: " << e.what() << '\n';
+    std::cerr << tool << ": error: " << with_flags(app, e.what()) << '\n';
     return bad_input;
   } catch (const MeshError& e) {
-    std::cerr << tool << ": error: invalid mesh: " << e.what() << '\n';
+    std::cerr << tool << ": error: invalid mesh: " << with_flags(app, e.what()) << '\n';
     return bad_input;
   } catch (const IoError& e) {
-    std::cerr << tool << ": error: " << e.what() << '\n';
+    std::cerr << tool << ": error: " << with_flags(app, e.what()) << '\n';
     return bad_input;
   } catch (const ResourceError& e) {
-    std::cerr << tool << ": error: " << e.what() << '\n';
+    std::cerr << tool << ": error: " << with_flags(app, e.what()) << '\n';
     return out_of_memory;
   } catch (const std::bad_alloc&) {
     const double estimate = last_memory_estimate();

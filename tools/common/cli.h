@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -68,8 +69,13 @@ void add_input_options(CLI::App& app, InputOptions& options);
 /// --step and --time (the time step of a time series) into `options`.
 void add_time_options(CLI::App& app, io::ReadOptions& options);
 
+/// `text` with each Options field that the library names in braces ({sum_tolerance},
+/// core/error.h) shown as this tool's flag for it (--sum-tolerance); a name the tool has no
+/// flag for stays as it is.
+std::string with_flags(const CLI::App& app, std::string_view text);
+
 /// Parses the command line, applies -q/-v/--threads, runs `body` and maps exceptions to exit
-/// codes with a one-line message on stderr. `body` returns the exit code. The files `body`
+/// codes with a one-line message on stderr (library messages and log lines with_flags). `body` returns the exit code. The files `body`
 /// writes form one io::OutputBatch: they appear when `body` returns, and none does when it
 /// throws or a signal (SIGTERM, SIGINT, SIGHUP) ends the run.
 int run(CLI::App& app, int argc, char** argv, CommonOptions& options,

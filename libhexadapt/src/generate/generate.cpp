@@ -23,12 +23,12 @@ std::string number(double v) {
 int pick_dim(const Case& c, const GenerateOptions& o) {
   int dim = o.dims.empty() ? c.default_dim() : static_cast<int>(o.dims.size());
   if (o.extrude > 0 && o.dims.empty()) dim = 2;
-  if (dim != 2 && dim != 3) throw OptionError("--dims takes 2 or 3 values");
+  if (dim != 2 && dim != 3) throw OptionError("{dims} takes 2 or 3 values");
   if (!c.defaults(dim).available)
     throw OptionError("case " + c.name + " has no " + std::to_string(dim) + "D version" +
-                      (dim == 3 ? " (extrude it with --extrude)" : ""));
+                      (dim == 3 ? " (extrude it with {extrude})" : ""));
   if (o.extrude > 0 && dim != 2)
-    throw OptionError("--extrude sweeps a 2D case: give 2 dims, not 3");
+    throw OptionError("{extrude} sweeps a 2D case: give 2 dims, not 3");
   return dim;
 }
 
@@ -116,9 +116,9 @@ std::array<int, 3> pick_dims(const CaseDefaults& d, const GenerateOptions& o, in
   std::array<int, 3> n = d.dims;
   if (!o.dims.empty()) std::copy(o.dims.begin(), o.dims.end(), n.begin());
   for (int a = 0; a < dim; ++a)
-    if (n[static_cast<std::size_t>(a)] < 1) throw OptionError("--dims: every axis needs >= 1 cell");
-  if (o.extrude < 0) throw OptionError("--extrude must be >= 0");
-  if (o.jitter < 0) throw OptionError("--jitter must be >= 0");
+    if (n[static_cast<std::size_t>(a)] < 1) throw OptionError("{dims}: every axis needs >= 1 cell");
+  if (o.extrude < 0) throw OptionError("{extrude} must be >= 0");
+  if (o.jitter < 0) throw OptionError("{jitter} must be >= 0");
   return n;
 }
 
@@ -161,7 +161,7 @@ GenerateResult generate(const GenerateOptions& o) {
   r.materials = c.materials;
   r.time = c.has_flow ? o.time.value_or(d.time) : 0.0;
   if (!c.has_flow && o.time && *o.time != 0)
-    log_warning("case " + c.name + " has no flow: --time is ignored");
+    log_warning("case " + c.name + " has no flow: {time} is ignored");
   const Vec3 spacing = (b.hi - b.lo).cwiseQuotient(Vec3(n[0], n[1], dim == 3 ? n[2] : 1));
   Timer t;
   r.data = grid_data(dim, n, b.lo, spacing);

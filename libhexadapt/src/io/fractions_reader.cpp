@@ -146,9 +146,9 @@ double accepting(double x) {
               ? ", given"
               : std::string(", the default for ") + precision_name(rep.precision) + " data")
       << "): ";
-  if (sum < 1) msg << "name a void material (--void NAME) to receive the remainder, or ";
-  msg << "--sum-tolerance " << accepting(err) << " would rescale this cell";
-  if (largest > err) msg << ", --sum-tolerance " << accepting(largest) << " every cell";
+  if (sum < 1) msg << "name a void material ({void_material} NAME) to receive the remainder, or ";
+  msg << "{sum_tolerance} " << accepting(err) << " would rescale this cell";
+  if (largest > err) msg << ", {sum_tolerance} " << accepting(largest) << " every cell";
   throw InputError(file, cell_where(c), msg.str());
 }
 

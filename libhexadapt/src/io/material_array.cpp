@@ -12,7 +12,8 @@ IdVector<CellId, int> read_material_array(const MeshData& data, int n_materials,
   const DataArray* a = data.find_cell_array(array);
   if (a == nullptr)
     throw InputError(file, "cell data",
-                     "no '" + array + "' cell array: run hexadapt-assign on the grid first");
+                     "no '" + array + "' cell array: the grid is not assigned (the assign stage "
+                         "writes it)");
   if (a->n_components != 1 || a->n_tuples() != static_cast<std::size_t>(data.n_cells()))
     throw InputError(file, "cell array '" + array + "'",
                      "expected one value per cell (" + std::to_string(data.n_cells()) + ")");

@@ -59,7 +59,7 @@ std::size_t select_time_step(const std::vector<double>& times, const ReadOptions
   if (times.size() > 1)
     throw InputError(
         file, "time steps",
-        "a time series: choose a step with --step N or --time T; it holds " + list_times(times));
+        "a time series: choose a step with {step} N or {time} T; it holds " + list_times(times));
   return 0;
 }
 

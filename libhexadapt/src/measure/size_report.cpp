@@ -145,7 +145,7 @@ SizeReport size_report(const io::MeshData& mesh, const io::MeshData* reference,
   if (o.min_edge == 0)
     r.not_checked = "min_edge is 0 (off)";
   else if (local.empty())
-    r.not_checked = "no " + o.local_size_array + " array and no --reference";
+    r.not_checked = "no " + o.local_size_array + " array and no reference grid";
   if (!reference) return r;
   r.has_reference = true;
   std::vector<double> own(ref_sizes.edges.size());

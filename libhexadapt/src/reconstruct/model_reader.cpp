@@ -28,7 +28,8 @@ void read_header(LegacyScanner& in, ModelFile& out) {
   const std::size_t at = in.position();
   const std::string title(in.line());
   if (title.rfind(title_prefix, 0) != 0)
-    in.fail_at(at, "expected the title '" + std::string(title_prefix) + " ...' of hexadapt-reconstruct --model");
+    in.fail_at(at, "expected the title '" + std::string(title_prefix) +
+                      " ...' of a geometric model (written by write_model_vtk)");
   std::istringstream names(title.substr(title_prefix.size()));
   for (std::string n; names >> n;) out.materials.push_back(detail::name_from_title(n));
   if (!keyword_is(in.expect_token("ASCII"), "ASCII")) in.fail("expected ASCII");

@@ -248,7 +248,7 @@ PixelMesh build_pixel_mesh(const M& mesh, const Fractions& fractions,
     throw ResourceError("the sub-pixel mesh needs about " + megabytes(plan.bytes) + " (" +
                       std::to_string(plan.n_pixels) + " pixels, nsub " +
                       std::to_string(plan.nsub) + "), more than the allowed " +
-                      megabytes(options.max_memory) + ": lower --nsub or raise --max-memory");
+                      megabytes(options.max_memory) + ": lower {nsub} or raise {max_memory}");
   std::vector<CellId> cells;
   std::vector<std::uint8_t> free;
   for (CellId c : id_range<CellId>(mesh.n_cells()))

@@ -5,6 +5,10 @@
 // cell id) so a tool can print one precise line and pick its exit code (DESIGN sec. 2:
 // 2 for bad input or IO, 4 for internal errors). Expected outcomes such as "quality target
 // not reached" are not errors: they are reported in result structs.
+//
+// A message that points at an option names its Options field in braces ("{sum_tolerance}
+// 0.002 would rescale this cell"), never a tool's flag: the tools show their flag for it
+// (--sum-tolerance).
 #pragma once
 
 #include <stdexcept>
