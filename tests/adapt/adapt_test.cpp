@@ -127,7 +127,7 @@ TEST(Adapt, RejectsBadOptions) {
   AdaptOptions o;
   EXPECT_EQ(o.method, AdaptMethod::guaranteed);
   o.method = AdaptMethod::base;
-  o.steps = 0;
+  o.move.steps = 0;
   EXPECT_THROW(adapt(grid, f, test::majority(f), o), OptionError);
   EXPECT_EQ(parse_adapt_method("base"), AdaptMethod::base);
   EXPECT_THROW(parse_adapt_method("sculpt"), OptionError);

@@ -229,7 +229,7 @@ TEST(GuaranteedMethod, AutomaticLayersFallBackToCavitiesWhereTheFirstLayerFallsS
                                                                    const Fractions& f,
                                                                    const IdVector<CellId, int>& m) {
     AdaptOptions o = guaranteed_options();
-    o.drag = false;
+    o.move.drag = false;
     const auto r = adapt(grid, f, m, o);
     check_guaranteed(grid, r);
     EXPECT_EQ(r.layers, LayerStrategy::cavities);
@@ -332,6 +332,23 @@ TEST(GuaranteedMethod, HoldsAHigherThresholdInAnExtrudedCase) {
   o.threshold = 0.5;
   const auto r = adapt(grid, f, test::majority(f), o);
   check_guaranteed(grid, r, 0.5);
+}
+
+// AdaptOptions holds one threshold: the step options it holds take it, whatever theirs says.
+TEST(GuaranteedMethod, EveryStepKeepsTheOneThreshold) {
+  const double h = 1.0 / 8;
+  const HexMesh grid = make_hex_grid(28, 12, 2, Vec3::Zero(), Vec3(2 * h, 2 * h, h));
+  const Fractions f = test::sample_fractions(grid, test::triple_point(7.0), 3, 4);
+  AdaptOptions o = guaranteed_options();
+  o.threshold = 0.5;
+  o.layers = LayerStrategy::both;  // the interface pillows, the move and the cavities
+  const auto r = adapt(grid, f, test::majority(f), o);
+  check_guaranteed(grid, r, 0.5);
+  o.move.threshold = o.cavity.threshold = o.interface_pillow.threshold = -0.9;
+  const auto same = adapt(grid, f, test::majority(f), o);
+  EXPECT_EQ(same.mesh.points(), r.mesh.points());
+  EXPECT_EQ(same.n_cells_added, r.n_cells_added);
+  EXPECT_EQ(same.n_interface_layer_cells, r.n_interface_layer_cells);
 }
 
 TEST(GuaranteedMethod, StopsOnBadInputUnlessAllowed) {

@@ -255,7 +255,7 @@ TEST(TargetCorrection, GuaranteedPipelineRunsItWhenAskedWithAModelOnly) {
   EXPECT_EQ(adapt(s.in.mesh, s.in.fractions, s.material, o, &s.rec.model).correction.skipped,
             "disabled");  // off by default
   o.correction.enabled = true;
-  o.cavity_range = 0;  // the wiring is under test here, not the later steps
+  o.cavity.range = 0;  // the wiring is under test here, not the later steps
   o.max_loops = 2;
   const auto with = adapt(s.in.mesh, s.in.fractions, s.material, o, &s.rec.model);
   EXPECT_TRUE(with.correction.ran);

@@ -12,7 +12,7 @@ ROOT = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else pathlib.Path(__file__)
 
 LITERAL = re.compile(r'"((?:[^"\\\n]|\\.)*)"')
 FLAG = re.compile(r"--[a-z][a-z0-9-]*")
-FIELD = re.compile(r"\{([a-z_][a-z0-9_]*)\}")
+FIELD = re.compile(r"\{([a-z_][a-z0-9_.]*)\}")
 TOOL = re.compile(r"hexadapt-(?:generate|assign|reconstruct|adapt|measure|render)\b")
 
 
@@ -28,7 +28,7 @@ def tool_flags():
         for _, code in code_lines(path):
             for literal in LITERAL.findall(code):
                 flags.update(FLAG.findall(literal))
-    renamed = re.findall(r'\{"([a-z_]+)", "([a-z-]+)"\}',
+    renamed = re.findall(r'\{"([a-z_.]+)", "([a-z-]+)"\}',
                          (ROOT / "tools" / "common" / "cli.cpp").read_text())
     return flags, dict(renamed)
 
@@ -48,7 +48,7 @@ def problems():
                     out.append(f"{where}: names the flag {flag}: name the field in braces")
                 for field in FIELD.findall(literal):
                     fields += 1
-                    flag = "--" + renamed.get(field, field).replace("_", "-")
+                    flag = "--" + renamed.get(field, field).replace("_", "-").replace(".", "-")
                     if flag not in flags:
                         out.append(f"{where}: {{{field}}} is no tool's flag ({flag})")
     if fields == 0:

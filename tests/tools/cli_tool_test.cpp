@@ -53,6 +53,19 @@ TEST_F(CliTool, LibraryMessagesShowTheToolsFlags) {
   for (const ToolRun* r : {&bad, &warned}) EXPECT_EQ(r->err.find('{'), std::string::npos) << r->err;
 }
 
+// A number flag out of range says which bound it breaks (CLI11's own check printed a
+// 309-digit upper bound).
+TEST_F(CliTool, NumberFlagsOutOfRangeSayTheirBound) {
+  const ToolRun steps = run("adapt", "in.vtu -o " + path("m.vtu") + " --steps 0");
+  EXPECT_EQ(steps.code, 1);
+  EXPECT_NE(steps.err.find("--steps: must be > 0, got 0"), std::string::npos) << steps.err;
+  const ToolRun loops = run("adapt", "in.vtu -o " + path("m.vtu") + " --max-loops -1");
+  EXPECT_EQ(loops.code, 1);
+  EXPECT_NE(loops.err.find("--max-loops: must be >= 0, got -1"), std::string::npos) << loops.err;
+  for (const ToolRun* r : {&steps, &loops})
+    EXPECT_EQ(r->err.find("17976931348623157"), std::string::npos) << r->err;
+}
+
 // render draws PNG only: -o x.jpg or x.svg used to get PNG bytes under that name.
 TEST_F(CliTool, RenderRefusesAPictureFormatItDoesNotWrite) {
   for (const char* name : {"x.jpg", "x.svg", "x"}) {

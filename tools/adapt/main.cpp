@@ -22,27 +22,14 @@ namespace {
 using namespace hexadapt;
 using cli::Json;
 
+// The flags set the library's options directly: their defaults are AdaptOptions' own.
 struct Args {
   std::string input;
-  std::string method = "guaranteed";
+  AdaptOptions options;
+  std::string method = to_string(AdaptOptions{}.method);
+  std::string layers = to_string(AdaptOptions{}.layers);
   std::string model;
-  TargetCorrectionOptions correction;
-  TargetOptions targets;
-  bool allow_bad_input = false;
-  int max_loops = 20;
-  int cavity_range = 3;
-  std::string layers = "automatic";
-  double enough_share = AdaptOptions{}.enough_share;
-  int interface_pillow_rounds = AdaptOptions{}.interface_pillow_rounds;
-  int interface_pillow_carve = AdaptOptions{}.interface_pillow_carve;
-  int mend_rounds = AdaptOptions{}.mend_rounds;
-  double near_interface = 0.05;
   cli::InputOptions in;
-  double threshold = 0.3;
-  double min_edge = 0.1;
-  int steps = 16;
-  bool drag = true;
-  int smooth_iterations = 20;
 };
 
 // The cells failing a criterion: which one, where, and by how much.
@@ -252,25 +239,10 @@ int refuse_bad_input(const cli::CommonOptions& common, Json& report, const Phase
 int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& common) {
   cli::check_files({{"input", args.input}, {"--model", args.model}},
                    {{"-o", common.output}, {"--json", common.json}});
-  AdaptOptions options;
+  AdaptOptions options = args.options;
   options.method = parse_adapt_method(args.method);
-  options.threshold = args.threshold;
-  options.min_edge = args.min_edge;
-  options.steps = args.steps;
-  options.drag = args.drag;
-  options.smooth.iterations = args.smooth_iterations;
-  options.progress = cli::terminal_progress(common);
-  options.allow_bad_input = args.allow_bad_input;
-  options.max_loops = args.max_loops;
-  options.cavity_range = args.cavity_range;
   options.layers = parse_layer_strategy(args.layers);
-  options.enough_share = args.enough_share;
-  options.interface_pillow_rounds = args.interface_pillow_rounds;
-  options.interface_pillow_carve = args.interface_pillow_carve;
-  options.mend_rounds = args.mend_rounds;
-  options.near_interface = args.near_interface;
-  options.correction = args.correction;
-  options.targets = args.targets;
+  options.progress = cli::terminal_progress(common);
 
   Timer clock;
   PhaseTimes times;
@@ -294,8 +266,8 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   report["threshold"] = options.threshold;
   report["min_edge"] = options.min_edge;
   report["layers"] = to_string(options.layers);
-  report["steps"] = options.steps;
-  report["drag"] = options.drag;
+  report["steps"] = options.move.steps;
+  report["drag"] = options.move.drag;
   report["materials"] = fractions.names();
   report["model"] = args.model;
   io::MeshData out;
@@ -361,32 +333,32 @@ int main(int argc, char** argv) {
                  "move, global pillowing, smoothing (Fig. 10-a), no guarantee")
       ->check(CLI::IsMember({"base", "guaranteed"}))
       ->capture_default_str();
-  app.add_option("--threshold", args.threshold, "Minimum scaled Jacobian S_q")
+  app.add_option("--threshold", args.options.threshold, "Minimum scaled Jacobian S_q")
       ->check(CLI::Range(-1.0, 1.0))
       ->capture_default_str();
-  app.add_option("--min-edge", args.min_edge,
+  app.add_option("--min-edge", args.options.min_edge,
                  "Shortest edge every cell keeps, relative to its local input size (the mean "
                  "edge length of the input cell it comes from); 0: no size criterion")
       ->check(CLI::Range(0.0, 0.999999))
       ->capture_default_str();
-  app.add_option("--steps", args.steps, "Steps of the controlled move")
-      ->check(CLI::PositiveNumber)
+  app.add_option("--steps", args.options.move.steps, "Steps of the controlled move")
+      ->check(cli::positive)
       ->capture_default_str();
-  app.add_flag("--drag,!--no-drag", args.drag,
+  app.add_flag("--drag,!--no-drag", args.options.move.drag,
                "guaranteed: retry a refused step of the controlled move with the free nodes "
                "ahead of the node moved along, then with all its free neighbours (default on)");
-  app.add_option("--smooth-iterations", args.smooth_iterations, "Smoothing sweeps")
-      ->check(CLI::NonNegativeNumber)
+  app.add_option("--smooth-iterations", args.options.smooth.iterations, "Smoothing sweeps")
+      ->check(cli::non_negative)
       ->capture_default_str();
-  app.add_flag("--allow-bad-input", args.allow_bad_input,
+  app.add_flag("--allow-bad-input", args.options.allow_bad_input,
                "guaranteed: run even when input cells are below --threshold (exit 3 otherwise)");
-  app.add_option("--max-loops", args.max_loops, "guaranteed: move-smooth rounds at most")
-      ->check(CLI::NonNegativeNumber)
+  app.add_option("--max-loops", args.options.max_loops, "guaranteed: move-smooth rounds at most")
+      ->check(cli::non_negative)
       ->capture_default_str();
-  app.add_option("--cavity-range", args.cavity_range,
+  app.add_option("--cavity-range", args.options.cavity.range,
                  "guaranteed: vertex distance of the cavities pillowed around blocked nodes "
                  "(0: no cavity pillowing)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(cli::non_negative)
       ->capture_default_str();
   app.add_option("--layers", args.layers,
                  "guaranteed: where nodes get new cells to move into: cavities (around the nodes "
@@ -396,34 +368,34 @@ int main(int argc, char** argv) {
                  "interface, cavities too, keeping the result with more of them")
       ->check(CLI::IsMember({"automatic", "cavities", "first", "both"}))
       ->capture_default_str();
-  app.add_option("--enough-share", args.enough_share,
+  app.add_option("--enough-share", args.options.enough_share,
                  "guaranteed, --layers automatic, 3D: the share of interface nodes near their "
                  "interface with a first layer beyond which cavities are not tried")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
-  app.add_option("--interface-pillow-rounds", args.interface_pillow_rounds,
+  app.add_option("--interface-pillow-rounds", args.options.interface_pillow.rounds,
                  "guaranteed: attempts at pillowing each material's interfaces before the first "
                  "move, kept only where every cell meets the criteria, when the runs of "
                  "--mend-rounds did not end with every cell passing (0: no such pillowing)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(cli::non_negative)
       ->capture_default_str();
-  app.add_option("--interface-pillow-carve", args.interface_pillow_carve,
+  app.add_option("--interface-pillow-carve", args.options.interface_pillow.carve,
                  "guaranteed: vertex distance of the cells left out of a material's layer "
                  "around a cell that fails the criteria, before the next attempt")
-      ->check(CLI::NonNegativeNumber)
+      ->check(cli::non_negative)
       ->capture_default_str();
-  app.add_option("--mend-rounds", args.mend_rounds,
+  app.add_option("--mend-rounds", args.options.mend_rounds,
                  "guaranteed, first layer: runs that keep each material's layer with its failing "
                  "cells for the moves to mend, leaving it out around what stayed failing; then "
                  "the layer is carved where it fails before the move (0: only that)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(cli::non_negative)
       ->capture_default_str();
-  app.add_option("--near-interface", args.near_interface,
+  app.add_option("--near-interface", args.options.near_interface,
                  "guaranteed: a node within this many local sizes of its interface surface has "
                  "reached it; farther ones are reported as blocked")
-      ->check(CLI::NonNegativeNumber)
+      ->check(cli::non_negative)
       ->capture_default_str();
-  app.add_option("--volume-offset", args.targets.volume_offset,
+  app.add_option("--volume-offset", args.options.targets.volume_offset,
                  "Offset each material's interface targets along their normal until the grid "
                  "with its nodes on them holds the material's input volume: on, off, or "
                  "automatic (3D only)")
@@ -433,36 +405,36 @@ int main(int argc, char** argv) {
                                               {"off", VolumeOffset::off}},
           CLI::ignore_case))
       ->option_text("TEXT:{automatic,on,off}=automatic");
-  app.add_option("--volume-sweeps", args.targets.volume_sweeps,
+  app.add_option("--volume-sweeps", args.options.targets.volume_sweeps,
                  "Volume offset: sweeps at most")
-      ->check(CLI::NonNegativeNumber)
+      ->check(cli::non_negative)
       ->capture_default_str();
-  app.add_option("--volume-max-shift", args.targets.volume_max_shift,
+  app.add_option("--volume-max-shift", args.options.targets.volume_max_shift,
                  "Farthest a target moves for the volume, in local sizes")
-      ->check(CLI::NonNegativeNumber)
+      ->check(cli::non_negative)
       ->capture_default_str();
   app.add_option("--model", args.model,
                  "guaranteed, 3D: the geometric model of hexadapt-reconstruct --model (its .vtk), "
                  "on which --correction smooths the targets first (paper sec. 5.3)");
-  app.add_flag("--correction,!--no-correction", args.correction.enabled,
+  app.add_flag("--correction,!--no-correction", args.options.correction.enabled,
                "guaranteed, 3D, with --model: correct the targets on the model (paper sec. "
                "5.3; off by default: it costs reach and volume once interfaces are pillowed "
                "first)");
-  app.add_option("--correction-iterations", args.correction.iterations,
+  app.add_option("--correction-iterations", args.options.correction.iterations,
                  "Target correction: smoothing sweeps")
-      ->check(CLI::NonNegativeNumber)
+      ->check(cli::non_negative)
       ->capture_default_str();
-  app.add_option("--correction-relaxation", args.correction.relaxation,
+  app.add_option("--correction-relaxation", args.options.correction.relaxation,
                  "Target correction: share of the way to the smoothed position per sweep")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
-  app.add_option("--correction-radius", args.correction.search_radius,
+  app.add_option("--correction-radius", args.options.correction.search_radius,
                  "Target correction: model search radius, in mean interface edge lengths")
-      ->check(CLI::PositiveNumber)
+      ->check(cli::positive)
       ->capture_default_str();
-  app.add_option("--correction-max-shift", args.correction.max_shift,
+  app.add_option("--correction-max-shift", args.options.correction.max_shift,
                  "Target correction: farthest a target moves by smoothing, in mean edge lengths")
-      ->check(CLI::PositiveNumber)
+      ->check(cli::positive)
       ->capture_default_str();
   cli::add_input_options(app, args.in);
   cli::add_common_options(app, common);

@@ -35,21 +35,21 @@ void add_options(CLI::App& app, Options& o) {
   cli::add_write_options(app, o.common);
   cli::add_input_options(app, o.in);
   app.add_option("--keep", o.assign.correction.keep, "Manifold configurations stored per node")
-      ->check(CLI::PositiveNumber)
+      ->check(cli::positive)
       ->capture_default_str();
   app.add_option("--max-materials", o.assign.correction.max_materials,
                  "Candidate materials per node (the most present in its ball)")
-      ->check(CLI::PositiveNumber)
+      ->check(cli::positive)
       ->capture_default_str();
   app.add_option("--max-leaves", o.assign.correction.max_leaves,
                  "Per node: complete configurations examined at most")
-      ->check(CLI::PositiveNumber)
+      ->check(cli::positive)
       ->capture_default_str();
   app.add_option("--min-island", o.assign.min_island,
                  "Pieces of one material (cells joined by faces) with fewer cells than this go "
                  "to the material around them most present in their cells, before the manifold "
                  "correction (0: off)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(cli::non_negative)
       ->capture_default_str();
   app.add_flag("--keep-materials", o.assign.keep_materials,
                "Give a material that is nowhere the majority the cells where it is most present "

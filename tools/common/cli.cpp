@@ -151,20 +151,41 @@ io::ReadOptions InputOptions::read_options() const {
 
 namespace {
 
-// The flag of an Options field: the field's name with dashes, or where the two differ, this.
-const std::map<std::string, std::string, std::less<>> flag_names = {{"void_material", "void"}};
+// The flag of an Options field (a nested one by its path, "cavity.range"): its name with
+// dashes for '_' and '.', or where the two differ, this.
+const std::map<std::string, std::string, std::less<>> flag_names = {
+    {"void_material", "void"}, {"move.steps", "steps"}, {"move.drag", "drag"}};
 
 std::string flag_of(const CLI::App& app, std::string_view field) {
-  if (field.empty() || field.find_first_not_of("abcdefghijklmnopqrstuvwxyz_0123456789") !=
+  if (field.empty() || field.find_first_not_of("abcdefghijklmnopqrstuvwxyz_.0123456789") !=
                            std::string_view::npos)
     return {};
   const auto named = flag_names.find(field);
   std::string flag = "--" + (named != flag_names.end() ? named->second : std::string(field));
   std::replace(flag.begin(), flag.end(), '_', '-');
+  std::replace(flag.begin(), flag.end(), '.', '-');
   return app.get_option_no_throw(flag) ? flag : std::string();
 }
 
 }  // namespace
+
+namespace {
+
+CLI::Validator number_check(bool strict) {
+  return CLI::Validator(
+      [strict](std::string& text) -> std::string {
+        double v = 0;
+        if (!CLI::detail::lexical_cast(text, v)) return "not a number: " + text;
+        if (strict ? v > 0 : v >= 0) return {};
+        return std::string(strict ? "must be > 0" : "must be >= 0") + ", got " + text;
+      },
+      strict ? "POSITIVE" : "NONNEGATIVE");
+}
+
+}  // namespace
+
+const CLI::Validator positive = number_check(true);
+const CLI::Validator non_negative = number_check(false);
 
 std::string with_flags(const CLI::App& app, std::string_view text) {
   std::string out;

@@ -75,9 +75,10 @@ void add_time_options(CLI::App& app, io::ReadOptions& options);
 std::string with_flags(const CLI::App& app, std::string_view text);
 
 /// Parses the command line, applies -q/-v/--threads, runs `body` and maps exceptions to exit
-/// codes with a one-line message on stderr (library messages and log lines with_flags). `body` returns the exit code. The files `body`
-/// writes form one io::OutputBatch: they appear when `body` returns, and none does when it
-/// throws or a signal (SIGTERM, SIGINT, SIGHUP) ends the run.
+/// codes with a one-line message on stderr (library messages and log lines with_flags).
+/// `body` returns the exit code. The files `body` writes form one io::OutputBatch: they appear
+/// when `body` returns, and none does when it throws or a signal (SIGTERM, SIGINT, SIGHUP)
+/// ends the run.
 int run(CLI::App& app, int argc, char** argv, CommonOptions& options,
         const std::function<int()>& body);
 
@@ -108,6 +109,11 @@ Json phase_times_json(const PhaseTimes& times);
 
 /// Writes the report to --json (atomically; `-` is standard output) when it was given.
 void write_report(const CommonOptions& options, const Json& report);
+
+/// Checks of a number flag: > 0 and >= 0, saying so ("must be > 0, got 0"; CLI11's
+/// PositiveNumber and NonNegativeNumber print a 309-digit upper bound).
+extern const CLI::Validator positive;
+extern const CLI::Validator non_negative;
 
 /// Largest --threads accepted; more is a usage error (the OpenMP runtime fails far above).
 constexpr int max_threads = 1024;

@@ -55,15 +55,15 @@ void add_options(CLI::App& app, Args& a) {
   app.add_option("--list", a.report.max_listed,
                  "How many offending cells / nodes of each kind the report lists")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(cli::non_negative);
   app.add_option("--duplicate-tolerance", a.report.check.duplicate_tolerance,
                  "Nodes closer than this times the bounding-box diagonal are duplicates")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(cli::non_negative);
   app.add_option("--conformity-tolerance", a.report.check.conformity_tolerance,
                  "A node within this times a boundary face's diameter of the face hangs on it")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(cli::non_negative);
   app.add_option("--material-array", a.report.material_array,
                  "Cell array of material indices checked for purity")
       ->capture_default_str();
@@ -81,11 +81,11 @@ void add_options(CLI::App& app, Args& a) {
                  "(the 'local_size' cell array, or the mean edge of the --reference cell holding "
                  "its centroid); 0: not checked")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(cli::non_negative);
   app.add_option("--max-volume-error", a.volume.max_volume_error,
                  "Every material's volume must be within this share of its input volume "
                  "(needs --reference; default: not checked)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(cli::non_negative);
   cli::add_input_options(app, a.in);
 }
 

@@ -43,21 +43,22 @@ namespace {
 
 void check_options(const AdaptOptions& o) {
   if (!(o.threshold > -1 && o.threshold <= 1))
-    throw OptionError("threshold must be in (-1, 1], got " + std::to_string(o.threshold));
+    throw OptionError("{threshold} must be in (-1, 1], got " + std::to_string(o.threshold));
   if (!(o.min_edge >= 0 && o.min_edge < 1))
-    throw OptionError("min_edge must be in [0, 1), got " + std::to_string(o.min_edge));
-  if (o.steps < 1) throw OptionError("steps must be at least 1, got " + std::to_string(o.steps));
+    throw OptionError("{min_edge} must be in [0, 1), got " + std::to_string(o.min_edge));
+  if (o.move.steps < 1)
+    throw OptionError("{move.steps} must be at least 1, got " + std::to_string(o.move.steps));
   if (o.max_loops < 0)
-    throw OptionError("max_loops must be >= 0, got " + std::to_string(o.max_loops));
-  if (o.cavity_range < 0)
-    throw OptionError("cavity_range must be >= 0, got " + std::to_string(o.cavity_range));
-  if (o.interface_pillow_rounds < 0 || o.interface_pillow_carve < 0 || o.mend_rounds < 0)
-    throw OptionError(
-        "interface_pillow_rounds, interface_pillow_carve and mend_rounds must be >= 0");
+    throw OptionError("{max_loops} must be >= 0, got " + std::to_string(o.max_loops));
+  if (o.cavity.range < 0)
+    throw OptionError("{cavity.range} must be >= 0, got " + std::to_string(o.cavity.range));
+  if (o.interface_pillow.rounds < 0 || o.interface_pillow.carve < 0 || o.mend_rounds < 0)
+    throw OptionError("{interface_pillow.rounds}, {interface_pillow.carve} and {mend_rounds} "
+                      "must be >= 0");
   if (!(o.enough_share >= 0 && o.enough_share <= 1))
-    throw OptionError("enough_share must be in [0, 1], got " + std::to_string(o.enough_share));
+    throw OptionError("{enough_share} must be in [0, 1], got " + std::to_string(o.enough_share));
   if (!(o.near_interface >= 0))
-    throw OptionError("near_interface must be >= 0, got " + std::to_string(o.near_interface));
+    throw OptionError("{near_interface} must be >= 0, got " + std::to_string(o.near_interface));
   if (!(o.loop_tolerance >= 0))
     throw OptionError("loop_tolerance must be >= 0, got " + std::to_string(o.loop_tolerance));
   if (o.targets.volume_sweeps < 0 || !(o.targets.volume_max_shift >= 0) ||

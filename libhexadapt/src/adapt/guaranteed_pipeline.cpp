@@ -83,8 +83,8 @@ std::vector<NodeId> nodes_around_moves(const M& mesh, const std::vector<Vec3>& b
 // ten times the distance to the targets.
 template <class M>
 int move_smooth_loop(M& mesh, const Targets& targets,
-                     const IdVector<NodeId, NodeConstraint>& sliding, const MoveOptions& mo,
-                     const SizeCriterion& size, const AdaptOptions& options,
+                     const IdVector<NodeId, NodeConstraint>& sliding, const SizeCriterion& size,
+                     const AdaptOptions& options,
                      int rounds_before = 0) {
   double best = surface_distance_sum(mesh, targets, sliding);
   std::vector<Vec3> best_points = points_of(mesh);
@@ -100,7 +100,7 @@ int move_smooth_loop(M& mesh, const Targets& targets,
     const SmoothResult s = smooth(mesh, movable, sliding, options.smooth,
                                   loops == 1 ? nullptr : &start, size, &neighbours);
     const std::vector<Vec3> before = points_of(mesh);
-    controlled_move(mesh, targets, mo, size, &sliding);
+    controlled_move(mesh, targets, options.move, size, &sliding);
     start = nodes_around_moves(mesh, before, s.unsettled);
     const double dist = surface_distance_sum(mesh, targets, sliding);
     const bool better = dist < best;
@@ -124,14 +124,8 @@ std::vector<NodeId> pillow_cavities(M& mesh, IdVector<CellId, int>& material, Ta
   std::vector<NodeId> seeds;
   for (NodeId v : id_range<NodeId>(mesh.n_nodes()))
     if (targets.has[v] && !first.on_surface[v]) seeds.push_back(v);
-  if (seeds.empty() || options.cavity_range < 1 || !pillows_cavities(r.layers)) return {};
-  CavityOptions co;
-  co.range = options.cavity_range;
-  co.threshold = options.threshold;
-  co.pillow = options.pillow;
-  co.smooth = options.smooth;
-  co.boundary = options.boundary;
-  CavityResult<M> c = cavity_pillow(mesh, material, n_materials, seeds, co, size);
+  if (seeds.empty() || options.cavity.range < 1 || !pillows_cavities(r.layers)) return {};
+  CavityResult<M> c = cavity_pillow(mesh, material, n_materials, seeds, options.cavity, size);
   size = size.remapped(c.cell_origin.raw());
   r.cavities = std::move(c.attempts);
   r.n_cavities_published = c.n_published;
@@ -164,21 +158,15 @@ struct FirstMove {
 template <class M>
 FirstMove<M> first_move(const M& mesh, const IdVector<CellId, int>& material,
                         const Targets& targets, const SizeCriterion& size, bool pillow_first,
-                        int n_materials, const MoveOptions& mo, const AdaptOptions& options,
+                        int n_materials, const AdaptOptions& options,
                         const std::vector<CellId>* mend) {
   FirstMove<M> f{mesh, material, targets, size, {}, {}, {}, 0, 0, 0, 0};
   if (options.progress) options.progress("pillow", 0.0);
   for (CellId c : id_range<CellId>(mesh.n_cells())) f.cell_origin.push_back(c);
   Timer clock;
-  if (pillow_first && options.interface_pillow_rounds > 0) {
-    InterfacePillowOptions io;
-    io.threshold = options.threshold;
-    io.rounds = options.interface_pillow_rounds;
-    io.carve = options.interface_pillow_carve;
+  if (pillow_first && options.interface_pillow.rounds > 0) {
+    InterfacePillowOptions io = options.interface_pillow;
     io.keep_failing = mend != nullptr;
-    io.pillow = options.pillow;
-    io.smooth = options.smooth;
-    io.boundary = options.boundary;
     InterfacePillowResult<M> p =
         pillow_interfaces(f.mesh, f.material, n_materials, f.targets.has, f.size, io,
                           mend ? *mend : std::vector<CellId>{});
@@ -195,7 +183,7 @@ FirstMove<M> first_move(const M& mesh, const IdVector<CellId, int>& material,
   clock.restart();
   const auto sliding =
       sliding_constraints(boundary_constraints(f.mesh, options.boundary), f.targets);
-  f.move = controlled_move(f.mesh, f.targets, mo, f.size, &sliding);
+  f.move = controlled_move(f.mesh, f.targets, options.move, f.size, &sliding);
   f.surface_dist = surface_distance_sum(f.mesh, f.targets, sliding);
   f.move_seconds = clock.seconds();
   return f;
@@ -293,13 +281,9 @@ void run_layers(const M& grid, const IdVector<CellId, int>& material, const Targ
                 const SizeCriterion& grid_size, int n_materials, LayerStrategy layers,
                 AdaptResult<M>& r, const AdaptOptions& options,
                 std::vector<CellId>* mend = nullptr) {
-  MoveOptions mo;
-  mo.threshold = options.threshold;
-  mo.steps = options.steps;
-  mo.drag = options.drag;
   r.layers = layers;
   FirstMove<M> f = first_move(grid, material, grid_targets, grid_size, pillows_first(layers),
-                              n_materials, mo, options, mend);
+                              n_materials, options, mend);
   M mesh = std::move(f.mesh);
   IdVector<CellId, int> out_material = std::move(f.material);
   Targets targets = std::move(f.targets);
@@ -329,7 +313,7 @@ void run_layers(const M& grid, const IdVector<CellId, int>& material, const Targ
     AdaptOptions probe = options;
     probe.max_loops = std::min(options.max_loops, mend_probe_loops);
     probe.progress = progress_part(options.progress, 0.4, 0.5);
-    r.loops = move_smooth_loop(mesh, targets, sliding, mo, size, probe);
+    r.loops = move_smooth_loop(mesh, targets, sliding, size, probe);
     if (options.progress) options.progress("mend", 0.5);
     smooth_around_failing(mesh, sliding, size, options);
     *mend = failing_origins(mesh, f.cell_origin, size, options.threshold);
@@ -340,7 +324,7 @@ void run_layers(const M& grid, const IdVector<CellId, int>& material, const Targ
     rest.progress = progress_part(options.progress, 0.5, 1.0);
   }
   rest.max_loops = options.max_loops - r.loops;
-  r.loops += move_smooth_loop(mesh, targets, sliding, mo, size, rest, r.loops);
+  r.loops += move_smooth_loop(mesh, targets, sliding, size, rest, r.loops);
   record_step(r, mesh, "move-smooth", clock, options.progress, 1.0, "");
 
   r.mesh = std::move(mesh);
@@ -393,6 +377,17 @@ AdaptResult<M> first_layer(const M& grid, const IdVector<CellId, int>& material,
   return finish(std::move(r));
 }
 
+// The options as the steps take them: one threshold, which no smoothing sinks a cell below,
+// and the pillowing steps with the same pillow, smoothing and boundary settings.
+AdaptOptions with_shared_settings(AdaptOptions o) {
+  o.smooth.floor = o.threshold;
+  o.move.threshold = o.cavity.threshold = o.interface_pillow.threshold = o.threshold;
+  o.cavity.pillow = o.interface_pillow.pillow = o.pillow;
+  o.cavity.smooth = o.interface_pillow.smooth = o.smooth;
+  o.cavity.boundary = o.interface_pillow.boundary = o.boundary;
+  return o;
+}
+
 }  // namespace
 
 template <class M>
@@ -400,8 +395,7 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
                                        const IdVector<CellId, int>& material,
                                        const AdaptOptions& given,
                                        const reconstruct::InterfaceModel* model) {
-  AdaptOptions options = given;
-  options.smooth.floor = options.threshold;  // no smoothing sinks a cell below it
+  const AdaptOptions options = with_shared_settings(given);
   if (options.progress) options.progress("check", 0.0);
   AdaptResult<M> r;
   Timer clock;

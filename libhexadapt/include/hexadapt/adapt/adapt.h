@@ -60,13 +60,13 @@ std::string to_string(LayerStrategy strategy);
 
 struct AdaptOptions {
   AdaptMethod method = AdaptMethod::guaranteed;  ///< which pipeline runs
-  double threshold = 0.3;                        ///< S_q, the quality the guaranteed method keeps
+  /// S_q, the quality the guaranteed method keeps: the one threshold of every step (the
+  /// `threshold` of move, cavity and interface_pillow below is not read).
+  double threshold = default_threshold;
   /// Shortest edge / local input size every cell keeps (guaranteed); 0 = no size criterion.
   double min_edge = 0.1;
-  int steps = 16;                                ///< steps of the controlled move
-  /// guaranteed: a refused step of the controlled move is retried with the free nodes ahead
-  /// of the node dragged along, then with all its free neighbours (MoveOptions::drag).
-  bool drag = true;
+  /// guaranteed: the controlled move (its steps, drag and rounds).
+  MoveOptions move;
   BoundaryOptions boundary;                      ///< feature detection on the domain boundary
   TargetOptions targets;                         ///< target computation
   TargetCorrectionOptions correction;            ///< guaranteed, 3D: targets smoothed on the model
@@ -82,13 +82,13 @@ struct AdaptOptions {
   /// (mend_rounds): a first layer brings 97-100 % of them near on the 3D cases and 99.7-100 %
   /// on the extruded ones, and cavities never did better.
   double enough_share = 0.8;
-  int cavity_range = 3;  ///< guaranteed: starting vertex distance of a cavity; 0 = no cavities
-  /// guaranteed: attempts at pillowing each material's interfaces before the first move
-  /// (interface_pillow.h); 0 = none.
-  int interface_pillow_rounds = 4;
-  /// guaranteed: vertex distance of the cells left out of a material's layer around a cell
-  /// that fails the criteria.
-  int interface_pillow_carve = 0;
+  /// guaranteed: cavity pillowing (cavity_pillow.h): its starting vertex distance `range`,
+  /// 0 = no cavities. Its pillow, smooth and boundary are this struct's.
+  CavityOptions cavity;
+  /// guaranteed: the interfaces pillowed before the first move (interface_pillow.h): the
+  /// attempts per material `rounds` (0 = none) and the `carve` around a failing cell. Its
+  /// pillow, smooth and boundary are this struct's; keep_failing is the mend runs'.
+  InterfacePillowOptions interface_pillow;
   /// guaranteed, first layer: runs that keep the layers with their failing cells for the
   /// moves and a local smoothing to mend (interface_pillow.h), each one leaving the layers
   /// out around the cells the run before left failing; when none gets every cell passing,

@@ -30,7 +30,7 @@ namespace hexadapt {
 
 struct CavityOptions {
   int range = 3;           ///< vertex distance a cavity starts with
-  double threshold = 0.3;  ///< S_q: every cavity cell must reach it to be published
+  double threshold = default_threshold;  ///< S_q: every cavity cell must reach it to be published
   PillowOptions pillow;    ///< where the copies start
   SmoothOptions smooth;    ///< smoothing of the cavity's nodes
   BoundaryOptions boundary;

@@ -34,7 +34,7 @@
 namespace hexadapt {
 
 struct MoveOptions {
-  double threshold = 0.3;  ///< S_q: the smallest scaled Jacobian a step may leave
+  double threshold = default_threshold;  ///< S_q: the smallest scaled Jacobian a step may leave
   int steps = 16;          ///< a node moves 1/steps of its way at a time
   int max_rounds = 0;      ///< rounds over all nodes; 0 = 4 * steps
   bool drag = true;        ///< a refused step is retried with free neighbours dragged along

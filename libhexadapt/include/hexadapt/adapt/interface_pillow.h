@@ -33,7 +33,7 @@
 namespace hexadapt {
 
 struct InterfacePillowOptions {
-  double threshold = 0.3;  ///< S_q every cell keeps
+  double threshold = default_threshold;  ///< S_q every cell keeps
   int rounds = 4;          ///< pillowing attempts per material
   int carve = 0;           ///< vertex distance of the cells left out around a failing cell
   bool keep_failing = false;  ///< keep a layer at its first pillowing, failing cells and all
