@@ -237,8 +237,9 @@ TEST(VtkLegacy, WriterRoundTripKeepsTypesAndHexOrder) {
   EXPECT_EQ(content.substr(cells + 10 + 4 * 3, 4), be<std::int32_t>(3));
   // The title holds whole key=value pairs only: the 400-character options do not fit the
   // 255 characters, so they are left out rather than cut in the middle, and the title says so.
-  const std::string title = r.metadata.at(0).second;
-  EXPECT_EQ(title, "hexadapt: tool=hexadapt-test; ... 1 more");
+  EXPECT_NE(content.find("\nhexadapt: tool=hexadapt-test; ... 1 more\nBINARY\n"),
+            std::string::npos);
+  EXPECT_EQ(r.metadata, d.metadata);  // whole, from the field data
   std::remove(path.c_str());
 }
 
@@ -280,25 +281,32 @@ TEST(VtkLegacy, TitleHasWholePairsThisFilesFirstAndTheCommandIsKeptExactly) {
             "materials=left,bottom,top; hexadapt_case=triple-point; "
             "hexadapt_tool=hexadapt-generate; hexadapt_version=0.1.0; "
             "hexadapt_command=hexadapt-generate triple-point -o in.vtu; ... 1 more");
-  // The command whole, in the data set's field data, and read back as it was.
-  EXPECT_NE(content.find("\nFIELD FieldData 1\nhexadapt_command 1 " +
-                         std::to_string(command.size()) + " char\n" + command + "\nCELL_DATA"),
+  // The command whole, in the data set's field data, then every entry; read back as they were.
+  EXPECT_NE(content.find("\nFIELD FieldData 2\nhexadapt_command 1 " +
+                         std::to_string(command.size()) + " char\n" + command +
+                         "\nhexadapt_metadata 1 "),
             std::string::npos);
   const MeshData r = read_vtk_legacy(content, "provenance.vtk");
+  EXPECT_EQ(r.metadata, d.metadata);
+  EXPECT_EQ(r.points, d.points);
+  // A file with the command array alone (written before the metadata array) gives it back.
+  const std::size_t whole = content.find("hexadapt_metadata 1 ");
+  std::string older = content.substr(0, whole) + content.substr(content.find("\nCELL_DATA") + 1);
+  older.replace(older.find("FieldData 2"), 11, "FieldData 1");
   std::vector<std::string> commands;
-  for (const auto& [key, value] : r.metadata)
+  for (const auto& [key, value] : read_vtk_legacy(older, "older.vtk").metadata)
     if (key == "hexadapt_command") commands.push_back(value);
   EXPECT_EQ(commands, std::vector<std::string>{command});
-  EXPECT_EQ(r.points, d.points);
 }
 
-TEST(VtkLegacy, TitleThatFitsHasNoMarkAndNoCommandMeansNoField) {
+TEST(VtkLegacy, TitleThatFitsHasNoMarkAndNoCommandMeansNoCommandArray) {
   MeshData d = read_vtk_legacy(binary_voxel_file(false), "bin.vtk");
   d.metadata = {{"hexadapt_tool", "hexadapt-test"}, {"note", "two\nlines"}};
   const std::string content = written_legacy(d, "short.vtk");
   EXPECT_NE(content.find("\nhexadapt: hexadapt_tool=hexadapt-test; note=two lines\nBINARY\n"),
             std::string::npos);
   EXPECT_EQ(content.find("hexadapt_command"), std::string::npos);
+  EXPECT_EQ(read_vtk_legacy(content, "short.vtk").metadata, d.metadata);  // the line break too
 }
 
 struct Malformed {

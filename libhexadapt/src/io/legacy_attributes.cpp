@@ -1,9 +1,12 @@
 #include "legacy_attributes.h"
 
+#include <algorithm>
+#include <optional>
 #include <string>
 
 #include "hexadapt/core/error.h"
 #include "provenance.h"
+#include "vtk_xml_comment.h"
 
 namespace hexadapt::io::detail {
 
@@ -141,9 +144,9 @@ void read_section_start(LegacyScanner& s, MeshData& data, Section& sec, bool cel
                       " of the data set");
 }
 
-// Our `hexadapt_command`: the bytes of the command as a one-component char array.
-bool is_command(const DataArray& a) {
-  return a.name == command_key && a.n_components == 1 &&
+// Our `hexadapt_command` or `hexadapt_metadata`: text as a one-component char array.
+bool is_text(const DataArray& a, const char* key) {
+  return a.name == key && a.n_components == 1 &&
          (a.type == ScalarType::int8 || a.type == ScalarType::uint8);
 }
 
@@ -202,16 +205,31 @@ void read_attributes(LegacyScanner& s, MeshData& data) {
 void read_dataset_field(LegacyScanner& s, MeshData& data) {
   s.expect_token("a field name");
   const auto n_arrays = s.integer("a number of arrays", 0, 1 << 20);
+  Metadata found;
+  std::optional<Metadata> whole;
   for (std::int64_t k = 0; k < n_arrays; ++k) {
     DataArray a;
     std::string text;
     if (!read_field_array(s, a, &text)) {
-      if (!a.name.empty()) data.metadata.emplace_back(a.name, text);
-    } else if (is_command(a)) {
-      data.metadata.emplace_back(a.name, text_of(a));
+      if (!a.name.empty()) found.emplace_back(a.name, text);
+    } else if (is_text(a, command_key)) {
+      found.emplace_back(a.name, text_of(a));
+    } else if (is_text(a, metadata_key)) {
+      whole = parse_metadata_comment(text_of(a));  // not ours when it does not parse
+      if (!whole) found.emplace_back(a.name, text_of(a));
     }
     skip_metadata(s);
   }
+  if (whole) {  // every entry, the command and the title's pairs among them
+    data.metadata.erase(std::remove_if(data.metadata.begin(), data.metadata.end(),
+                                       [](const auto& e) { return e.first == "title"; }),
+                        data.metadata.end());
+    found.erase(std::remove_if(found.begin(), found.end(),
+                               [](const auto& e) { return e.first == command_key; }),
+                found.end());
+    found.insert(found.begin(), whole->begin(), whole->end());
+  }
+  data.metadata.insert(data.metadata.end(), found.begin(), found.end());
 }
 
 }  // namespace hexadapt::io::detail

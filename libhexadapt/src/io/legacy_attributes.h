@@ -15,7 +15,9 @@ void read_attributes(LegacyScanner& s, MeshData& data);
 
 /// Reads a data-set level FIELD block (the FIELD keyword already read): string arrays become
 /// metadata (name, first value), and so does our `hexadapt_command` char array (its bytes);
-/// other numeric ones (e.g. a time value) are checked and dropped.
+/// our `hexadapt_metadata` char array gives every entry back (then the title line and the
+/// command array, which repeat some, are dropped); other numeric ones (e.g. a time value)
+/// are checked and dropped.
 void read_dataset_field(LegacyScanner& s, MeshData& data);
 
 }  // namespace hexadapt::io::detail

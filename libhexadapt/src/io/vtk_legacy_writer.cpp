@@ -14,6 +14,7 @@
 #include "hexadapt/io/vtk_legacy.h"
 #include "provenance.h"
 #include "vtk_cells.h"
+#include "vtk_xml_comment.h"
 
 namespace hexadapt::io {
 
@@ -185,15 +186,20 @@ std::string title_of(const MeshData& data) {
   return t + "; ... " + std::to_string(left_out) + " more";
 }
 
-// The exact command that made the file, as a char array of the data set's field data: VTK
-// and ParaView read it as a vtkCharArray, meshio as int8 field data (it refuses String
-// arrays; after the cells, as there, meshio files it under field_data), our reader back as
-// the `hexadapt_command` entry.
-void write_command_field(BigEndianBuffer& b, const MeshData& data) {
-  const std::string* command = detail::last_command(data);
-  if (command == nullptr || command->empty()) return;
-  b.text(std::string("FIELD FieldData 1\n") + detail::command_key + " 1 " +
-         std::to_string(command->size()) + " char\n" + *command + "\n");
+// The exact command that made the file and every metadata entry (the title holds only what
+// fits in 255 characters), as char arrays of the data set's field data: VTK and ParaView
+// read them as vtkCharArrays, meshio as int8 field data (it refuses String arrays; after the
+// cells, as there, meshio files them under field_data), our reader back as the metadata.
+void write_metadata_fields(BigEndianBuffer& b, const MeshData& data) {
+  std::vector<std::pair<const char*, std::string>> fields;
+  if (const std::string* command = detail::last_command(data); command && !command->empty())
+    fields.emplace_back(detail::command_key, *command);
+  if (!data.metadata.empty())
+    fields.emplace_back(detail::metadata_key, detail::metadata_comment(data.metadata));
+  if (fields.empty()) return;
+  b.text("FIELD FieldData " + std::to_string(fields.size()) + "\n");
+  for (const auto& [key, text] : fields)
+    b.text(std::string(key) + " 1 " + std::to_string(text.size()) + " char\n" + text + "\n");
 }
 
 void write_section(BigEndianBuffer& b, const std::vector<DataArray>& arrays, const char* keyword,
@@ -248,7 +254,7 @@ void write_vtk_legacy(const MeshData& data, const std::string& path) {
                       [&](std::size_t e) { return data.points[e / 3][static_cast<int>(e % 3)]; });
   b.text("\n");
   write_cells(b, data);
-  write_command_field(b, data);
+  write_metadata_fields(b, data);
   write_section(b, data.cell_data, "CELL_DATA", static_cast<std::size_t>(data.n_cells()));
   write_section(b, data.point_data, "POINT_DATA", data.points.size());
   write_file_atomically(path, b.str());
