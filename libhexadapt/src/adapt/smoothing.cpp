@@ -63,7 +63,8 @@ double pattern_search(M& mesh, NodeId n, const std::vector<NodeId>& around,
     bool improved = true;
     while (improved) {
       // A worst cell that no position of n raises (its worst corner or its shortest edge is
-      // away from n) ends the search: most searches ended so, after trying every step.
+      // away from n) ends the search, which would try every step in vain (72 % of the
+      // searches on balldrop 40^3 at t = 1.5).
       if (!capped_checked && scores.capped(best + search_gain)) {
         q = best;
         return best - start;
