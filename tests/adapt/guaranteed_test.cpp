@@ -324,10 +324,16 @@ TEST(GuaranteedMethod, ReportsTheNodesItCouldNotMove) {
   }
 }
 
-TEST(GuaranteedMethod, HoldsAHigherThresholdInAnExtrudedCase) {
+// A triple point extruded into 2 hex layers, with its fractions.
+std::pair<HexMesh, Fractions> extruded_triple_point() {
   const double h = 1.0 / 8;
-  const HexMesh grid = make_hex_grid(28, 12, 2, Vec3::Zero(), Vec3(2 * h, 2 * h, h));
-  const Fractions f = test::sample_fractions(grid, test::triple_point(7.0), 3, 4);
+  HexMesh grid = make_hex_grid(28, 12, 2, Vec3::Zero(), Vec3(2 * h, 2 * h, h));
+  Fractions f = test::sample_fractions(grid, test::triple_point(7.0), 3, 4);
+  return {std::move(grid), std::move(f)};
+}
+
+TEST(GuaranteedMethod, HoldsAHigherThresholdInAnExtrudedCase) {
+  const auto [grid, f] = extruded_triple_point();
   AdaptOptions o = guaranteed_options();
   o.threshold = 0.5;
   const auto r = adapt(grid, f, test::majority(f), o);
@@ -336,9 +342,7 @@ TEST(GuaranteedMethod, HoldsAHigherThresholdInAnExtrudedCase) {
 
 // AdaptOptions holds one threshold: the step options it holds take it, whatever theirs says.
 TEST(GuaranteedMethod, EveryStepKeepsTheOneThreshold) {
-  const double h = 1.0 / 8;
-  const HexMesh grid = make_hex_grid(28, 12, 2, Vec3::Zero(), Vec3(2 * h, 2 * h, h));
-  const Fractions f = test::sample_fractions(grid, test::triple_point(7.0), 3, 4);
+  const auto [grid, f] = extruded_triple_point();
   AdaptOptions o = guaranteed_options();
   o.threshold = 0.5;
   o.layers = LayerStrategy::both;  // the interface pillows, the move and the cavities
