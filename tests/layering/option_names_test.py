@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
-"""The library's messages never name a tool or a tool's flag: an option is named by its Options field in
-braces ({sum_tolerance}, core/error.h), which the tools show as their flag (tools/common/cli.cpp,
-with_flags). Fails on a string literal of the library holding a flag (--name), and on a braced
-field that no tool has a flag for (the field's name with dashes, or a name of cli.cpp's
-flag_names)."""
+"""The library's messages never name a tool or a tool's flag: an option is named by its
+Options field in braces ({sum_tolerance}, core/error.h), which the tools show as their flag
+(tools/common/cli.cpp, with_flags). Fails on a string literal of the library holding a flag
+(--name) or a tool's name, and on a braced field that no tool has a flag for (the field's
+name with dashes, or a name of cli.cpp's flag_names)."""
 import pathlib
 import re
 import sys

@@ -133,7 +133,8 @@ TEST(CellSize, ShapeAndSizeInOnePassAreTheTwoApart) {
 // that corner scores above the bound (nor gets a longer shortest edge than the edges away
 // from it), and a cell whose worst corner is away from the moving one is at its bound.
 template <std::size_t N>
-void check_bounds(const std::vector<std::array<Vec3, N>>& cells, double (*sj)(const std::array<Vec3, N>&),
+void check_bounds(const std::vector<std::array<Vec3, N>>& cells,
+                  double (*sj)(const std::array<Vec3, N>&),
                   ShapeAndSizeBound (*bound)(const std::array<Vec3, N>&, std::size_t),
                   EdgeLengths (*edges)(const std::array<Vec3, N>&)) {
   std::mt19937 rng(11);

@@ -1,6 +1,7 @@
 // Private to the VTK readers and writers: MeshData::metadata as one XML comment, so that
 // readers which reject String field data (meshio 5) still read the file and a person
-// opening it sees the provenance (a legacy .vtk carries the same text as a char array). The escaping is described in hexadapt/io/vtk_xml.h.
+// opening it sees the provenance (a legacy .vtk carries the same text as a char array). The
+// escaping is described in hexadapt/io/vtk_xml.h.
 #pragma once
 
 #include <optional>
