@@ -19,24 +19,26 @@ namespace hexadapt::cli {
 namespace {
 std::vector<std::string> g_args;  // the command line as given, for provenance
 
-// A tolerance or threshold: a finite number >= 0. CLI11 names the flag in the usage error.
-const CLI::Validator finite_non_negative(
-    [](std::string& text) -> std::string {
-      double v = 0;
-      if (!CLI::detail::lexical_cast(text, v) || !std::isfinite(v) || v < 0)
-        return "expected a finite number >= 0, got " + text;
-      return {};
-    },
+// A number flag's check: a number for which `ok` holds, else "<requirement>, got TEXT".
+// CLI11 names the flag in the usage error.
+CLI::Validator number_check(bool (*ok)(double), const std::string& requirement,
+                            const std::string& description) {
+  return CLI::Validator(
+      [ok, requirement](std::string& text) -> std::string {
+        double v = 0;
+        if (CLI::detail::lexical_cast(text, v) && ok(v)) return {};
+        return requirement + ", got " + text;
+      },
+      description);
+}
+
+// A tolerance or threshold: a finite number >= 0.
+const CLI::Validator finite_non_negative = number_check(
+    [](double v) { return std::isfinite(v) && v >= 0; }, "expected a finite number >= 0",
     "NUMBER>=0");
 
-const CLI::Validator finite_number(
-    [](std::string& text) -> std::string {
-      double v = 0;
-      if (!CLI::detail::lexical_cast(text, v) || !std::isfinite(v))
-        return "expected a finite number, got " + text;
-      return {};
-    },
-    "NUMBER");
+const CLI::Validator finite_number = number_check([](double v) { return std::isfinite(v); },
+                                                  "expected a finite number", "NUMBER");
 
 // --label-names: VALUE=NAME entries, VALUE an integer.
 std::map<std::int64_t, std::string> parse_label_names(const std::vector<std::string>& entries) {
@@ -55,6 +57,11 @@ std::map<std::int64_t, std::string> parse_label_names(const std::vector<std::str
   return names;
 }
 }  // namespace
+
+const CLI::Validator positive = number_check([](double v) { return v > 0; }, "must be > 0",
+                                             "POSITIVE");
+const CLI::Validator non_negative = number_check([](double v) { return v >= 0; }, "must be >= 0",
+                                                 "NONNEGATIVE");
 
 void add_common_options(CLI::App& app, CommonOptions& options, bool with_output) {
   app.set_version_flag("--version", std::string("hexadapt ") + HEXADAPT_VERSION,
@@ -168,24 +175,6 @@ std::string flag_of(const CLI::App& app, std::string_view field) {
 }
 
 }  // namespace
-
-namespace {
-
-CLI::Validator number_check(bool strict) {
-  return CLI::Validator(
-      [strict](std::string& text) -> std::string {
-        double v = 0;
-        if (!CLI::detail::lexical_cast(text, v)) return "not a number: " + text;
-        if (strict ? v > 0 : v >= 0) return {};
-        return std::string(strict ? "must be > 0" : "must be >= 0") + ", got " + text;
-      },
-      strict ? "POSITIVE" : "NONNEGATIVE");
-}
-
-}  // namespace
-
-const CLI::Validator positive = number_check(true);
-const CLI::Validator non_negative = number_check(false);
 
 std::string with_flags(const CLI::App& app, std::string_view text) {
   std::string out;

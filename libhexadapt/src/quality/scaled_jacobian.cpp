@@ -40,6 +40,12 @@ bool unit_edge(const quality_detail::HexEdges& e, std::size_t k, Vec3& out) {
   return true;
 }
 
+// A quad corner's Jacobian: the cross product of its two edges made unit.
+double unit_cross(const Eigen::Vector2d& a, double la, const Eigen::Vector2d& b, double lb) {
+  const Eigen::Vector2d ua = a / la, ub = b / lb;
+  return ua.x() * ub.y() - ua.y() * ub.x();
+}
+
 }  // namespace
 
 double quality_detail::hex_scaled_jacobian(const std::array<Vec3, 8>& p,
@@ -117,8 +123,7 @@ double quad_scaled_jacobian(const std::array<Vec3, 4>& p) {
     const auto [a, b] = quality_detail::quad_corner_frame(p, v);
     const double la = a.norm(), lb = b.norm();
     if (!(la > tiny && lb > tiny)) return -1.0;
-    const Eigen::Vector2d ua = a / la, ub = b / lb;
-    worst = std::min(worst, ua.x() * ub.y() - ua.y() * ub.x());
+    worst = std::min(worst, unit_cross(a, la, b, lb));
   }
   return std::clamp(worst, -1.0, 1.0);
 }
@@ -128,8 +133,7 @@ double quality_detail::quad_scaled_jacobian_bound(const std::array<Vec3, 4>& p,
   const auto [a, b] = quality_detail::quad_corner_frame(p, (moving + 2) % 4);
   const double la = a.norm(), lb = b.norm();
   if (!(la > 0 && lb > 0) || !std::isfinite(la) || !std::isfinite(lb)) return 1.0;
-  const Eigen::Vector2d ua = a / la, ub = b / lb;
-  const double j = ua.x() * ub.y() - ua.y() * ub.x();
+  const double j = unit_cross(a, la, b, lb);
   return std::isfinite(j) ? std::clamp(j, -1.0, 1.0) : 1.0;
 }
 

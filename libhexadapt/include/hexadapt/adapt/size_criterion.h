@@ -77,14 +77,21 @@ double node_local_size(const M& mesh, NodeId n, const SizeCriterion& size) {
 template <class M>
 double size_ratio(const M& mesh, CellId c, const SizeCriterion& size);
 
+/// The score of cell c from its scaled Jacobian and its shortest edge (or bounds of them).
+inline double score_of(double scaled_jacobian, double shortest_edge, CellId c,
+                       const SizeCriterion& size) {
+  if (!size.on()) return scaled_jacobian;
+  const double r = shortest_edge / size.min_length(c);
+  return r < 1 ? -2.0 + r : scaled_jacobian;
+}
+
 /// The scaled Jacobian, or -2 + size_ratio in [-2, -1) when the size criterion fails.
 template <class M>
 double cell_score(const M& mesh, CellId c, const SizeCriterion& size) {
   if (!size.on()) return mesh.cell_quality(c);
   if constexpr (M::dim == 3) {  // the hex's edges once for both criteria
     const HexShapeAndSize m = hex_shape_and_size(mesh.cell_points(c));
-    const double r = m.edges.min / size.min_length(c);
-    return r < 1 ? -2.0 + r : m.scaled_jacobian;
+    return score_of(m.scaled_jacobian, m.edges.min, c, size);
   } else {
     const double r = size_ratio(mesh, c, size);
     return r < 1 ? -2.0 + r : mesh.cell_quality(c);
@@ -102,9 +109,7 @@ double cell_score_bound(const M& mesh, CellId c, const SizeCriterion& size, std:
     b = hex_bound_moving(mesh.cell_points(c), moving);
   else
     b = quad_bound_moving(mesh.cell_points(c), moving);
-  if (!size.on()) return b.scaled_jacobian;
-  const double r = b.shortest_edge / size.min_length(c);
-  return r < 1 ? -2.0 + r : b.scaled_jacobian;
+  return score_of(b.scaled_jacobian, b.shortest_edge, c, size);
 }
 
 /// Smallest score of the cells around n (1 when n has no cell). With `stop_below`, returns
