@@ -5,7 +5,7 @@
 #include <string>
 
 #include "hexadapt/core/error.h"
-#include "hexadapt/mesh/geometry.h"
+#include "hexadapt/core/geometry.h"
 
 namespace hexadapt {
 
@@ -39,8 +39,8 @@ template <class M>
 Attempt<M> try_pillow(const M& mesh, const IdVector<CellId, char>& set,
                       const IdVector<NodeId, char>& fixed, const SizeCriterion& size,
                       const InterfacePillowOptions& o) {
-  Attempt<M> a{pillow_cells(mesh, set, boundary_constraints(mesh, o.boundary), o.pillow, size),
-               {}, {}};
+  Attempt<M> a{
+      pillow_cells(mesh, set, boundary_constraints(mesh, o.boundary), o.pillow, size), {}, {}};
   a.size = size.remapped(a.p.cell_origin.raw());
   smooth(a.p.mesh, layer_movable(a.p, mesh.n_nodes(), fixed),
          boundary_constraints(a.p.mesh, o.boundary), o.smooth, nullptr, a.size);

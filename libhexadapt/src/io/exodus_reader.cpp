@@ -13,8 +13,8 @@
 #include "exodus_file.h"
 #include "exodus_guard.h"
 #include "hexadapt/core/error.h"
+#include "hexadapt/core/geometry.h"
 #include "hexadapt/io/exodus.h"
-#include "hexadapt/mesh/geometry.h"
 #include "netcdf_extent.h"
 #include "time_step.h"
 

@@ -6,7 +6,7 @@
 #include <map>
 #include <utility>
 
-#include "hexadapt/mesh/geometry.h"
+#include "hexadapt/core/geometry.h"
 
 namespace hexadapt::io::detail {
 

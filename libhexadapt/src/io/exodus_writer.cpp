@@ -12,9 +12,9 @@
 #include "exodus_file.h"
 #include "exodus_sets.h"
 #include "hexadapt/core/error.h"
+#include "hexadapt/core/geometry.h"
 #include "hexadapt/io/atomic_file.h"
 #include "hexadapt/io/exodus.h"
-#include "hexadapt/mesh/geometry.h"
 #include "material_names.h"
 
 namespace hexadapt::io {

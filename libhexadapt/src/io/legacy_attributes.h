@@ -2,8 +2,8 @@
 // blocks that follow the geometry of a data set.
 #pragma once
 
+#include "hexadapt/io/legacy_scanner.h"
 #include "hexadapt/io/mesh_data.h"
-#include "legacy_scanner.h"
 
 namespace hexadapt::io::detail {
 

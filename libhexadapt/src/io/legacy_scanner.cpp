@@ -1,4 +1,4 @@
-#include "legacy_scanner.h"
+#include "hexadapt/io/legacy_scanner.h"
 
 #include <algorithm>
 #include <array>
@@ -7,7 +7,7 @@
 
 #include "hexadapt/core/error.h"
 
-namespace hexadapt::io::detail {
+namespace hexadapt::io {
 
 namespace {
 
@@ -297,4 +297,4 @@ std::string LegacyScanner::strings(std::size_t n) {
   return first;
 }
 
-}  // namespace hexadapt::io::detail
+}  // namespace hexadapt::io

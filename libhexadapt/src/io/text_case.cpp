@@ -8,14 +8,12 @@
 #include <string>
 
 #include "hexadapt/core/error.h"
-#include "legacy_scanner.h"
+#include "hexadapt/io/legacy_scanner.h"
 #include "vtk_cells.h"
 
 namespace hexadapt::io {
 
 namespace {
-
-using detail::LegacyScanner;
 
 constexpr std::int64_t kMaxIds = std::numeric_limits<index_t>::max();
 
@@ -67,7 +65,7 @@ void read_structured_mesh(LegacyScanner& s, int dim, MeshData& data, CellNumberi
 
 void read_unstructured_mesh(LegacyScanner& s, MeshData& data, CellNumbering& numbering) {
   const auto n_nodes = s.integer("a number of nodes", 0, kMaxIds);
-  static constexpr detail::LegacyType kDouble{"double", ScalarType::float64, 8, true};
+  static constexpr LegacyType kDouble{"double", ScalarType::float64, 8, true};
   const auto xyz = s.reals(kDouble, 3 * static_cast<std::size_t>(n_nodes), "node coordinates");
   for (std::size_t p = 0; p < static_cast<std::size_t>(n_nodes); ++p)
     data.points.emplace_back(xyz[3 * p], xyz[3 * p + 1], xyz[3 * p + 2]);

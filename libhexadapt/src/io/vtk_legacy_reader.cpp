@@ -5,17 +5,14 @@
 #include <string>
 
 #include "hexadapt/core/error.h"
+#include "hexadapt/io/legacy_scanner.h"
 #include "hexadapt/io/vtk_legacy.h"
 #include "legacy_attributes.h"
-#include "legacy_scanner.h"
 #include "vtk_cells.h"
 
 namespace hexadapt::io {
 
 namespace {
-
-using detail::keyword_is;
-using detail::LegacyScanner;
 
 enum class Kind { points, rectilinear, structured, unstructured };
 
@@ -61,7 +58,7 @@ void read_points(LegacyScanner& s, Geometry& g) {
   if (g.kind == Kind::structured && g.have_dims && n != n_structured_points(s, g))
     s.fail_at(at, "POINTS " + std::to_string(n) + " does not match DIMENSIONS (" +
                       std::to_string(n_structured_points(s, g)) + " points)");
-  const detail::LegacyType& t = s.data_type();
+  const LegacyType& t = s.data_type();
   const auto xyz = s.reals(t, 3 * static_cast<std::size_t>(n), "point coordinates");
   g.points.resize(static_cast<std::size_t>(n));
   for (std::size_t p = 0; p < g.points.size(); ++p)
@@ -83,7 +80,7 @@ void read_coordinates(LegacyScanner& s, Geometry& g, int axis) {
 
 // Classic layout: "CELLS n size" then, per cell, its node count and node ids (32-bit ints).
 void read_classic_cells(LegacyScanner& s, Geometry& g, std::int64_t n, std::int64_t size) {
-  static constexpr detail::LegacyType kInt{"int", ScalarType::int32, 4, false};
+  static constexpr LegacyType kInt{"int", ScalarType::int32, 4, false};
   const std::size_t at = s.position();
   const auto list = s.integers(kInt, static_cast<std::size_t>(size), "cell list entries");
   g.offsets.assign(1, 0);
@@ -134,7 +131,7 @@ void read_cells(LegacyScanner& s, Geometry& g) {
 }
 
 void read_cell_types(LegacyScanner& s, Geometry& g) {
-  static constexpr detail::LegacyType kInt{"int", ScalarType::int32, 4, false};
+  static constexpr LegacyType kInt{"int", ScalarType::int32, 4, false};
   const std::size_t at = s.mark();
   const auto n = s.integer("a number of cell types", 0, kMaxIds);
   if (!g.have_cells) s.fail_at(at, "CELL_TYPES before CELLS");

@@ -8,7 +8,7 @@
 
 #include <vector>
 
-#include "hexadapt/mesh/geometry.h"
+#include "hexadapt/core/geometry.h"
 
 namespace hexadapt::clip {
 

@@ -11,9 +11,9 @@
 
 #include <vector>
 
+#include "hexadapt/core/geometry.h"
 #include "hexadapt/core/ids.h"
 #include "hexadapt/core/log.h"
-#include "hexadapt/mesh/geometry.h"
 
 namespace hexadapt {
 namespace io {

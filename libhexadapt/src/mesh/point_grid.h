@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "hexadapt/core/geometry.h"
 #include "hexadapt/core/ids.h"
-#include "hexadapt/mesh/geometry.h"
 
 namespace hexadapt {
 

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <utility>
 
-#include "hexadapt/mesh/geometry.h"
+#include "hexadapt/core/geometry.h"
 
 namespace hexadapt::quality_detail {
 

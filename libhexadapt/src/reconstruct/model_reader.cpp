@@ -4,8 +4,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "../io/legacy_scanner.h"
 #include "hexadapt/core/error.h"
+#include "hexadapt/io/legacy_scanner.h"
 #include "hexadapt/reconstruct/model_io.h"
 #include "model_title.h"
 
@@ -13,8 +13,8 @@ namespace hexadapt::reconstruct {
 
 namespace {
 
-using io::detail::keyword_is;
-using io::detail::LegacyScanner;
+using io::keyword_is;
+using io::LegacyScanner;
 
 constexpr std::string_view title_prefix = "hexadapt interface model; materials:";
 
@@ -29,7 +29,7 @@ void read_header(LegacyScanner& in, ModelFile& out) {
   const std::string title(in.line());
   if (title.rfind(title_prefix, 0) != 0)
     in.fail_at(at, "expected the title '" + std::string(title_prefix) +
-                      " ...' of a geometric model (written by write_model_vtk)");
+                       " ...' of a geometric model (written by write_model_vtk)");
   std::istringstream names(title.substr(title_prefix.size()));
   for (std::string n; names >> n;) out.materials.push_back(detail::name_from_title(n));
   if (!keyword_is(in.expect_token("ASCII"), "ASCII")) in.fail("expected ASCII");
@@ -44,7 +44,8 @@ void read_points(LegacyScanner& in, InterfaceModel& m) {
   const auto& type = in.data_type();
   const std::vector<double> xyz = in.reals(type, 3 * n, "point coordinates");
   m.points.resize(n);
-  for (std::size_t i = 0; i < n; ++i) m.points[i] = Vec3(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+  for (std::size_t i = 0; i < n; ++i)
+    m.points[i] = Vec3(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
 }
 
 // One VERTICES / LINES / POLYGONS block of cells with `size` nodes each.
@@ -57,8 +58,8 @@ void read_block(LegacyScanner& in, std::size_t size, std::size_t n_points, Cells
       in.fail("expected cells of " + std::to_string(size) + " points");
     std::vector<index_t> v;
     for (std::size_t k = 0; k < size; ++k)
-      v.push_back(static_cast<index_t>(
-          in.integer("point id", 0, static_cast<std::int64_t>(n_points) - 1)));
+      v.push_back(
+          static_cast<index_t>(in.integer("point id", 0, static_cast<std::int64_t>(n_points) - 1)));
     cells.nodes.push_back(std::move(v));
   }
 }
@@ -85,8 +86,7 @@ std::vector<std::int64_t> read_arrays(LegacyScanner& in, std::size_t n, const ch
   // The FIELD block holds material_lo, material_hi, kind in that order.
   const std::string_view got = in.expect_token(name);
   if (got != name) in.fail("expected the array " + std::string(name));
-  if (in.integer("components", 1, 1) != 1 ||
-      static_cast<std::size_t>(in.integer("tuples")) != n)
+  if (in.integer("components", 1, 1) != 1 || static_cast<std::size_t>(in.integer("tuples")) != n)
     in.fail("expected " + std::string(name) + " 1 " + std::to_string(n));
   const auto& type = in.data_type();
   return in.integers(type, n, name);

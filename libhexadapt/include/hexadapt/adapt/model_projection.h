@@ -14,7 +14,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "hexadapt/mesh/geometry.h"
+#include "hexadapt/core/geometry.h"
 #include "hexadapt/reconstruct/model.h"
 
 namespace hexadapt {

@@ -26,11 +26,11 @@
 #include <vector>
 
 #include "hexadapt/assign/majority.h"
+#include "hexadapt/core/geometry.h"
 #include "hexadapt/core/ids.h"
 #include "hexadapt/core/log.h"
 #include "hexadapt/core/timer.h"
 #include "hexadapt/mesh/fractions.h"
-#include "hexadapt/mesh/geometry.h"
 
 namespace hexadapt::assign {
 

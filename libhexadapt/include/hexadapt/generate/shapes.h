@@ -13,7 +13,7 @@
 #include <memory>
 #include <vector>
 
-#include "hexadapt/mesh/geometry.h"
+#include "hexadapt/core/geometry.h"
 
 namespace hexadapt::generate {
 

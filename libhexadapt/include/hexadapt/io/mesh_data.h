@@ -12,14 +12,25 @@
 #include <utility>
 #include <vector>
 
+#include "hexadapt/core/geometry.h"
 #include "hexadapt/core/ids.h"
 #include "hexadapt/mesh/cell_complex.h"
-#include "hexadapt/mesh/geometry.h"
 
 namespace hexadapt::io {
 
 /// The element type an array had in its file (kept so that writing it back keeps it).
-enum class ScalarType { int8, uint8, int16, uint16, int32, uint32, int64, uint64, float32, float64 };
+enum class ScalarType {
+  int8,
+  uint8,
+  int16,
+  uint16,
+  int32,
+  uint32,
+  int64,
+  uint64,
+  float32,
+  float64
+};
 
 struct DataArray {
   std::string name;
@@ -48,7 +59,9 @@ struct MeshData {
 
   int nodes_per_cell() const { return dim == 3 ? 8 : 4; }
   index_t n_cells() const {
-    return dim == 0 ? 0 : static_cast<index_t>(cells.size() / static_cast<std::size_t>(nodes_per_cell()));
+    return dim == 0
+               ? 0
+               : static_cast<index_t>(cells.size() / static_cast<std::size_t>(nodes_per_cell()));
   }
   index_t n_points() const { return static_cast<index_t>(points.size()); }
 

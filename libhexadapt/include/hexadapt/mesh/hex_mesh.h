@@ -10,8 +10,8 @@
 #include <array>
 #include <vector>
 
+#include "hexadapt/core/geometry.h"
 #include "hexadapt/core/ids.h"
-#include "hexadapt/mesh/geometry.h"
 #include "hexadapt/mesh/node_cells.h"
 
 namespace hexadapt {

@@ -23,8 +23,8 @@
 
 #include <vector>
 
+#include "hexadapt/core/geometry.h"
 #include "hexadapt/core/ids.h"
-#include "hexadapt/mesh/geometry.h"
 
 namespace hexadapt {
 

@@ -8,13 +8,12 @@
 // that need its circulators and properties.
 #pragma once
 
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <array>
 #include <vector>
 
-#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
-
+#include "hexadapt/core/geometry.h"
 #include "hexadapt/core/ids.h"
-#include "hexadapt/mesh/geometry.h"
 #include "hexadapt/mesh/node_cells.h"
 
 namespace hexadapt {

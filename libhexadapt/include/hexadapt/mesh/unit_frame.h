@@ -1,8 +1,8 @@
 // UnitFrame: the frame a stage computes in, so that a grid meshes alike in any unit and place.
 //
 // world = local * 2^exponent + origin. The exponent brings the grid's largest extent (along
-// x, y or z) into [1, 2): scaling by a power of two is exact, so a grid in metres and the same grid in
-// any power-of-two multiple of metres go through the same arithmetic, and squared lengths and
+// x, y or z) into [1, 2): scaling by a power of two is exact, so a grid in metres and the same grid
+// in any power-of-two multiple of metres go through the same arithmetic, and squared lengths and
 // volumes neither underflow (a grid at 1e-300) nor overflow (at 1e300). The origin is the
 // lowest corner when the grid lies farther from the point of coordinates 0 than its own size
 // (cells of 0.1 at 1e6 would lose digits in every difference), else 0.
@@ -11,7 +11,7 @@
 #include <cmath>
 #include <vector>
 
-#include "hexadapt/mesh/geometry.h"
+#include "hexadapt/core/geometry.h"
 
 namespace hexadapt {
 
@@ -23,9 +23,7 @@ struct UnitFrame {
   Vec3 to_local(const Vec3& world) const { return scaled(world - origin, -exponent); }
   Vec3 to_world(const Vec3& local) const { return scaled(local, exponent) + origin; }
   /// A length (power 1), area (2) or volume (3) back in world units.
-  double to_world(double local, int power = 1) const {
-    return std::ldexp(local, exponent * power);
-  }
+  double to_world(double local, int power = 1) const { return std::ldexp(local, exponent * power); }
 
  private:
   static Vec3 scaled(const Vec3& v, int e) {

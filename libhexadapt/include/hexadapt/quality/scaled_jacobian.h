@@ -14,7 +14,7 @@
 
 #include <array>
 
-#include "hexadapt/mesh/geometry.h"
+#include "hexadapt/core/geometry.h"
 
 namespace hexadapt {
 

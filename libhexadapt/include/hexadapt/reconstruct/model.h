@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "hexadapt/core/geometry.h"
 #include "hexadapt/core/ids.h"
-#include "hexadapt/mesh/geometry.h"
 #include "hexadapt/reconstruct/pixel_mesh.h"
 
 namespace hexadapt::reconstruct {
@@ -29,8 +29,8 @@ struct InterfaceModel {
   /// normal points from the lo material to the hi one.
   std::vector<std::array<index_t, 4>> facets;
   std::vector<std::array<int, 2>> facet_materials;  ///< {lo, hi}, lo < hi
-  std::vector<std::array<index_t, 2>> curves;        ///< 3D feature edges
-  std::vector<index_t> corners;                      ///< feature points
+  std::vector<std::array<index_t, 2>> curves;       ///< 3D feature edges
+  std::vector<index_t> corners;                     ///< feature points
   int nodes_per_facet() const { return dim == 3 ? 4 : 2; }
 };
 

@@ -20,9 +20,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "hexadapt/core/geometry.h"
 #include "hexadapt/core/ids.h"
 #include "hexadapt/mesh/fractions.h"
-#include "hexadapt/mesh/geometry.h"
 
 namespace hexadapt::reconstruct {
 
@@ -128,8 +128,8 @@ class PixelMesh {
 /// coarse cell's material. Throws InputError when sizes or materials are inconsistent,
 /// OptionError for nsub out of [1, 64].
 template <class M>
-PixelPlan plan_pixels(const M& mesh, const Fractions& fractions,
-                      const std::vector<int>& assignment, const PixelOptions& options);
+PixelPlan plan_pixels(const M& mesh, const Fractions& fractions, const std::vector<int>& assignment,
+                      const PixelOptions& options);
 
 /// Builds the pixel mesh; fixed pixels get their cell's assigned material, free ones
 /// PixelMesh::unassigned. Throws ResourceError when the plan exceeds options.max_memory.

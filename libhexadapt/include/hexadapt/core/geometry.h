@@ -5,10 +5,9 @@
 // vtk_to_binary below). The faces of the reference hex are listed with outward normals.
 #pragma once
 
-#include <array>
-
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <array>
 
 namespace hexadapt {
 
@@ -50,9 +49,18 @@ inline constexpr std::array<std::array<int, 4>, 6> face_nodes = {{
     {4, 5, 7, 6},  // z+
 }};
 /// The 12 edges: four along x, four along y, four along z.
-inline constexpr std::array<std::array<int, 2>, 12> edges = {{{0, 1}, {2, 3}, {4, 5}, {6, 7},
-                                                              {0, 2}, {1, 3}, {4, 6}, {5, 7},
-                                                              {0, 4}, {1, 5}, {2, 6}, {3, 7}}};
+inline constexpr std::array<std::array<int, 2>, 12> edges = {{{0, 1},
+                                                              {2, 3},
+                                                              {4, 5},
+                                                              {6, 7},
+                                                              {0, 2},
+                                                              {1, 3},
+                                                              {4, 6},
+                                                              {5, 7},
+                                                              {0, 4},
+                                                              {1, 5},
+                                                              {2, 6},
+                                                              {3, 7}}};
 /// binary node b is VTK_HEXAHEDRON node vtk_of_binary[b] (the table is its own inverse).
 inline constexpr std::array<int, 8> vtk_of_binary = {0, 1, 3, 2, 4, 5, 7, 6};
 }  // namespace ref_hex

@@ -1,4 +1,5 @@
-// Private to the legacy VTK reader: a cursor over a whole file held in memory.
+// A cursor over a whole legacy-VTK-format file held in memory: the legacy VTK readers and
+// reconstruct's model reader scan with it.
 //
 // Keyword lines are ASCII in both file types; the data after them is either whitespace-
 // separated numbers (ASCII files) or big-endian raw values starting right after the
@@ -16,7 +17,7 @@
 
 #include "hexadapt/io/mesh_data.h"
 
-namespace hexadapt::io::detail {
+namespace hexadapt::io {
 
 /// A VTK legacy data type name and how its values are stored.
 struct LegacyType {
@@ -95,4 +96,4 @@ std::string decode_name(std::string_view s);
 /// Case-insensitive equality with an upper-case keyword.
 bool keyword_is(std::string_view token, std::string_view keyword);
 
-}  // namespace hexadapt::io::detail
+}  // namespace hexadapt::io
