@@ -23,9 +23,9 @@ namespace {
 
 using namespace hexadapt;
 
-std::vector<int> stripes(index_t n) {
-  std::vector<int> m(static_cast<std::size_t>(n));
-  for (std::size_t i = 0; i < m.size(); ++i) m[i] = static_cast<int>((i / 7) % 3);
+CellMaterials stripes(index_t n) {
+  CellMaterials m(static_cast<std::size_t>(n));
+  for (CellId c : id_range<CellId>(n)) m[c] = (c.value() / 7) % 3;
   return m;
 }
 

@@ -13,6 +13,7 @@
 
 #include "hexadapt/core/parallel.h"
 #include "hexadapt/core/timer.h"
+#include "hexadapt/mesh/fractions.h"
 #include "hexadapt/mesh/structured.h"
 #include "hexadapt/reconstruct/reconstruct.h"
 
@@ -57,7 +58,9 @@ Fractions fractions(const HexMesh& mesh, const Shape& s, int samples) {
 Shape triple_point() {
   auto left = [](const Vec3& p) { return p.x() < 1 + 0.25 * std::sin(2.1 * p.y()); };
   auto low = [](const Vec3& p) { return p.y() < 1.5 + 0.3 * std::sin(1.3 * p.x()); };
-  return {3, [=](const Vec3& p) { return left(p) ? 0 : low(p) ? 1 : 2; },
+  return {3, [=](const Vec3& p) { return left(p)  ? 0
+                                         : low(p) ? 1
+                                                  : 2; },
           [=](const Vec3& c) {
             const double h = 7.0 / 420 * 1.5;
             return std::abs(c.x() - 1 - 0.25 * std::sin(2.1 * c.y())) < 0.6 * 2.1 * h + h ||
@@ -98,8 +101,7 @@ int main(int argc, char** argv) {
     return 1;
   }
   const Fractions f = fractions(mesh, shape, 6);
-  std::vector<int> assignment(static_cast<std::size_t>(mesh.n_cells()));
-  for (CellId c : id_range<CellId>(mesh.n_cells())) assignment[c.idx()] = f.majority(c);
+  const CellMaterials assignment = majority_materials(f);
   const double setup = t.seconds();
   const long setup_kb = peak_kb();
   t.restart();
@@ -111,14 +113,18 @@ int main(int argc, char** argv) {
   std::printf("case %s: %d cells, nsub %d, %lld pixels (%lld free) in %d cells\n", which.c_str(),
               mesh.n_cells(), r.plan.nsub, static_cast<long long>(r.plan.n_pixels),
               static_cast<long long>(r.plan.n_free_pixels), r.plan.n_blocks);
-  std::printf("setup (grid + fractions) %.2f s, peak %.0f MB\n", setup, static_cast<double>(setup_kb) / 1e3);
+  std::printf("setup (grid + fractions) %.2f s, peak %.0f MB\n", setup,
+              static_cast<double>(setup_kb) / 1e3);
   std::printf("reconstruct %.2f s:", run);
   for (const auto& [phase, s] : r.times) std::printf(" %s %.2f s", phase.c_str(), s);
-  std::printf("\ngreedy rounds %d, fallback pixels %lld", r.greedy.rounds, static_cast<long long>(r.greedy.fallback_pixels));
-  std::printf("\nestimate %.0f MB, peak RSS %.0f MB\n", r.plan.bytes / 1e6, static_cast<double>(peak_kb()) / 1e3);
-  std::printf("edgecut %lld, discrepancy %.6g (relative %.3g), model %zu facets %zu curves %zu corners\n",
-              static_cast<long long>(r.edgecut), r.discrepancy + r.unpixelated_discrepancy,
-              (r.discrepancy + r.unpixelated_discrepancy) / r.domain_volume, rec.model.facets.size(),
-              rec.model.curves.size(), rec.model.corners.size());
+  std::printf("\ngreedy rounds %d, fallback pixels %lld", r.greedy.rounds,
+              static_cast<long long>(r.greedy.fallback_pixels));
+  std::printf("\nestimate %.0f MB, peak RSS %.0f MB\n", r.plan.bytes / 1e6,
+              static_cast<double>(peak_kb()) / 1e3);
+  std::printf(
+      "edgecut %lld, discrepancy %.6g (relative %.3g), model %zu facets %zu curves %zu corners\n",
+      static_cast<long long>(r.edgecut), r.discrepancy + r.unpixelated_discrepancy,
+      (r.discrepancy + r.unpixelated_discrepancy) / r.domain_volume, rec.model.facets.size(),
+      rec.model.curves.size(), rec.model.corners.size());
   return 0;
 }

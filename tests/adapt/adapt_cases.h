@@ -76,12 +76,6 @@ Fractions sample_fractions(const M& mesh, const Shape& shape, int n_materials, i
   return f;
 }
 
-inline IdVector<CellId, int> majority(const Fractions& f) {
-  IdVector<CellId, int> m(static_cast<std::size_t>(f.n_cells()));
-  for (CellId c : id_range<CellId>(f.n_cells())) m[c] = f.majority(c);
-  return m;
-}
-
 /// Moves every interior node of a structured grid by up to `amount` per axis (seeded).
 inline std::vector<Vec3> jittered_points(int nx, int ny, int nz, double amount, unsigned seed) {
   std::mt19937 rng(seed);

@@ -4,7 +4,7 @@
 
 #include "adapt/adapt_cases.h"
 #include "hexadapt/core/error.h"
-#include "hexadapt/io/material_array.h"
+#include "hexadapt/io/assigned_grid_file.h"
 
 namespace hexadapt {
 namespace {
@@ -31,7 +31,7 @@ TEST(AdaptIo, OutputCarriesMaterialTargetAndDistance) {
   const QuadMesh grid = make_quad_grid(8, 8);
   const Fractions f = test::sample_fractions(
       grid, [](const Vec3& p) { return (p - Vec3(4.2, 3.9, 0)).norm() < 2.6; }, 2, 8);
-  const auto r = adapt(grid, f, test::majority(f));
+  const auto r = adapt(grid, f, majority_materials(f));
   const io::MeshData d = adapt_mesh_data(r, {"outside", "disk"});
   EXPECT_EQ(d.dim, 2);
   EXPECT_EQ(d.n_cells(), r.mesh.n_cells());

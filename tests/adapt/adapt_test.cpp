@@ -15,7 +15,7 @@ AdaptResult<M> run_base(const M& mesh, const test::Shape& shape, int n_materials
   const Fractions f = test::sample_fractions(mesh, shape, n_materials, samples);
   AdaptOptions o;
   o.method = AdaptMethod::base;
-  return adapt(mesh, f, test::majority(f), o);
+  return adapt(mesh, f, majority_materials(f), o);
 }
 
 // What every base result must satisfy, good quality or not.
@@ -66,16 +66,16 @@ void check_result(const M& grid, const AdaptResult<M>& r) {
 // -0.459 / -0.144 / 0.288, but 0.542 at t = 1; the extruded triple point 35x15x3 at t = 2:
 // -0.457 / -0.322 / -0.009 (inverted; -0.017 at 42x18x3), 0.418 at 56x24x3.
 void expect_base_falls_below(const test::GeneratedCase& c, double below) {
-  test::with_generated_case(c, [&](const auto& grid, const Fractions& f,
-                                   const IdVector<CellId, int>& material) {
-    AdaptOptions o;
-    o.method = AdaptMethod::base;
-    const auto r = adapt(grid, f, material, o);
-    check_result(grid, r);
-    EXPECT_LT(r.steps[1].min_quality, 0.0);  // the direct move inverts cells
-    EXPECT_LT(r.min_quality, below);
-    EXPECT_GT(r.n_below_threshold, 0);
-  });
+  test::with_generated_case(
+      c, [&](const auto& grid, const Fractions& f, const IdVector<CellId, int>& material) {
+        AdaptOptions o;
+        o.method = AdaptMethod::base;
+        const auto r = adapt(grid, f, material, o);
+        check_result(grid, r);
+        EXPECT_LT(r.steps[1].min_quality, 0.0);  // the direct move inverts cells
+        EXPECT_LT(r.min_quality, below);
+        EXPECT_GT(r.n_below_threshold, 0);
+      });
 }
 
 TEST(BaseMethod, TriplePointFallsBelowTheThresholdAtSomeResolution) {
@@ -111,9 +111,9 @@ TEST(BaseMethod, GivesTheSameMeshWhateverTheThreadCount) {
   AdaptOptions o;
   o.method = AdaptMethod::base;
   set_threads(1);
-  const auto a = adapt(grid, f, test::majority(f), o);
+  const auto a = adapt(grid, f, majority_materials(f), o);
   set_threads(2);
-  const auto b = adapt(grid, f, test::majority(f), o);
+  const auto b = adapt(grid, f, majority_materials(f), o);
   set_threads(0);
   ASSERT_EQ(a.mesh.n_nodes(), b.mesh.n_nodes());
   for (NodeId v : id_range<NodeId>(a.mesh.n_nodes())) ASSERT_EQ(a.mesh.point(v), b.mesh.point(v));
@@ -128,7 +128,7 @@ TEST(Adapt, RejectsBadOptions) {
   EXPECT_EQ(o.method, AdaptMethod::guaranteed);
   o.method = AdaptMethod::base;
   o.move.steps = 0;
-  EXPECT_THROW(adapt(grid, f, test::majority(f), o), OptionError);
+  EXPECT_THROW(adapt(grid, f, majority_materials(f), o), OptionError);
   EXPECT_EQ(parse_adapt_method("base"), AdaptMethod::base);
   EXPECT_THROW(parse_adapt_method("sculpt"), OptionError);
 }

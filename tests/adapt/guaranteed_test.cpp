@@ -73,16 +73,16 @@ void check_guaranteed(const M& grid, const AdaptResult<M>& r, double threshold =
 class GeneratedCases : public ::testing::TestWithParam<test::GeneratedCase> {};
 
 TEST_P(GeneratedCases, KeepTheThresholdAndGetCloser) {
-  test::with_generated_case(GetParam(), [](const auto& grid, const Fractions& f,
-                                           const IdVector<CellId, int>& material) {
-    const auto r = adapt(grid, f, material, guaranteed_options());
-    check_guaranteed(grid, r);
-    // Closer than after the first move, unless that move already put every node on its
-    // interface (some slid there, away from their targets).
-    if (r.dist_init > 0 && r.n_blocked > 0) {
-      EXPECT_LT(r.dist_final, r.dist_init);
-    }
-  });
+  test::with_generated_case(
+      GetParam(), [](const auto& grid, const Fractions& f, const IdVector<CellId, int>& material) {
+        const auto r = adapt(grid, f, material, guaranteed_options());
+        check_guaranteed(grid, r);
+        // Closer than after the first move, unless that move already put every node on its
+        // interface (some slid there, away from their targets).
+        if (r.dist_init > 0 && r.n_blocked > 0) {
+          EXPECT_LT(r.dist_final, r.dist_init);
+        }
+      });
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -98,7 +98,8 @@ INSTANTIATE_TEST_SUITE_P(
         test::GeneratedCase{"stir", {24, 12}, 1.0, 3}, test::GeneratedCase{"vortex", {24, 24}},
         test::GeneratedCase{"venn", {20, 20}}, test::GeneratedCase{"slotted-disk", {24, 24}},
         test::GeneratedCase{"balldrop", {20, 20}}, test::GeneratedCase{"asteroid", {6, 6, 6}},
-        test::GeneratedCase{"balldrop", {6, 6, 6}}, test::GeneratedCase{"venn", {20, 20}, -1, 0, 0.2},
+        test::GeneratedCase{"balldrop", {6, 6, 6}},
+        test::GeneratedCase{"venn", {20, 20}, -1, 0, 0.2},
         test::GeneratedCase{"triple-point", {28, 12}, 1.0, 0, 0.2},
         test::GeneratedCase{"stir", {20, 10}, 1.0, 3, 0.2}),
     [](const ::testing::TestParamInfo<test::GeneratedCase>& i) { return test::label(i.param); });
@@ -225,23 +226,23 @@ TEST(GuaranteedMethod, TheVolumeOffsetKeepsEveryMaterialsVolume) {
 // enough_share of 0 the first layer is kept without trying them. (With drags the first layer
 // brings enough of them near on this case.)
 TEST(GuaranteedMethod, AutomaticLayersFallBackToCavitiesWhereTheFirstLayerFallsShort) {
-  test::with_generated_case({"triple-point", {35, 15}, 2.0, 3}, [](const auto& grid,
-                                                                   const Fractions& f,
-                                                                   const IdVector<CellId, int>& m) {
-    AdaptOptions o = guaranteed_options();
-    o.move.drag = false;
-    const auto r = adapt(grid, f, m, o);
-    check_guaranteed(grid, r);
-    EXPECT_EQ(r.layers, LayerStrategy::cavities);
-    EXPECT_LT(r.other_near_interface, o.enough_share * r.n_interface_nodes);
-    EXPECT_GT(r.n_near_interface, r.other_near_interface);
-    o.enough_share = 0;
-    const auto first = adapt(grid, f, m, o);
-    check_guaranteed(grid, first);
-    EXPECT_EQ(first.layers, LayerStrategy::first);
-    EXPECT_EQ(first.other_near_interface, 0);
-    EXPECT_EQ(first.n_near_interface, r.other_near_interface);
-  });
+  test::with_generated_case(
+      {"triple-point", {35, 15}, 2.0, 3},
+      [](const auto& grid, const Fractions& f, const IdVector<CellId, int>& m) {
+        AdaptOptions o = guaranteed_options();
+        o.move.drag = false;
+        const auto r = adapt(grid, f, m, o);
+        check_guaranteed(grid, r);
+        EXPECT_EQ(r.layers, LayerStrategy::cavities);
+        EXPECT_LT(r.other_near_interface, o.enough_share * r.n_interface_nodes);
+        EXPECT_GT(r.n_near_interface, r.other_near_interface);
+        o.enough_share = 0;
+        const auto first = adapt(grid, f, m, o);
+        check_guaranteed(grid, first);
+        EXPECT_EQ(first.layers, LayerStrategy::first);
+        EXPECT_EQ(first.other_near_interface, 0);
+        EXPECT_EQ(first.n_near_interface, r.other_near_interface);
+      });
 }
 
 // The guarantee and the mesh do not depend on the unit or the place: the triple point in
@@ -250,51 +251,56 @@ TEST(GuaranteedMethod, AutomaticLayersFallBackToCavitiesWhereTheFirstLayerFallsS
 // and at 1e300 volumes overflow, unless the stages compute in the grid's UnitFrame). In a
 // power-of-two unit the arithmetic is the same: the mesh is the same to the last bit.
 TEST(GuaranteedMethod, TheSameMeshInAnyUnitAndPlace) {
-  test::with_generated_case({"triple-point", {35, 15}, 2.0}, [](const auto& grid,
-                                                              const Fractions& f,
-                                                              const IdVector<CellId, int>& m) {
-    const auto r = adapt(grid, f, m, guaranteed_options());
-    for (auto [scale, offset] : {std::pair{1e-300, 0.0}, {1e-20, 0.0}, {1e-6, 0.0}, {1e6, 0.0},
-                                 {1e20, 0.0}, {1e300, 0.0}, {1.0, 1e6}}) {
-      const auto moved = test::scaled(grid, scale, offset);
-      EXPECT_EQ(assign::assign_materials(moved, f).correction.labels.raw(), m.raw())
-          << scale << " " << offset;
-      const auto s = adapt(moved, f, m, guaranteed_options());
-      EXPECT_FALSE(s.stopped_bad_input) << scale << " " << offset;
-      EXPECT_EQ(s.mesh.n_cells(), r.mesh.n_cells()) << scale << " " << offset;
-      EXPECT_EQ(s.material.raw(), r.material.raw()) << scale << " " << offset;
-      EXPECT_NEAR(s.min_quality, r.min_quality, 1e-9) << scale << " " << offset;
-      EXPECT_EQ(s.n_near_interface, r.n_near_interface) << scale << " " << offset;
-      EXPECT_NEAR(s.mesh.point(NodeId(0)).x(), scale * r.mesh.point(NodeId(0)).x() + offset,
-                  1e-9 * scale + 1e-6 * offset);
-      EXPECT_NEAR(s.dist_final / scale, r.dist_final, 1e-9 * r.dist_final) << scale;
-    }
-    for (double scale : {0x1p-1000, 0x1p-20, 0x1p40, 0x1p1000}) {
-      const auto s = adapt(test::scaled(grid, scale), f, m, guaranteed_options());
-      ASSERT_EQ(s.mesh.n_nodes(), r.mesh.n_nodes()) << scale;
-      for (NodeId v : id_range<NodeId>(r.mesh.n_nodes()))
-        ASSERT_EQ(s.mesh.point(v), scale * r.mesh.point(v)) << scale << " node " << v.value();
-      EXPECT_EQ(s.dist_final, scale * r.dist_final) << scale;
-      EXPECT_EQ(s.local_size.raw().front(), scale * r.local_size.raw().front()) << scale;
-    }
-  });
+  test::with_generated_case(
+      {"triple-point", {35, 15}, 2.0},
+      [](const auto& grid, const Fractions& f, const IdVector<CellId, int>& m) {
+        const auto r = adapt(grid, f, m, guaranteed_options());
+        for (auto [scale, offset] : {std::pair{1e-300, 0.0},
+                                     {1e-20, 0.0},
+                                     {1e-6, 0.0},
+                                     {1e6, 0.0},
+                                     {1e20, 0.0},
+                                     {1e300, 0.0},
+                                     {1.0, 1e6}}) {
+          const auto moved = test::scaled(grid, scale, offset);
+          EXPECT_EQ(assign::assign_materials(moved, f).correction.labels.raw(), m.raw())
+              << scale << " " << offset;
+          const auto s = adapt(moved, f, m, guaranteed_options());
+          EXPECT_FALSE(s.stopped_bad_input) << scale << " " << offset;
+          EXPECT_EQ(s.mesh.n_cells(), r.mesh.n_cells()) << scale << " " << offset;
+          EXPECT_EQ(s.material.raw(), r.material.raw()) << scale << " " << offset;
+          EXPECT_NEAR(s.min_quality, r.min_quality, 1e-9) << scale << " " << offset;
+          EXPECT_EQ(s.n_near_interface, r.n_near_interface) << scale << " " << offset;
+          EXPECT_NEAR(s.mesh.point(NodeId(0)).x(), scale * r.mesh.point(NodeId(0)).x() + offset,
+                      1e-9 * scale + 1e-6 * offset);
+          EXPECT_NEAR(s.dist_final / scale, r.dist_final, 1e-9 * r.dist_final) << scale;
+        }
+        for (double scale : {0x1p-1000, 0x1p-20, 0x1p40, 0x1p1000}) {
+          const auto s = adapt(test::scaled(grid, scale), f, m, guaranteed_options());
+          ASSERT_EQ(s.mesh.n_nodes(), r.mesh.n_nodes()) << scale;
+          for (NodeId v : id_range<NodeId>(r.mesh.n_nodes()))
+            ASSERT_EQ(s.mesh.point(v), scale * r.mesh.point(v)) << scale << " node " << v.value();
+          EXPECT_EQ(s.dist_final, scale * r.dist_final) << scale;
+          EXPECT_EQ(s.local_size.raw().front(), scale * r.local_size.raw().front()) << scale;
+        }
+      });
 }
 
 // Where the base method of Fig. 10-a inverts cells (adapt_test.cpp: the extruded triple
 // point 35x15x3 at t = 2 ends at -0.004), the guaranteed one keeps the threshold.
 TEST(GuaranteedMethod, HoldsWhereTheBaseMethodInvertsCells) {
-  test::with_generated_case({"triple-point", {35, 15}, 2.0, 3}, [](const auto& grid,
-                                                                   const Fractions& f,
-                                                                   const IdVector<CellId, int>& m) {
-    AdaptOptions base;
-    base.method = AdaptMethod::base;
-    const auto b = adapt(grid, f, m, base);
-    EXPECT_LT(b.min_quality, 0.0);
-    const auto r = adapt(grid, f, m, guaranteed_options());
-    check_guaranteed(grid, r);
-    EXPECT_GT(r.dist_init, 0.0);
-    EXPECT_LT(r.dist_final, r.dist_init);
-  });
+  test::with_generated_case(
+      {"triple-point", {35, 15}, 2.0, 3},
+      [](const auto& grid, const Fractions& f, const IdVector<CellId, int>& m) {
+        AdaptOptions base;
+        base.method = AdaptMethod::base;
+        const auto b = adapt(grid, f, m, base);
+        EXPECT_LT(b.min_quality, 0.0);
+        const auto r = adapt(grid, f, m, guaranteed_options());
+        check_guaranteed(grid, r);
+        EXPECT_GT(r.dist_init, 0.0);
+        EXPECT_LT(r.dist_final, r.dist_init);
+      });
 }
 
 // Nodes that stay short of their targets are the price of the guarantee: the result says
@@ -306,7 +312,7 @@ TEST(GuaranteedMethod, ReportsTheNodesItCouldNotMove) {
   const Fractions f = test::sample_fractions(grid, test::triple_point(4.0), 3, 12);
   AdaptOptions o = guaranteed_options();
   o.threshold = 0.6;
-  const auto r = adapt(grid, f, test::majority(f), o);
+  const auto r = adapt(grid, f, majority_materials(f), o);
   check_guaranteed(grid, r, 0.6);
   EXPECT_GT(r.n_blocked, 0);
   ASSERT_FALSE(r.blocking_cells.empty());
@@ -336,7 +342,7 @@ TEST(GuaranteedMethod, HoldsAHigherThresholdInAnExtrudedCase) {
   const auto [grid, f] = extruded_triple_point();
   AdaptOptions o = guaranteed_options();
   o.threshold = 0.5;
-  const auto r = adapt(grid, f, test::majority(f), o);
+  const auto r = adapt(grid, f, majority_materials(f), o);
   check_guaranteed(grid, r, 0.5);
 }
 
@@ -346,10 +352,10 @@ TEST(GuaranteedMethod, EveryStepKeepsTheOneThreshold) {
   AdaptOptions o = guaranteed_options();
   o.threshold = 0.5;
   o.layers = LayerStrategy::both;  // the interface pillows, the move and the cavities
-  const auto r = adapt(grid, f, test::majority(f), o);
+  const auto r = adapt(grid, f, majority_materials(f), o);
   check_guaranteed(grid, r, 0.5);
   o.move.threshold = o.cavity.threshold = o.interface_pillow.threshold = -0.9;
-  const auto same = adapt(grid, f, test::majority(f), o);
+  const auto same = adapt(grid, f, majority_materials(f), o);
   EXPECT_EQ(same.mesh.points(), r.mesh.points());
   EXPECT_EQ(same.n_cells_added, r.n_cells_added);
   EXPECT_EQ(same.n_interface_layer_cells, r.n_interface_layer_cells);
@@ -363,13 +369,13 @@ TEST(GuaranteedMethod, StopsOnBadInputUnlessAllowed) {
       grid, [](const Vec3& x) { return x.x() < 4.5; }, 2, 4);
   AdaptOptions o = guaranteed_options();
   o.threshold = 0.9;
-  const auto r = adapt(grid, f, test::majority(f), o);
+  const auto r = adapt(grid, f, majority_materials(f), o);
   EXPECT_TRUE(r.stopped_bad_input);
   ASSERT_FALSE(r.bad_input_cells.empty());
   for (CellId c : r.bad_input_cells) EXPECT_LT(grid.cell_quality(c), 0.9);
   for (NodeId v : id_range<NodeId>(grid.n_nodes())) EXPECT_EQ(r.mesh.point(v), grid.point(v));
   o.allow_bad_input = true;
-  const auto a = adapt(grid, f, test::majority(f), o);
+  const auto a = adapt(grid, f, majority_materials(f), o);
   EXPECT_FALSE(a.stopped_bad_input);
   // No cell below the threshold gets worse than the input's worst.
   EXPECT_GE(a.min_quality, min_quality(grid) - 1e-12);
@@ -384,9 +390,9 @@ TEST(GuaranteedMethod, GivesTheSameMeshWhateverTheThreadCount) {
       },
       3, 4);
   set_threads(1);
-  const auto a = adapt(grid, f, test::majority(f), guaranteed_options());
+  const auto a = adapt(grid, f, majority_materials(f), guaranteed_options());
   set_threads(2);
-  const auto b = adapt(grid, f, test::majority(f), guaranteed_options());
+  const auto b = adapt(grid, f, majority_materials(f), guaranteed_options());
   set_threads(0);
   ASSERT_EQ(a.mesh.n_nodes(), b.mesh.n_nodes());
   for (NodeId v : id_range<NodeId>(a.mesh.n_nodes())) ASSERT_EQ(a.mesh.point(v), b.mesh.point(v));
@@ -400,10 +406,10 @@ TEST(GuaranteedMethod, RejectsBadOptions) {
       grid, [](const Vec3& p) { return p.x() < 1.5; }, 2, 4);
   AdaptOptions o = guaranteed_options();
   o.max_loops = -1;
-  EXPECT_THROW(adapt(grid, f, test::majority(f), o), OptionError);
+  EXPECT_THROW(adapt(grid, f, majority_materials(f), o), OptionError);
   o.max_loops = 3;
   o.loop_tolerance = -1;
-  EXPECT_THROW(adapt(grid, f, test::majority(f), o), OptionError);
+  EXPECT_THROW(adapt(grid, f, majority_materials(f), o), OptionError);
 }
 
 }  // namespace

@@ -8,12 +8,11 @@
 namespace hexadapt {
 namespace {
 
-using test::majority;
 using test::sample_fractions;
 
 template <class M>
 Targets targets_of(const M& mesh, const Fractions& f) {
-  return compute_targets(mesh, f, majority(f), boundary_constraints(mesh));
+  return compute_targets(mesh, f, majority_materials(f), boundary_constraints(mesh));
 }
 
 // Fractions of the half-space x < a computed exactly for unit cells.
@@ -181,7 +180,7 @@ TargetOptions volume_offset(VolumeOffset where) {
 TEST(Targets, AOneCellSheetKeepsItsColumnsVolume) {
   const HexMesh mesh = make_hex_grid(7, 3, 3);
   const Fractions f = column_fractions(mesh, {0, 0, 0.4, 0.6, 0, 0, 0});
-  const Targets t = compute_targets(mesh, f, majority(f), boundary_constraints(mesh),
+  const Targets t = compute_targets(mesh, f, majority_materials(f), boundary_constraints(mesh),
                                     volume_offset(VolumeOffset::off));
   const double centroid = (0.4 * 2.8 + 0.6 * 3.5) / 1.0;
   int seen = 0;
@@ -223,7 +222,7 @@ TEST(Targets, TheVolumeOffsetGivesEachMaterialItsInputVolume) {
   const HexMesh mesh = make_hex_grid(8, 8, 8);
   const auto f = sample_fractions(
       mesh, [&](const Vec3& p) { return (p - centre).norm() < r; }, 2, 8);
-  const auto material = majority(f);
+  const auto material = majority_materials(f);
   const auto boundary = boundary_constraints(mesh);
   const Targets plain =
       compute_targets(mesh, f, material, boundary, volume_offset(VolumeOffset::off));
@@ -260,7 +259,7 @@ TEST(Targets, TheVolumeOffsetServesEverySmallerMaterial) {
         return 0;
       },
       3);
-  const auto material = majority(f);
+  const auto material = majority_materials(f);
   const auto boundary = boundary_constraints(mesh);
   const Targets t = compute_targets(mesh, f, material, boundary, volume_offset(VolumeOffset::on));
   const Targets automatic = compute_targets(mesh, f, material, boundary);
@@ -285,7 +284,7 @@ TEST(Targets, SlidingConstraintsFollowTheInterfaceAndTheBoundary) {
     f(c, 1) = 1 - left;
   }
   const auto boundary = boundary_constraints(mesh);
-  const Targets t = compute_targets(mesh, f, test::majority(f), boundary);
+  const Targets t = compute_targets(mesh, f, majority_materials(f), boundary);
   const auto slide = sliding_constraints(boundary, t);
   const NodeId inner(4 + 9 * 2), on_boundary(4), corner(0), plain(1 + 9 * 2);
   EXPECT_EQ(slide[inner].n_normals(), 1);

@@ -78,7 +78,7 @@ TEST_F(AssignTool, WritesBothAssignmentsAndAReport) {
   ASSERT_TRUE(material && majority);
   EXPECT_EQ(material->type, io::ScalarType::int32);
   EXPECT_TRUE(out.find_cell_array("vf_a") && out.find_cell_array("vf_c"));
-  assign::Labels labels;
+  CellMaterials labels;
   for (double v : material->values) labels.push_back(static_cast<int>(v));
   const auto mesh = std::get<QuadMesh>(io::to_mesh(out));
   EXPECT_EQ(test::count_non_manifold(mesh, labels, 3), 0);
@@ -102,12 +102,13 @@ TEST_F(AssignTool, AMaterialThatIsNowhereTheMajorityIsReportedLost) {
   io::MeshData data = io::from_mesh(make_quad_grid(3, 1));
   const char* names[3] = {"vf_a", "vf_b", "vf_c"};
   const double share[3] = {0.6, 0.1, 0.3};
-  for (int m = 0; m < 3; ++m) data.set_cell_array({names[m], 1, io::ScalarType::float64,
-                                                   {share[m], share[m], share[m]}});
+  for (int m = 0; m < 3; ++m)
+    data.set_cell_array({names[m], 1, io::ScalarType::float64, {share[m], share[m], share[m]}});
   io::write_mesh(data, path("mix.vtu"));
   const ToolRun r = run(path("mix.vtu") + " -o " + path("out.vtu") + " --json " + path("r.json"));
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.err.find("material 'b' has no cell after the assignment"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("material 'b' has no cell after the assignment"), std::string::npos)
+      << r.err;
   EXPECT_NE(r.err.find("material 'c' has no cell"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("(30 % of the domain"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("material 'a'"), std::string::npos) << r.err;

@@ -12,8 +12,8 @@
 #include <numeric>
 #include <vector>
 
-#include "hexadapt/assign/majority.h"
 #include "hexadapt/mesh/cell_complex.h"
+#include "hexadapt/mesh/fractions.h"
 
 namespace hexadapt::test {
 
@@ -109,7 +109,7 @@ bool link_manifold(const M& mesh, NodeId n, const std::vector<char>& in) {
 
 /// Material m at node n under `labels`.
 template <class M>
-bool link_manifold(const M& mesh, NodeId n, const assign::Labels& labels, int m) {
+bool link_manifold(const M& mesh, NodeId n, const CellMaterials& labels, int m) {
   std::vector<char> in;
   for (CellId c : mesh.node_cells(n)) in.push_back(labels[c] == m);
   return link_manifold(mesh, n, in);
@@ -117,7 +117,7 @@ bool link_manifold(const M& mesh, NodeId n, const assign::Labels& labels, int m)
 
 /// Number of (node, material) pairs that are not manifold.
 template <class M>
-int count_non_manifold(const M& mesh, const assign::Labels& labels, int n_materials) {
+int count_non_manifold(const M& mesh, const CellMaterials& labels, int n_materials) {
   int bad = 0;
   for (NodeId n : id_range<NodeId>(mesh.n_nodes()))
     for (int m = 0; m < n_materials; ++m) bad += !link_manifold(mesh, n, labels, m);

@@ -49,7 +49,7 @@ TEST(Correction, Figure2a) {
         f(c, 2) = 1 - x;
       }
     }
-  const Labels majority = majority_assignment(f);
+  const CellMaterials majority = majority_materials(f);
   // The checker finds the same non-manifold nodes as the library.
   int bad_nodes = 0;
   for (NodeId n : id_range<NodeId>(mesh.n_nodes())) {
@@ -99,7 +99,7 @@ Fractions livelock_case() {
 TEST(Correction, Figure5LivelockIsAvoided) {
   const QuadMesh mesh = make_quad_grid(4, 4);
   const Fractions f = livelock_case();
-  EXPECT_EQ(non_manifold_nodes(mesh, majority_assignment(f)), std::vector<NodeId>{NodeId(7)});
+  EXPECT_EQ(non_manifold_nodes(mesh, majority_materials(f)), std::vector<NodeId>{NodeId(7)});
   CorrectionOptions one;
   one.spare_neighbours = false;  // the paper's order: strictly the next cheapest
   one.keep = 1;  // a single stored configuration: the second visit of A has nothing left
@@ -234,9 +234,9 @@ TEST(Correction, RejectsBadOptionsAndSizes) {
   const Fractions f = test::random_fractions(4, 2, 2, 1);
   CorrectionOptions o;
   o.keep = 0;
-  EXPECT_THROW(correct_assignment(mesh, f, majority_assignment(f), o), OptionError);
-  EXPECT_THROW(correct_assignment(mesh, f, Labels(3, 0)), Error);
-  EXPECT_THROW(correct_assignment(mesh, f, Labels(4, 7)), Error);
+  EXPECT_THROW(correct_assignment(mesh, f, majority_materials(f), o), OptionError);
+  EXPECT_THROW(correct_assignment(mesh, f, CellMaterials(3, 0)), Error);
+  EXPECT_THROW(correct_assignment(mesh, f, CellMaterials(4, 7)), Error);
 }
 
 }  // namespace

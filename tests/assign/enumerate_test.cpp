@@ -41,7 +41,7 @@ std::vector<double> exhaustive_costs(const M& mesh, NodeId n, const Fractions& f
   std::stable_sort(all.begin(), all.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<double> costs;
-  Labels labels(static_cast<std::size_t>(mesh.n_cells()), -1);
+  CellMaterials labels(static_cast<std::size_t>(mesh.n_cells()), -1);
   for (const auto& [cost, config] : all) {
     for (std::size_t i = 0; i < k; ++i) labels[around[i]] = config[i];
     bool ok = true;
@@ -64,7 +64,7 @@ void check_single_node(const M& mesh, NodeId n, const Fractions& f, int keep, in
   ASSERT_EQ(store.size(), std::min<int>(keep, static_cast<int>(costs.size())));
   for (int i = 0; i < store.size(); ++i) {
     EXPECT_NEAR(store[i].cost, costs[static_cast<std::size_t>(i)], 1e-12) << "rank " << i;
-    Labels labels(static_cast<std::size_t>(mesh.n_cells()), -1);
+    CellMaterials labels(static_cast<std::size_t>(mesh.n_cells()), -1);
     for (int c = 0; c < ball.n_cells(); ++c)
       labels[ball.cell(c)] = store[i].labels[static_cast<std::size_t>(c)];
     for (int m : problem.materials) EXPECT_TRUE(test::link_manifold(mesh, n, labels, m));

@@ -12,7 +12,9 @@
 namespace hexadapt::assign {
 namespace {
 
-CellId cell(int i, int j, int nx) { return CellId(j * nx + i); }
+CellId cell(int i, int j, int nx) {
+  return CellId(j * nx + i);
+}
 
 // Two materials: b inside the disk of radius 0.3 around (0.5, 0.5), a outside.
 Fractions disk_fractions(const QuadMesh& mesh, int nx) {
@@ -32,7 +34,7 @@ TEST(Islands, ALoneCellGoesToTheMaterialAroundIt) {
   for (CellId c : id_range<CellId>(mesh.n_cells())) f(c, 0) = 1;
   f(cell(2, 2, 5), 0) = 0.3, f(cell(2, 2, 5), 1) = 0.7;  // a lone b in a
   f(cell(3, 2, 5), 0) = 0.4, f(cell(3, 2, 5), 2) = 0.6;  // a lone c beside it
-  Labels labels = majority_assignment(f);
+  CellMaterials labels = majority_materials(f);
   ASSERT_EQ(count_small_pieces(mesh, labels, 2), 2);
   const IslandResult r = remove_islands(mesh, f, labels, 2);
   EXPECT_EQ(r.islands, 2);
@@ -40,9 +42,9 @@ TEST(Islands, ALoneCellGoesToTheMaterialAroundIt) {
   EXPECT_EQ(r.left, 0);
   for (int m : labels) EXPECT_EQ(m, 0);
   // Off at 0 and 1: nothing is a piece of fewer than one cell.
-  Labels again = majority_assignment(f);
+  CellMaterials again = majority_materials(f);
   EXPECT_EQ(remove_islands(mesh, f, again, 1).islands, 0);
-  EXPECT_EQ(again.raw(), majority_assignment(f).raw());
+  EXPECT_EQ(again.raw(), majority_materials(f).raw());
 }
 
 TEST(Islands, APieceWithOnlySmallNeighboursStays) {
@@ -50,7 +52,7 @@ TEST(Islands, APieceWithOnlySmallNeighboursStays) {
   Fractions f(mesh.n_cells(), {"a", "b"});
   f(CellId(0), 0) = 1;
   f(CellId(1), 1) = 1;
-  Labels labels = majority_assignment(f);
+  CellMaterials labels = majority_materials(f);
   const IslandResult r = remove_islands(mesh, f, labels, 5);
   EXPECT_EQ(r.islands, 0);
   EXPECT_EQ(r.left, 2);

@@ -51,7 +51,7 @@ TEST(KeepMaterials, NeitherAnAbsentMaterialNorAnotherOnesLastCell) {
   Fractions f(mesh.n_cells(), {"a", "b", "c", "d"});
   f(CellId(0), 0) = 0.6, f(CellId(0), 2) = 0.4;
   f(CellId(1), 1) = 1;
-  Labels labels = majority_assignment(f);
+  CellMaterials labels = majority_materials(f);
   EXPECT_TRUE(keep_vanished_materials(mesh, f, labels).empty());
   EXPECT_EQ(labels[CellId(0)], 0);
   EXPECT_EQ(labels[CellId(1)], 1);

@@ -9,7 +9,7 @@ namespace hexadapt::assign {
 namespace {
 
 template <class M>
-std::vector<int> ball_labels(const LocalBall<M>& ball, const Labels& labels) {
+std::vector<int> ball_labels(const LocalBall<M>& ball, const CellMaterials& labels) {
   std::vector<int> l;
   for (CellId c : ball.cells()) l.push_back(labels[c]);
   return l;
@@ -43,7 +43,7 @@ TEST(Manifold, TwoHexesSharingANodeAreNot) {
 TEST(Manifold, DiagonalHexesInABlock) {
   const HexMesh mesh = make_hex_grid(2, 2, 2);
   const LocalBall<HexMesh> ball(mesh, NodeId(13));
-  Labels labels(8, 0);
+  CellMaterials labels(8, 0);
   labels[CellId(0)] = labels[CellId(7)] = 1;
   const auto l = ball_labels(ball, labels);
   EXPECT_EQ(euler_characteristic(ball, l, 1), 3);
@@ -56,7 +56,7 @@ TEST(Manifold, DiagonalHexesInABlock) {
 // Figure 4-b: two hexes sharing only an edge through the node.
 TEST(Manifold, TwoHexesSharingAnEdgeAreNot) {
   const HexMesh mesh = make_hex_grid(2, 2, 1);
-  Labels labels(4, 0);
+  CellMaterials labels(4, 0);
   labels[CellId(0)] = labels[CellId(3)] = 1;       // (0,0) and (1,1): the vertical centre edge
   const LocalBall<HexMesh> ball(mesh, NodeId(4));  // node (1,1,0), on the bottom face
   const auto l = ball_labels(ball, labels);
@@ -69,7 +69,7 @@ TEST(Manifold, TwoHexesSharingAnEdgeAreNot) {
 
 TEST(Manifold, QuadsTouchingAtANodeAreNot) {
   const QuadMesh mesh = make_quad_grid(2, 2);
-  Labels labels(4, 0);
+  CellMaterials labels(4, 0);
   labels[CellId(0)] = labels[CellId(3)] = 1;
   const LocalBall<QuadMesh> ball(mesh, NodeId(4));
   const auto l = ball_labels(ball, labels);
@@ -117,7 +117,7 @@ TEST(Manifold, AgreesWithTheLinkCriterionOnEveryHexBall) {
 // = 2, yet they are pinched along that edge (two of them meet there only along it).
 TEST(Manifold, EulerAloneMissesAPinchedEdge) {
   const HexMesh mesh = make_hex_grid(2, 2, 2);
-  Labels labels(8, 0);
+  CellMaterials labels(8, 0);
   labels[CellId(0)] = labels[CellId(3)] = 1;  // (0,0,0) and (1,1,0): the edge x=y=1, z in [0,1]
   const LocalBall<HexMesh> ball(mesh, NodeId(13));
   const auto l = ball_labels(ball, labels);
@@ -151,7 +151,7 @@ TEST(Manifold, BoundaryNodeOfAnUnstructuredFan) {
   const QuadMesh mesh = boundary_fan();
   ASSERT_EQ(mesh.node_cells(NodeId(0)).size(), 3u);
   const LocalBall<QuadMesh> ball(mesh, NodeId(0));
-  Labels labels(3, 0);
+  CellMaterials labels(3, 0);
   labels[CellId(1)] = 1;  // the middle cell differs: material 0 touches itself at node 0
   EXPECT_EQ(non_manifold_materials(mesh, labels, NodeId(0)), (std::vector<int>{0}));
   EXPECT_FALSE(test::link_manifold(mesh, NodeId(0), labels, 0));
@@ -166,7 +166,7 @@ TEST(Manifold, BoundaryNodeOfAnUnstructuredFan) {
 // of the domain (two cells sharing a face) nothing can be.
 TEST(Manifold, DomainBoundaryNodesIn3D) {
   const HexMesh mesh = make_hex_grid(2, 2, 2);
-  Labels labels(8, 0);
+  CellMaterials labels(8, 0);
   labels[CellId(0)] = labels[CellId(3)] = 1;  // bottom layer, diagonal through node (1,1,0)
   const NodeId face_centre(4);
   EXPECT_EQ(mesh.node_cells(face_centre).size(), 4u);
@@ -181,7 +181,7 @@ TEST(Manifold, DomainBoundaryNodesIn3D) {
 
 TEST(Manifold, ScanFindsExactlyTheBadNodes) {
   const QuadMesh mesh = make_quad_grid(4, 4);
-  Labels labels(16, 0);
+  CellMaterials labels(16, 0);
   labels[CellId(0)] = labels[CellId(5)] = 1;  // touch at node (1,1) = 6
   labels[CellId(6)] = labels[CellId(3)] = 1;  // 6 shares an edge with 5, touches 3 at (3,1)
   EXPECT_EQ(non_manifold_nodes(mesh, labels), (std::vector<NodeId>{NodeId(6), NodeId(8)}));

@@ -7,6 +7,7 @@
 
 #include "hexadapt/core/error.h"
 #include "hexadapt/core/parallel.h"
+#include "hexadapt/io/assigned_grid_file.h"
 #include "hexadapt/io/vtk_xml.h"
 #include "io/vtk_xml_test_util.h"
 
@@ -178,6 +179,17 @@ TEST(VtkXmlWriter, NoStringFieldsLeavesTheCommandToTheComment) {
   EXPECT_EQ(both.find("<FieldData"), both.rfind("<FieldData"));
   EXPECT_EQ(string_field(both, "material_names"), (std::vector<std::string>{"left", "right"}));
   EXPECT_EQ(string_field(both, "hexadapt_command").size(), 1u);
+}
+
+TEST(VtkXmlWriter, MaterialNamesKeepTheirCommas) {
+  MeshData d = test::sample_mesh(2, false);
+  const std::vector<std::string> names{"air", "Volume Fraction for Body, Nose", "a\\b"};
+  d.metadata = {{"hexadapt_materials", join_material_names(names)}};
+  const std::string path = test::temp_path("names.vtu");
+  write_vtu(d, path);
+  const std::string text = test::read_text(path);
+  std::filesystem::remove(path);
+  EXPECT_EQ(string_field(text, "material_names"), names);
 }
 
 TEST(VtkXmlWriter, NoMetadataNoComment) {

@@ -48,11 +48,14 @@ Eigen::Matrix3d rotation(double angle, const Vec3& axis) {
   return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
 }
 
-std::vector<int> pattern(index_t n, int n_materials) {
-  std::vector<int> m(static_cast<std::size_t>(n));
-  for (std::size_t i = 0; i < m.size(); ++i)
-    m[i] = static_cast<int>((i * 7 + i / 3) % static_cast<std::size_t>(n_materials));
+CellMaterials pattern(index_t n, int n_materials) {
+  CellMaterials m(static_cast<std::size_t>(n));
+  for (CellId c : id_range<CellId>(n)) m[c] = (c.value() * 7 + c.value() / 3) % n_materials;
   return m;
+}
+
+CellMaterials materials(std::vector<int> m) {
+  return CellMaterials(std::move(m));
 }
 
 double total(const std::vector<double>& v) {
@@ -64,13 +67,13 @@ double total(const std::vector<double>& v) {
 // Self-imprint: every input cell holds its own material only, with its whole volume.
 void expect_pure_self_imprint(const io::MeshData& grid) {
   const int n_mat = 3;
-  const std::vector<int> m = pattern(grid.n_cells(), n_mat);
+  const CellMaterials m = pattern(grid.n_cells(), n_mat);
   const Imprint im = imprint(grid, grid, m, n_mat);
   for (index_t c = 0; c < grid.n_cells(); ++c) {
     const double v = im.cell_volume[static_cast<std::size_t>(c)];
     ASSERT_GT(v, 0);
     for (int k = 0; k < n_mat; ++k) {
-      const double want = k == m[static_cast<std::size_t>(c)] ? 1.0 : 0.0;
+      const double want = k == m.raw()[static_cast<std::size_t>(c)] ? 1.0 : 0.0;
       EXPECT_NEAR(im.at(c, k) / v, want, 1e-12) << "cell " << c << " material " << k;
     }
   }
@@ -95,8 +98,8 @@ TEST(Imprint, SelfImprintIsPure3D) {
 // Each output cell its own material: the imprinted volumes of a cell sum to its volume
 // when the input grid covers it.
 void expect_cell_sums(const io::MeshData& input, const io::MeshData& output) {
-  std::vector<int> own(static_cast<std::size_t>(output.n_cells()));
-  for (std::size_t o = 0; o < own.size(); ++o) own[o] = static_cast<int>(o);
+  CellMaterials own(static_cast<std::size_t>(output.n_cells()));
+  for (CellId o : id_range<CellId>(output.n_cells())) own[o] = o.value();
   const Imprint im = imprint(input, output, own, output.n_cells());
   for (index_t o = 0; o < output.n_cells(); ++o) {
     double s = 0;
@@ -138,7 +141,7 @@ TEST(Imprint, VolumePerMaterialIsConserved) {
         p.x() == 0 || p.x() == 5 || p.y() == 0 || p.y() == 5 || p.z() == 0 || p.z() == 4;
     if (boundary) in.points[i] = out.points[i] = p;  // flat boundary shared by both meshes
   }
-  const std::vector<int> m = pattern(out.n_cells(), 4);
+  const CellMaterials m = pattern(out.n_cells(), 4);
   const Imprint im = imprint(in, out, m, 4);
   for (int k = 0; k < 4; ++k) {
     double s = 0;
@@ -155,7 +158,7 @@ TEST(Imprint, ThreadCountDoesNotChangeTheResult) {
   io::MeshData out = hexes(6, 5, 4);
   jitter(out, 0.25, 10);
   transform(out, rotation(0.05, Vec3(0, 0, 1)), Vec3(0.1, 0, 0));
-  const std::vector<int> m = pattern(out.n_cells(), 3);
+  const CellMaterials m = pattern(out.n_cells(), 3);
   set_threads(1);
   const Imprint a = imprint(in, out, m, 3);
   set_threads(2);
@@ -171,7 +174,7 @@ TEST(Imprint, DartShapedInputCell) {
   in.points[4] = Vec3(0.3, 0.3, 0);
   expect_pure_self_imprint(in);
   expect_cell_sums(in, quads(4, 4, 0.5, 0.5));
-  const Imprint im = imprint(in, quads(1, 1, 2, 2), {0}, 1);
+  const Imprint im = imprint(in, quads(1, 1, 2, 2), materials({0}), 1);
   for (index_t c = 0; c < 4; ++c)
     EXPECT_NEAR(im.at(c, 0), im.cell_volume[static_cast<std::size_t>(c)], 1e-14);
 }
@@ -203,7 +206,7 @@ template <class InCell>
 void expect_monte_carlo(const io::MeshData& in, const io::MeshData& out, InCell in_cell,
                         const Eigen::AlignedBox3d& box, int samples) {
   const int n_mat = 2;
-  const std::vector<int> m = pattern(out.n_cells(), n_mat);
+  const CellMaterials m = pattern(out.n_cells(), n_mat);
   const Imprint im = imprint(in, out, m, n_mat);
   std::vector<double> hits(im.volume.size(), 0.0);
   std::mt19937 rng(12345);
@@ -218,7 +221,7 @@ void expect_monte_carlo(const io::MeshData& in, const io::MeshData& out, InCell 
     for (index_t o = 0; o < out.n_cells() && co < 0; ++o)
       if (in_cell(out, o, p)) co = o;
     if (ci >= 0 && co >= 0)
-      hits[static_cast<std::size_t>(ci * n_mat + m[static_cast<std::size_t>(co)])] += 1;
+      hits[static_cast<std::size_t>(ci * n_mat + m.raw()[static_cast<std::size_t>(co)])] += 1;
   }
   const double w = box.sizes().head(in.dim).prod() / samples;
   double err = 0, sum = 0;
@@ -264,15 +267,19 @@ void expect_folded_cube(double h, const std::array<double, 3>& want) {
   ASSERT_EQ(in.points[7], Vec3(1, 1, 1));
   in.points[7].z() = h;
   const io::MeshData out = io::from_mesh(make_hex_grid(1, 1, 3, Vec3::Zero(), Vec3(1, 1, 0.5)));
-  const Imprint im = imprint(in, out, {0, 1, 2}, 3);
+  const Imprint im = imprint(in, out, materials({0, 1, 2}), 3);
   EXPECT_NEAR(im.cell_volume[0], (2 + h) / 3, 1e-14);
   for (int m = 0; m < 3; ++m)
     EXPECT_NEAR(im.at(0, m), want[static_cast<std::size_t>(m)], 1e-14) << "material " << m;
 }
 
-TEST(Imprint, CubeWithAValleyFace) { expect_folded_cube(0.8, {0.5, 2.8 / 3 - 0.5, 0}); }
+TEST(Imprint, CubeWithAValleyFace) {
+  expect_folded_cube(0.8, {0.5, 2.8 / 3 - 0.5, 0});
+}
 
-TEST(Imprint, CubeWithARidgeFace) { expect_folded_cube(1.2, {0.5, 0.5, 3.2 / 3 - 1}); }
+TEST(Imprint, CubeWithARidgeFace) {
+  expect_folded_cube(1.2, {0.5, 0.5, 3.2 / 3 - 1});
+}
 
 // An output that is the input moved by a tiny amount (as smoothing leaves an adapted mesh):
 // nearly coincident faces everywhere, where clipping must neither lose nor double volume.
@@ -285,14 +292,14 @@ TEST(Imprint, NearlyCoincidentMeshesConserveVolume) {
   std::uniform_real_distribution<double> u(-1e-3, 1e-3);
   for (std::size_t i = 0; i < flat.points.size(); ++i) {
     const Vec3& p = flat.points[i];
-    const bool boundary = p.x() == 0 || p.x() == 6 || p.y() == 0 || p.y() == 5 || p.z() == 0 ||
-                          p.z() == 4;
+    const bool boundary =
+        p.x() == 0 || p.x() == 6 || p.y() == 0 || p.y() == 5 || p.z() == 0 || p.z() == 4;
     if (boundary)
       in.points[i] = out.points[i] = p;  // both cover the same box
     else if (rng() % 2)
       out.points[i] += Vec3(u(rng), u(rng), u(rng));
   }
-  const std::vector<int> m = pattern(out.n_cells(), 3);
+  const CellMaterials m = pattern(out.n_cells(), 3);
   const Imprint im = imprint(in, out, m, 3);
   for (int k = 0; k < 3; ++k) {
     double s = 0;
@@ -329,10 +336,10 @@ void expect_line_discrepancy(Make make, int dim) {
     f(c, 0) = left;
     f(c, 1) = 1 - left;
   }
-  std::vector<int> m(static_cast<std::size_t>(out.n_cells()));
+  CellMaterials m(static_cast<std::size_t>(out.n_cells()));
   const io::MeshData fo = make(n / 2, 2 * h);
   for (index_t o = 0; o < out.n_cells(); ++o) {
-    m[static_cast<std::size_t>(o)] =
+    m.raw()[static_cast<std::size_t>(o)] =
         fo.points[fo.cells[static_cast<std::size_t>(o) *
                            static_cast<std::size_t>(fo.nodes_per_cell())]
                       .idx()]
@@ -369,13 +376,13 @@ TEST(Discrepancy, StraightInterfaceAtKnownOffset3D) {
 
 TEST(Discrepancy, RejectsMismatchedFractions) {
   const io::MeshData g = quads(2, 2);
-  const Imprint im = imprint(g, g, {0, 1, 0, 1}, 2);
+  const Imprint im = imprint(g, g, materials({0, 1, 0, 1}), 2);
   EXPECT_THROW(discrepancy(im, Fractions(4, {"vf_a"})), InputError);
-  EXPECT_THROW(imprint(g, g, {0, 2, 0, 1}, 2), InputError);
-  EXPECT_THROW(imprint(g, hexes(1, 1, 1), {0}, 1), InputError);
+  EXPECT_THROW(imprint(g, g, materials({0, 2, 0, 1}), 2), InputError);
+  EXPECT_THROW(imprint(g, hexes(1, 1, 1), materials({0}), 1), InputError);
   io::MeshData broken = g;
   broken.cells[5] = NodeId(9);
-  EXPECT_THROW(imprint(broken, g, {0, 1, 0, 1}, 2), InputError);
+  EXPECT_THROW(imprint(broken, g, materials({0, 1, 0, 1}), 2), InputError);
 }
 
 // Fractions: a fills cells 0 and 1, b cells 2 and 3, c nothing; the output gives cell 2 to a.
@@ -384,7 +391,7 @@ TEST(Discrepancy, VolumeErrorPerMaterial) {
   const io::MeshData g = quads(2, 2, 0.5, 0.5);
   Fractions f(4, {"a", "b", "c"});
   for (CellId c : id_range<CellId>(4)) f(c, c.value() < 2 ? 0 : 1) = 1;
-  const Imprint im = imprint(g, g, {0, 0, 0, 1}, 3);
+  const Imprint im = imprint(g, g, materials({0, 0, 0, 1}), 3);
   DiscrepancyOptions o;
   const DiscrepancyReport open = discrepancy(im, f, o);
   EXPECT_NEAR(open.materials[0].volume_error(), 0.5, 1e-12);
@@ -419,7 +426,7 @@ TEST(Discrepancy, TheSameFiguresAtAnyUnit) {
     f(c, 0) = x;
     f(c, 1) = 1 - x;
   }
-  const std::vector<int> m = pattern(out.n_cells(), 2);
+  const CellMaterials m = pattern(out.n_cells(), 2);
   const DiscrepancyReport base = discrepancy(imprint(grid, out, m, 2), f);
   const QualityReport q = quality_report(out);
   ASSERT_TRUE(q.check_ok());

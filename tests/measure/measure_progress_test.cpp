@@ -75,7 +75,7 @@ TEST(ParallelProgress, SubRangeEndsExactlyAtItsEnd) {
 
 TEST(MeasureProgress, ImprintReportsMonotoneFractionsAndSameResult) {
   const io::MeshData in = jittered_hexes(7, 1), out = jittered_hexes(7, 2);
-  const std::vector<int> material(static_cast<std::size_t>(out.n_cells()), 0);
+  const CellMaterials material(static_cast<std::size_t>(out.n_cells()), 0);
   set_threads(2);
   Recorder r;
   ImprintOptions with;

@@ -20,7 +20,7 @@ template <class M>
 struct Case {
   M mesh;
   Fractions fractions;
-  std::vector<int> majority;
+  CellMaterials majority;
 };
 
 // Fractions by s^d samples per cell, weighted by the Jacobian of the cell map so that
@@ -66,7 +66,8 @@ template <class M>
 Case<M> make_case(M mesh, int n_materials, const Shape& shape) {
   Case<M> c{std::move(mesh), {}, {}};
   c.fractions = sample_fractions(c.mesh, n_materials, shape);
-  for (CellId id : id_range<CellId>(c.mesh.n_cells())) c.majority.push_back(c.fractions.majority(id));
+  for (CellId id : id_range<CellId>(c.mesh.n_cells()))
+    c.majority.push_back(c.fractions.majority(id));
   return c;
 }
 
@@ -104,9 +105,8 @@ inline Case<QuadMesh> five_by_five() {
 /// Sphere of material 1 in an n^3 Cartesian grid.
 inline Case<HexMesh> sphere(int n, double r) {
   const double c = 0.5 * n;
-  return make_case(make_hex_grid(n, n, n), 2, [=](const Vec3& p) {
-    return (p - Vec3(c, c, c)).norm() < r ? 1 : 0;
-  });
+  return make_case(make_hex_grid(n, n, n), 2,
+                   [=](const Vec3& p) { return (p - Vec3(c, c, c)).norm() < r ? 1 : 0; });
 }
 
 /// Volume of each material per block, from the pixel labels.
@@ -129,7 +129,8 @@ inline double worst_gap_in_pixels(const reconstruct::PixelMesh& px, const Fracti
       pixel = std::max(pixel, px.volume(p));
     }
     for (int m = 0; m < px.n_materials(); ++m)
-      worst = std::max(worst, std::abs(v[static_cast<std::size_t>(m)] - f(px.block_cell(b), m) * total) / pixel);
+      worst = std::max(
+          worst, std::abs(v[static_cast<std::size_t>(m)] - f(px.block_cell(b), m) * total) / pixel);
   }
   return worst;
 }

@@ -101,22 +101,27 @@ TEST(Greedy, SameResultWhateverTheThreadCount) {
 // the grid's UnitFrame (at 1e-300 pixel areas underflow, at 1e300 volumes overflow).
 template <class M>
 void expect_the_same_in_any_unit(const testcase::Case<M>& c) {
-  const std::vector<int>& assignment = c.majority;
+  const CellMaterials& assignment = c.majority;
   const Reconstruction r = reconstruct(c.mesh, c.fractions, assignment, {});
-  for (auto [scale, offset] : {std::pair{1e-300, 0.0}, {1e-6, 0.0}, {1e6, 0.0}, {1e300, 0.0},
-                               {1.0, 1e6}}) {
+  for (auto [scale, offset] :
+       {std::pair{1e-300, 0.0}, {1e-6, 0.0}, {1e6, 0.0}, {1e300, 0.0}, {1.0, 1e6}}) {
     const Reconstruction s =
         reconstruct(test::scaled(c.mesh, scale, offset), c.fractions, assignment, {});
     EXPECT_EQ(s.pixels.labels(), r.pixels.labels()) << scale << " " << offset;
     EXPECT_NEAR(s.result.relative_discrepancy, r.result.relative_discrepancy, 1e-12) << scale;
     ASSERT_EQ(s.model.points.size(), r.model.points.size()) << scale << " " << offset;
-    const Vec3 moved = scale * r.model.points.back() + Vec3(offset, offset, M::dim == 3 ? offset : 0);
+    const Vec3 moved =
+        scale * r.model.points.back() + Vec3(offset, offset, M::dim == 3 ? offset : 0);
     EXPECT_LT((s.model.points.back() - moved).cwiseAbs().maxCoeff(), 1e-9 * scale + 1e-6 * offset);
   }
 }
 
-TEST(Greedy, TheSameInAnyUnitAndPlace2D) { expect_the_same_in_any_unit(testcase::five_by_five()); }
-TEST(Greedy, TheSameInAnyUnitAndPlace3D) { expect_the_same_in_any_unit(testcase::sphere(6, 2.2)); }
+TEST(Greedy, TheSameInAnyUnitAndPlace2D) {
+  expect_the_same_in_any_unit(testcase::five_by_five());
+}
+TEST(Greedy, TheSameInAnyUnitAndPlace3D) {
+  expect_the_same_in_any_unit(testcase::sphere(6, 2.2));
+}
 
 // Pure 0 | mixed 50/50 | pure 1: the best assignment of the middle cell is a straight
 // split with material 0 on the left.
@@ -165,7 +170,8 @@ TEST(Mip, FiveByFiveMeetsTheCountsAndReportsItsStatus) {
     if (!px.block_free(b)) continue;
     const auto want = largest_remainder_counts(px, c.fractions, b);
     std::vector<int> got(3, 0);
-    for (std::int64_t p = px.first_pixel(b); p < px.first_pixel(b + 1); ++p) ++got[static_cast<std::size_t>(px.label(p))];
+    for (std::int64_t p = px.first_pixel(b); p < px.first_pixel(b + 1); ++p)
+      ++got[static_cast<std::size_t>(px.label(p))];
     EXPECT_EQ(got, want);
   }
 }
@@ -192,16 +198,16 @@ TEST(GraphCut, LowersItsEnergyAndUsesCellMaterialsOnly) {
 // The paper's Fig. 8 finding: on unstructured cells annealing matches pixel counts, not
 // volumes, so its discrepancy is higher than the greedy method's.
 TEST(Methods, JitteredGridDiscrepancy) {
-  const auto c = testcase::make_case(testcase::jittered_grid(8, 8, 0.3), 2,
-                                     testcase::disk(4.1, 3.9, 2.3));
+  const auto c =
+      testcase::make_case(testcase::jittered_grid(8, 8, 0.3), 2, testcase::disk(4.1, 3.9, 2.3));
   PixelMesh g = pixels_of(c), a = pixels_of(c), gc = pixels_of(c), lr = pixels_of(c);
   greedy_assign(g, c.fractions);
   annealing_assign(a, c.fractions);
   graph_cut_assign(gc, c.fractions);
   const double dg = discrepancy(g, c.fractions), da = discrepancy(a, c.fractions);
   std::cout << "jittered 8x8 disk, nsub 10: discrepancy greedy " << dg << ", annealing " << da
-            << ", graphcut " << discrepancy(gc, c.fractions) << "; edgecut greedy "
-            << edgecut(g) << ", annealing " << edgecut(a) << ", graphcut " << edgecut(gc) << "\n";
+            << ", graphcut " << discrepancy(gc, c.fractions) << "; edgecut greedy " << edgecut(g)
+            << ", annealing " << edgecut(a) << ", graphcut " << edgecut(gc) << "\n";
   EXPECT_LT(dg, da);
 }
 

@@ -11,12 +11,12 @@ namespace {
 
 // Volume of material m in the pixel mesh plus the cells without pixels.
 template <class M>
-double pixel_volume(const M& mesh, const PixelMesh& px, const std::vector<int>& assign, int m) {
+double pixel_volume(const M& mesh, const PixelMesh& px, const CellMaterials& assign, int m) {
   double v = 0;
   for (CellId c : id_range<CellId>(mesh.n_cells())) {
     const index_t b = px.cell_block(c);
     if (b < 0) {
-      if (assign[c.idx()] == m) v += mesh.cell_volume(c);
+      if (assign[c] == m) v += mesh.cell_volume(c);
       continue;
     }
     for (std::int64_t p = px.first_pixel(b); p < px.first_pixel(b + 1); ++p)
@@ -73,7 +73,8 @@ TEST(Model, TriplePointsAndBoundaryEndsAreCorners) {
   int triple = 0, boundary = 0;
   for (index_t v : r.model.corners) {
     const Vec3& p = r.model.points[static_cast<std::size_t>(v)];
-    const bool on_boundary = p.x() < 1e-12 || p.y() < 1e-12 || p.x() > 5 - 1e-12 || p.y() > 5 - 1e-12;
+    const bool on_boundary =
+        p.x() < 1e-12 || p.y() < 1e-12 || p.x() > 5 - 1e-12 || p.y() > 5 - 1e-12;
     (on_boundary ? boundary : triple) += 1;
   }
   EXPECT_GE(triple, 1);

@@ -37,7 +37,7 @@ TEST(PixelMesh, PixelatesMixedCellsAndTheirNodeNeighbours) {
     double vol = 0;
     for (std::int64_t p = px.first_pixel(b); p < px.first_pixel(b + 1); ++p) {
       vol += px.volume(p);
-      EXPECT_EQ(px.label(p), px.block_free(b) ? PixelMesh::unassigned : c.majority[cell.idx()]);
+      EXPECT_EQ(px.label(p), px.block_free(b) ? PixelMesh::unassigned : c.majority[cell]);
     }
     EXPECT_NEAR(vol, c.mesh.cell_volume(cell), 1e-12);
   }
@@ -45,7 +45,8 @@ TEST(PixelMesh, PixelatesMixedCellsAndTheirNodeNeighbours) {
 }
 
 TEST(PixelMesh, JitteredCellsHavePixelsOfDifferentVolumes) {
-  const auto c = testcase::make_case(testcase::jittered_grid(6, 6, 0.3), 2, testcase::disk(3, 3, 1.7));
+  const auto c =
+      testcase::make_case(testcase::jittered_grid(6, 6, 0.3), 2, testcase::disk(3, 3, 1.7));
   const PixelMesh px = build_pixel_mesh(c.mesh, c.fractions, c.majority, {});
   double lo = 1e300, hi = 0;
   for (std::int64_t p = 0; p < px.n_pixels(); ++p) {
@@ -80,7 +81,7 @@ TEST(PixelMesh, LinksCellsWhoseLatticesAreRotated) {
   f(CellId(1), 0) = 1;
   PixelOptions o;
   o.nsub = 3;
-  const PixelMesh px = build_pixel_mesh(mesh, f, {0, 0}, o);
+  const PixelMesh px = build_pixel_mesh(mesh, f, CellMaterials(2, 0), o);
   ASSERT_EQ(px.n_blocks(), 2);
   expect_symmetric_neighbours(px);
   // Centres across the shared face x = 1 are one pixel width apart along x.
@@ -111,9 +112,9 @@ TEST(PixelMesh, RefusesBeyondTheMemoryLimitBeforeAllocating) {
 TEST(PixelMesh, RejectsBadAssignments) {
   const auto c = testcase::make_case(make_quad_grid(3, 3), 2, testcase::disk(1.5, 1.5, 1));
   auto bad = c.majority;
-  bad[4] = 7;
+  bad[CellId(4)] = 7;
   EXPECT_THROW(build_pixel_mesh(c.mesh, c.fractions, bad, {}), InputError);
-  bad.pop_back();
+  bad.resize(bad.size() - 1);
   EXPECT_THROW(build_pixel_mesh(c.mesh, c.fractions, bad, {}), InputError);
   PixelOptions o;
   o.nsub = 0 - 1;

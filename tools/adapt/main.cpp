@@ -8,14 +8,14 @@
 #include <vector>
 
 #include "cli.h"
-#include "input_record.h"
-#include "hexadapt/io/fractions_reader.h"
-#include "hexadapt/io/material_array.h"
 #include "hexadapt/adapt/adapt.h"
 #include "hexadapt/adapt/adapt_io.h"
 #include "hexadapt/core/error.h"
+#include "hexadapt/io/assigned_grid_file.h"
+#include "hexadapt/io/fractions_reader.h"
 #include "hexadapt/io/mesh_file.h"
 #include "hexadapt/reconstruct/model_io.h"
+#include "input_record.h"
 
 namespace {
 
@@ -57,8 +57,8 @@ std::string failures_text(const std::vector<CellFailure>& failures, double thres
     if (f.size_failed())
       std::snprintf(line, sizeof line,
                     "\n  cell %d at (%.6g, %.6g, %.6g): shortest edge %.6g < %.6g (min_edge)",
-                    f.cell.value(), f.centroid.x(), f.centroid.y(), f.centroid.z(),
-                    f.shortest_edge, f.min_length);
+                    f.cell.value(), f.centroid.x(), f.centroid.y(), f.centroid.z(), f.shortest_edge,
+                    f.min_length);
     else
       std::snprintf(line, sizeof line,
                     "\n  cell %d at (%.6g, %.6g, %.6g): scaled Jacobian %.6g < %.6g (threshold)",
@@ -82,8 +82,8 @@ Json result_json(const AdaptResult<M>& r, index_t input_cells, double threshold)
   j["dist_final"] = r.dist_final;
   j["surface_dist_init"] = r.surface_dist_init;
   j["surface_dist_final"] = r.surface_dist_final;
-  j["surface_dist_ratio"] = r.surface_dist_init > 0 ? r.surface_dist_final / r.surface_dist_init
-                                                    : 0.0;
+  j["surface_dist_ratio"] =
+      r.surface_dist_init > 0 ? r.surface_dist_final / r.surface_dist_init : 0.0;
   j["min_quality"] = r.min_quality;
   j["cells_below_threshold"] = r.n_below_threshold;
   j["cells_inverted"] = r.n_inverted;
@@ -222,8 +222,8 @@ int refuse_bad_input(const cli::CommonOptions& common, Json& report, const Phase
                      const std::vector<CellId>& bad, const std::vector<CellFailure>& worst,
                      double threshold) {
   log_warning(std::to_string(bad.size()) + " input cells fail the threshold " +
-              std::to_string(threshold) + " or the size criterion (--min-edge); the worst:" +
-              failures_text(worst, threshold) +
+              std::to_string(threshold) +
+              " or the size criterion (--min-edge); the worst:" + failures_text(worst, threshold) +
               "\nnothing written (--allow-bad-input runs anyway, without the guarantee; "
               "--min-edge 0 drops the size criterion)");
   Json cells = Json::array();
@@ -250,12 +250,10 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   cli::check_memory("adapting " + std::to_string(in.n_cells()) + " cells",
                     static_cast<double>(in.n_cells()) * cli::adapt_bytes_per_cell,
                     common.memory_limit());
-  const Fractions fractions = io::extract_fractions(in, args.in.fractions, nullptr, args.input);
-  const IdVector<CellId, int> material =
-      io::read_material_array(in, fractions.n_materials(), args.input);
-  const AnyMesh grid = io::to_mesh(in, args.input);
+  const AssignedGrid grid =
+      io::to_assigned_grid(in, args.in.grid(io::MaterialSource::array), args.input);
   reconstruct::ModelFile model;
-  if (!args.model.empty()) model = read_model(args.model, fractions);
+  if (!args.model.empty()) model = read_model(args.model, grid.fractions);
   times.emplace_back("read", clock.seconds());
   clock.restart();
 
@@ -268,7 +266,7 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   report["layers"] = to_string(options.layers);
   report["steps"] = options.move.steps;
   report["drag"] = options.move.drag;
-  report["materials"] = fractions.names();
+  report["materials"] = grid.names();
   report["model"] = args.model;
   io::MeshData out;
   index_t below = 0;
@@ -277,8 +275,8 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   bool stopped = false;
   std::visit(
       [&](const auto& mesh) {
-        const auto r =
-            adapt(mesh, fractions, material, options, args.model.empty() ? nullptr : &model.model);
+        const auto r = adapt(mesh, grid.fractions, grid.material, options,
+                             args.model.empty() ? nullptr : &model.model);
         bad_input = r.bad_input_cells;
         worst = r.failures;
         stopped = r.stopped_bad_input;
@@ -287,12 +285,11 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
         below = r.n_below_threshold + r.n_below_min_edge;
         log_steps(r, options.near_interface);
         if (!r.stopped_bad_input) warn_blocked(r, options.near_interface);
-        out = adapt_mesh_data(r, fractions.names());
+        out = adapt_mesh_data(r, grid.names());
       },
-      grid);
+      grid.mesh);
   clock.restart();
-  if (stopped)
-    return refuse_bad_input(common, report, times, bad_input, worst, options.threshold);
+  if (stopped) return refuse_bad_input(common, report, times, bad_input, worst, options.threshold);
   for (auto& kv : cli::provenance(app)) out.metadata.push_back(kv);
   cli::pass_input_record(in, out);
   io::write_mesh(out, common.output, common.write_options());

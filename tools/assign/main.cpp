@@ -7,12 +7,12 @@
 #include <sstream>
 
 #include "cli.h"
-#include "input_record.h"
-#include "hexadapt/io/fractions_reader.h"
 #include "hexadapt/assign/assign.h"
 #include "hexadapt/core/error.h"
+#include "hexadapt/io/fractions_reader.h"
 #include "hexadapt/io/mesh_file.h"
 #include "hexadapt/mesh/cell_complex.h"
+#include "input_record.h"
 
 namespace hexadapt {
 namespace {
@@ -61,31 +61,18 @@ void add_options(CLI::App& app, Options& o) {
                  "When the correction fails, write the assignment reached so far here");
 }
 
-io::DataArray int_array(const std::string& name, const assign::Labels& labels) {
+/// The input data plus the assigned grid's arrays (io::put_assignment), the majority
+/// assignment, provenance and the record of how the fractions were read (`record`,
+/// input_record.h).
+io::MeshData output_data(io::MeshData data, const AssignedGrid& grid, const CellMaterials& majority,
+                         const CLI::App& app, const std::string& record) {
+  io::put_assignment(grid, data);
   io::DataArray a;
-  a.name = name;
+  a.name = "majority";
   a.type = io::ScalarType::int32;
-  for (int m : labels) a.values.push_back(m);
-  return a;
-}
-
-/// The input data plus the repaired fractions (vf_<name>), the two assignments, provenance and
-/// the record of how the fractions were read (`record`, input_record.h).
-io::MeshData output_data(io::MeshData data, const Fractions& f, const assign::Labels& majority,
-                         const assign::Labels& material, const CLI::App& app,
-                         const std::string& record) {
-  std::string names;
-  for (int m = 0; m < f.n_materials(); ++m) {
-    io::DataArray a;
-    a.name = "vf_" + f.names()[static_cast<std::size_t>(m)];
-    for (CellId c : id_range<CellId>(f.n_cells())) a.values.push_back(f(c, m));
-    data.set_cell_array(std::move(a));
-    names += (m ? "," : "") + f.names()[static_cast<std::size_t>(m)];
-  }
-  data.set_cell_array(int_array("material", material));
-  data.set_cell_array(int_array("majority", majority));
+  a.values.assign(majority.begin(), majority.end());
+  data.set_cell_array(std::move(a));
   for (const auto& kv : cli::provenance(app)) data.metadata.push_back(kv);
-  data.metadata.emplace_back("hexadapt_materials", names);
   auto& meta = data.metadata;
   meta.erase(std::remove_if(meta.begin(), meta.end(),
                             [](const auto& kv) { return kv.first == cli::input_record_key; }),
@@ -165,8 +152,8 @@ std::string fractions_message(const io::FractionReport& fr) {
 
 // What --min-island did, and the small pieces the correction left (a warning: asked away).
 void log_islands(const assign::AssignResult& r, index_t min_cells) {
-  log_info(std::to_string(r.islands.islands) + " pieces smaller than " +
-           std::to_string(min_cells) + " cells (" + std::to_string(r.islands.cells) +
+  log_info(std::to_string(r.islands.islands) + " pieces smaller than " + std::to_string(min_cells) +
+           " cells (" + std::to_string(r.islands.cells) +
            " cells) given to the material around them");
   if (r.small_pieces_final > 0)
     log_warning(std::to_string(r.small_pieces_final) + " pieces smaller than " +
@@ -174,15 +161,18 @@ void log_islands(const assign::AssignResult& r, index_t min_cells) {
 }
 
 // A material nowhere the majority gets no cell and is gone from every later stage.
-void warn_vanished(const std::vector<assign::MaterialBalance>& balance, const Fractions& fractions) {
+void warn_vanished(const std::vector<assign::MaterialBalance>& balance,
+                   const Fractions& fractions) {
   for (std::size_t m = 0; m < balance.size(); ++m) {
     if (!balance[m].vanished()) continue;
     char share[32];
     std::snprintf(share, sizeof share, "%.3g", 100 * balance[m].input_share);
-    log(LogLevel::warning, "material '" + fractions.names()[m] + "' has no cell after the "
-                           "assignment: it is nowhere the majority (" + share +
-                           " % of the domain's volume in the input); it is lost to every "
-                           "later stage");
+    log(LogLevel::warning, "material '" + fractions.names()[m] +
+                               "' has no cell after the "
+                               "assignment: it is nowhere the majority (" +
+                               share +
+                               " % of the domain's volume in the input); it is lost to every "
+                               "later stage");
   }
 }
 
@@ -212,12 +202,12 @@ int run_assign(const CLI::App& app, Options& o) {
   times.emplace_back("read", t.seconds());
   t.restart();
   io::FractionReport fr;
-  const Fractions fractions = io::extract_fractions(data, o.in.fractions, &fr, o.input);
+  AssignedGrid grid = io::to_assigned_grid(data, o.in.grid(io::MaterialSource::none), o.input, &fr);
+  const Fractions& fractions = grid.fractions;
   if (o.in.fractions.labels.empty()) log_info(fractions_message(fr));
-  const AnyMesh mesh = io::to_mesh(data, o.input);
   times.emplace_back("fractions", t.seconds());
   const assign::AssignResult r = std::visit(
-      [&](const auto& m) { return assign::assign_materials(m, fractions, o.assign); }, mesh);
+      [&](const auto& m) { return assign::assign_materials(m, fractions, o.assign); }, grid.mesh);
   for (const auto& p : r.times) times.push_back(p);
   log_info("non-manifold nodes at first: " + std::to_string(r.correction.non_manifold_initial) +
            ", cells changed: " + std::to_string(r.correction.cells_changed));
@@ -229,9 +219,9 @@ int run_assign(const CLI::App& app, Options& o) {
   warn_vanished(r.balance, fractions);
   t.restart();
   const std::string out = r.correction.solved ? o.common.output : o.partial;
+  grid.material = r.correction.labels;
   if (!out.empty())
-    io::write_mesh(output_data(std::move(data), fractions, r.majority, r.correction.labels, app,
-                               cli::input_record(o.in, fr)),
+    io::write_mesh(output_data(std::move(data), grid, r.majority, app, cli::input_record(o.in, fr)),
                    out, o.common.write_options());
   times.emplace_back("write", t.seconds());
 
@@ -239,7 +229,7 @@ int run_assign(const CLI::App& app, Options& o) {
   report["input"] = o.input;
   report["output"] = out;
   report["dimension"] =
-      std::visit([](const auto& m) { return std::decay_t<decltype(m)>::dim; }, mesh);
+      std::visit([](const auto& m) { return std::decay_t<decltype(m)>::dim; }, grid.mesh);
   report["cells"] = fractions.n_cells();
   report["materials"] = fractions.names();
   report["options"] = {{"keep", o.assign.correction.keep},

@@ -2,20 +2,20 @@
 // bar on a terminal, and the provenance recorded in every output file (DESIGN sec. 2).
 #pragma once
 
+#include <CLI/CLI.hpp>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
-#include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
-
+#include "file_checks.h"
 #include "hexadapt/core/log.h"
 #include "hexadapt/core/timer.h"
-#include "hexadapt/io/mesh_file.h"
+#include "hexadapt/io/assigned_grid_file.h"
 #include "hexadapt/io/fractions_reader.h"
-#include "file_checks.h"
+#include "hexadapt/io/mesh_file.h"
 #include "memory.h"
 
 namespace hexadapt::cli {
@@ -26,20 +26,20 @@ using Json = nlohmann::ordered_json;
 /// Exit codes of every tool.
 enum Exit : int {
   ok = 0,
-  usage = 1,         ///< bad command line
-  bad_input = 2,     ///< unreadable or invalid input, or an output that cannot be written
-  target_missed = 3, ///< ran, but the requested target (e.g. quality) was not met
-  internal = 4,      ///< a bug
-  out_of_memory = 5, ///< the estimate exceeds --max-memory, or an allocation failed
+  usage = 1,          ///< bad command line
+  bad_input = 2,      ///< unreadable or invalid input, or an output that cannot be written
+  target_missed = 3,  ///< ran, but the requested target (e.g. quality) was not met
+  internal = 4,       ///< a bug
+  out_of_memory = 5,  ///< the estimate exceeds --max-memory, or an allocation failed
 };
 
 struct CommonOptions {
-  std::string output;       ///< -o
-  std::string json;         ///< --json
-  bool quiet = false;       ///< -q
-  int verbose = 0;          ///< -v (repeatable)
-  int threads = 0;          ///< --threads, 0 = all cores
-  std::string max_memory;   ///< --max-memory, empty = the machine's memory
+  std::string output;               ///< -o
+  std::string json;                 ///< --json
+  bool quiet = false;               ///< -q
+  int verbose = 0;                  ///< -v (repeatable)
+  int threads = 0;                  ///< --threads, 0 = all cores
+  std::string max_memory;           ///< --max-memory, empty = the machine's memory
   std::string exodus_sets = "all";  ///< --exodus-sets: none, boundary, interfaces, all
   bool no_string_fields = false;    ///< --no-string-fields
   /// --max-memory in bytes.
@@ -62,6 +62,8 @@ struct InputOptions {
   std::string plane = "auto";  ///< auto, xy, yz or xz
   io::ReadOptions time;        ///< --step and --time (its other fields are unused)
   io::ReadOptions read_options() const;
+  /// How the stages read their grid: these fractions, each cell's material from `source`.
+  io::AssignedGridOptions grid(io::MaterialSource source) const { return {fractions, source}; }
 };
 
 void add_input_options(CLI::App& app, InputOptions& options);

@@ -5,21 +5,22 @@
 // --max-volume-error is not met. Report fields: docs/reports.md.
 #include <cmath>
 #include <cstdio>
-#include <optional>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <string>
 
 #include "cli.h"
-#include "input_record.h"
 #include "hexadapt/core/error.h"
+#include "hexadapt/io/assigned_grid_file.h"
+#include "hexadapt/io/fractions_reader.h"
 #include "hexadapt/io/mesh_file.h"
 #include "hexadapt/measure/discrepancy.h"
 #include "hexadapt/measure/imprint.h"
 #include "hexadapt/measure/quality_report.h"
 #include "hexadapt/measure/size_report.h"
 #include "hexadapt/measure/target_distance.h"
-#include "hexadapt/io/fractions_reader.h"
+#include "input_record.h"
 
 namespace {
 
@@ -145,8 +146,8 @@ struct DiscrepancyRun {
 // Imprints the mesh's materials onto the reference grid; material m of the mesh is the
 // reference's m-th fraction array.
 DiscrepancyRun measure_discrepancy(const Args& a, const cli::InputOptions& reading,
-                                   const io::MeshData& mesh, const Progress& bar,
-                                   PhaseTimes& times, double memory_limit) {
+                                   const io::MeshData& mesh, const Progress& bar, PhaseTimes& times,
+                                   double memory_limit) {
   DiscrepancyRun run;
   run.reference = cli::timed_phase(times, bar, "read_reference", [&] {
     return io::read_mesh(a.reference, reading.read_options());
@@ -160,12 +161,8 @@ DiscrepancyRun measure_discrepancy(const Args& a, const cli::InputOptions& readi
   } catch (const InputError& e) {
     rethrow_with_file(e, a.reference);
   }
-  std::vector<int> materials;
-  try {
-    materials = cell_materials(mesh, a.report.material_array);
-  } catch (const InputError& e) {
-    rethrow_with_file(e, a.input);
-  }
+  const CellMaterials materials =
+      io::read_material_array(mesh, fractions.n_materials(), a.input, a.report.material_array);
   Timer timer;
   Imprint im;
   ImprintOptions options;
@@ -260,8 +257,7 @@ int measure(const CLI::App& app, const cli::CommonOptions& common, const Args& a
   const std::optional<cli::InputOptions> recorded =
       cli::input_options_given(app) ? std::nullopt : cli::carried_input(data, a.input);
   if (!a.reference.empty())
-    disc = measure_discrepancy(a, recorded.value_or(a.in), data, bar, times,
-                               common.memory_limit());
+    disc = measure_discrepancy(a, recorded.value_or(a.in), data, bar, times, common.memory_limit());
   timer.restart();
   SizeReport size;
   try {

@@ -6,9 +6,9 @@
 #include <variant>
 
 #include "cli.h"
-#include "hexadapt/io/fractions_reader.h"
-#include "hexadapt/io/material_array.h"
 #include "hexadapt/core/error.h"
+#include "hexadapt/io/assigned_grid_file.h"
+#include "hexadapt/io/fractions_reader.h"
 #include "hexadapt/io/mesh_file.h"
 #include "hexadapt/reconstruct/model_io.h"
 #include "hexadapt/reconstruct/pixel_output.h"
@@ -27,15 +27,14 @@ struct Options {
   double read_seconds = 0;  ///< reading the input, for the report
 };
 
-std::vector<int> read_assignment(const io::MeshData& data, const Fractions& f,
-                                 const Options& o) {
+AssignedGrid read_grid(const io::MeshData& data, const Options& o) {
   if (!o.majority && !data.find_cell_array("material"))
-    throw InputError(o.input, "", "no `material` cell array: run hexadapt-assign first, or "
-                                  "pass --majority to use the majority material");
-  if (!o.majority) return io::read_material_array(data, f.n_materials(), o.input).raw();
-  std::vector<int> a(static_cast<std::size_t>(data.n_cells()));
-  for (CellId c : id_range<CellId>(data.n_cells())) a[c.idx()] = f.majority(c);
-  return a;
+    throw InputError(o.input, "",
+                     "no `material` cell array: run hexadapt-assign first, or "
+                     "pass --majority to use the majority material");
+  return io::to_assigned_grid(
+      data, o.in.grid(o.majority ? io::MaterialSource::majority : io::MaterialSource::array),
+      o.input);
 }
 
 std::string model_stem(std::string path) {
@@ -77,8 +76,8 @@ cli::Json method_json(const reconstruct::ReconstructResult& r, Method m) {
 }
 
 template <class M>
-int run(const M& mesh, const Fractions& f, const std::vector<int>& assignment,
-        Options& o, const cli::CommonOptions& common, const CLI::App& app) {
+int run(const M& mesh, const Fractions& f, const CellMaterials& assignment, Options& o,
+        const cli::CommonOptions& common, const CLI::App& app) {
   auto& lib = o.lib;
   lib.method = reconstruct::parse_method(o.method);
   lib.pixels.max_memory = common.memory_limit();
@@ -92,19 +91,15 @@ int run(const M& mesh, const Fractions& f, const std::vector<int>& assignment,
     const auto plan = reconstruct::plan_pixels(mesh, f, assignment, po);
     std::cerr << app.get_name() << ": " << plan.n_pixels << " pixels (" << plan.n_free_pixels
               << " free) in " << plan.n_blocks << " cells, nsub " << plan.nsub
-              << "; pixel memory estimate " << plan.bytes / 1e6 << " MB plus the "
-              << o.method << " working arrays\n";
+              << "; pixel memory estimate " << plan.bytes / 1e6 << " MB plus the " << o.method
+              << " working arrays\n";
   }
   const auto rec = reconstruct::reconstruct(mesh, f, assignment, lib);
   const auto& r = rec.result;
   Timer t;
   io::MeshData out = reconstruct::pixel_mesh_data(rec.pixels);
   out.metadata = cli::provenance(app);
-  out.metadata.emplace_back("hexadapt_materials", [&] {
-    std::string s;
-    for (const auto& n : f.names()) s += (s.empty() ? "" : ",") + n;
-    return s;
-  }());
+  out.metadata.emplace_back("hexadapt_materials", io::join_material_names(f.names()));
   io::write_mesh(out, common.output, common.write_options());
   std::vector<std::string> files{common.output};
   if (!o.model.empty()) {
@@ -112,7 +107,8 @@ int run(const M& mesh, const Fractions& f, const std::vector<int>& assignment,
     reconstruct::write_model_vtk(rec.model, f.names(), stem + ".vtk");
     files.push_back(stem + ".vtk");
     if (M::dim == 3)
-      for (const auto& p : reconstruct::write_model_openmesh(rec.model, f.names(), stem, o.model_format))
+      for (const auto& p :
+           reconstruct::write_model_openmesh(rec.model, f.names(), stem, o.model_format))
         files.push_back(p);
   }
   PhaseTimes times{{"read", o.read_seconds}};
@@ -122,8 +118,9 @@ int run(const M& mesh, const Fractions& f, const std::vector<int>& assignment,
   log_info("method " + o.method + " (" + r.status + "): edgecut " + std::to_string(r.edgecut) +
            ", discrepancy " + std::to_string(total));
   if (lib.method == Method::mip && r.mip.status == reconstruct::MipStatus::timed_out_no_solution)
-    log_warning("the MIP found no solution within the time limit: the pixels keep the "
-                "largest-remainder fill");
+    log_warning(
+        "the MIP found no solution within the time limit: the pixels keep the "
+        "largest-remainder fill");
   cli::Json j = cli::report_header(app);
   j["input"] = o.input;
   j["method"] = o.method;
@@ -165,7 +162,8 @@ int main(int argc, char** argv) {
       ->required();
   cli::add_common_options(app, common);
   cli::add_write_options(app, common);
-  app.add_option("--model", o.model, "Write the geometric model: OUT.vtk, and in 3D OUT.<a>-<b>.om");
+  app.add_option("--model", o.model,
+                 "Write the geometric model: OUT.vtk, and in 3D OUT.<a>-<b>.om");
   app.add_option("--model-format", o.model_format, "OpenMesh format of the 3D surfaces")
       ->check(CLI::IsMember({"om", "obj"}))
       ->capture_default_str();
@@ -198,11 +196,10 @@ int main(int argc, char** argv) {
                       {"--json", common.json}});
     const Timer read;
     io::MeshData data = io::read_mesh(o.input, o.in.read_options());
-    const Fractions f = io::extract_fractions(data, o.in.fractions, nullptr, o.input);
-    const std::vector<int> assignment = read_assignment(data, f, o);
-    const AnyMesh mesh = io::to_mesh(data, o.input);
+    const AssignedGrid grid = read_grid(data, o);
     o.read_seconds = read.seconds();
-    return std::visit([&](const auto& m) { return run(m, f, assignment, o, common, app); },
-                      mesh);
+    return std::visit(
+        [&](const auto& m) { return run(m, grid.fractions, grid.material, o, common, app); },
+        grid.mesh);
   });
 }

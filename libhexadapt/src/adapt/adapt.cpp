@@ -31,10 +31,14 @@ LayerStrategy parse_layer_strategy(const std::string& name) {
 
 std::string to_string(LayerStrategy strategy) {
   switch (strategy) {
-    case LayerStrategy::automatic: return "automatic";
-    case LayerStrategy::cavities: return "cavities";
-    case LayerStrategy::first: return "first";
-    case LayerStrategy::both: return "both";
+    case LayerStrategy::automatic:
+      return "automatic";
+    case LayerStrategy::cavities:
+      return "cavities";
+    case LayerStrategy::first:
+      return "first";
+    case LayerStrategy::both:
+      return "both";
   }
   return "automatic";
 }
@@ -53,8 +57,9 @@ void check_options(const AdaptOptions& o) {
   if (o.cavity.range < 0)
     throw OptionError("{cavity.range} must be >= 0, got " + std::to_string(o.cavity.range));
   if (o.interface_pillow.rounds < 0 || o.interface_pillow.carve < 0 || o.mend_rounds < 0)
-    throw OptionError("{interface_pillow.rounds}, {interface_pillow.carve} and {mend_rounds} "
-                      "must be >= 0");
+    throw OptionError(
+        "{interface_pillow.rounds}, {interface_pillow.carve} and {mend_rounds} "
+        "must be >= 0");
   if (!(o.enough_share >= 0 && o.enough_share <= 1))
     throw OptionError("{enough_share} must be in [0, 1], got " + std::to_string(o.enough_share));
   if (!(o.near_interface >= 0))
@@ -71,8 +76,9 @@ void check_options(const AdaptOptions& o) {
 void check_model(const reconstruct::InterfaceModel* model, int dim, int n_materials) {
   if (!model) return;
   if (model->dim != dim)
-    throw InputError("", "model", "a " + std::to_string(model->dim) + "D model for a " +
-                                      std::to_string(dim) + "D grid");
+    throw InputError(
+        "", "model",
+        "a " + std::to_string(model->dim) + "D model for a " + std::to_string(dim) + "D grid");
   for (std::size_t f = 0; f < model->facet_materials.size(); ++f)
     for (int m : model->facet_materials[f])
       if (m < 0 || m >= n_materials)
@@ -102,7 +108,7 @@ void result_to_world(AdaptResult<M>& r, const UnitFrame& f) {
 
 template <class M>
 AdaptResult<M> run_pipeline(const M& grid, const Fractions& fractions,
-                            const IdVector<CellId, int>& material, const AdaptOptions& options,
+                            const CellMaterials& material, const AdaptOptions& options,
                             const reconstruct::InterfaceModel* model) {
   switch (options.method) {
     case AdaptMethod::base:
@@ -116,9 +122,8 @@ AdaptResult<M> run_pipeline(const M& grid, const Fractions& fractions,
 }  // namespace
 
 template <class M>
-AdaptResult<M> adapt(const M& grid, const Fractions& fractions,
-                     const IdVector<CellId, int>& material, const AdaptOptions& options,
-                     const reconstruct::InterfaceModel* model) {
+AdaptResult<M> adapt(const M& grid, const Fractions& fractions, const CellMaterials& material,
+                     const AdaptOptions& options, const reconstruct::InterfaceModel* model) {
   check_options(options);
   check_model(model, M::dim, fractions.n_materials());
   const UnitFrame frame = unit_frame(grid);

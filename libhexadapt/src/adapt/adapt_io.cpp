@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "hexadapt/io/assigned_grid_file.h"
+
 namespace hexadapt {
 
 template <class M>
@@ -28,9 +30,7 @@ io::MeshData adapt_mesh_data(const AdaptResult<M>& result,
   for (NodeId v : id_range<NodeId>(result.mesh.n_nodes()))
     blocked.values.push_back(result.blocked.empty() ? 0 : result.blocked[v]);
   data.set_point_array(std::move(blocked));
-  std::string names;
-  for (const auto& n : material_names) names += (names.empty() ? "" : ",") + n;
-  data.metadata.emplace_back("materials", names);
+  data.metadata.emplace_back("materials", io::join_material_names(material_names));
   return data;
 }
 

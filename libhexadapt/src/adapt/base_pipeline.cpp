@@ -8,8 +8,7 @@ namespace hexadapt::detail {
 
 template <class M>
 AdaptResult<M> run_base_pipeline(const M& grid, const Fractions& fractions,
-                                 const IdVector<CellId, int>& material,
-                                 const AdaptOptions& options) {
+                                 const CellMaterials& material, const AdaptOptions& options) {
   AdaptResult<M> r;
   Timer clock;
   if (options.progress) options.progress("targets", 0.0);

@@ -8,7 +8,6 @@ namespace hexadapt::detail {
 /// Targets, direct move, global pillowing of every material, global smoothing.
 template <class M>
 AdaptResult<M> run_base_pipeline(const M& grid, const Fractions& fractions,
-                                 const IdVector<CellId, int>& material,
-                                 const AdaptOptions& options);
+                                 const CellMaterials& material, const AdaptOptions& options);
 
 }  // namespace hexadapt::detail

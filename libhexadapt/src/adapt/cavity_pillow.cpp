@@ -17,8 +17,8 @@ using detail::EditableMesh;
 // Cells of material m within vertex distance `range` of seed. `mark`: one zero per cell,
 // left zero.
 template <class M>
-std::vector<CellId> cavity_cells(const EditableMesh<M>& mesh, const IdVector<CellId, int>& material,
-                                 int m, NodeId seed, int range, std::vector<char>& mark) {
+std::vector<CellId> cavity_cells(const EditableMesh<M>& mesh, const CellMaterials& material, int m,
+                                 NodeId seed, int range, std::vector<char>& mark) {
   std::vector<CellId> out, front;
   for (CellId c : mesh.node_cells(seed))
     if (material[c] == m) front.push_back(c);
@@ -62,7 +62,7 @@ class SeedSet {
     return std::nullopt;
   }
   template <class M>
-  void refresh(const EditableMesh<M>& mesh, const IdVector<CellId, int>& material, int m) {
+  void refresh(const EditableMesh<M>& mesh, const CellMaterials& material, int m) {
     holders_.resize(static_cast<std::size_t>(mesh.n_cells()));
     mark_.resize(static_cast<std::size_t>(mesh.n_cells()), 0);
     for (std::size_t i = 0; i < seeds_.size(); ++i) {
@@ -152,8 +152,8 @@ TriedCavity<M> try_cavity(const CavityPatch<M>& patch, const SizeCriterion& size
                           const CavityOptions& o) {
   const M& mesh = patch.mesh;
   const IdVector<CellId, char>& set = patch.in_set;
-  TriedCavity<M> t{pillow_cells(mesh, set, boundary_constraints(mesh, o.boundary), o.pillow, size),
-                   {}, 1};
+  TriedCavity<M> t{
+      pillow_cells(mesh, set, boundary_constraints(mesh, o.boundary), o.pillow, size), {}, 1};
   t.size = size.remapped(t.pillowed.cell_origin.raw());
   const M& pm = t.pillowed.mesh;
   auto in_cavity = [&](CellId c) { return c.value() >= mesh.n_cells() || set[c] != 0; };
@@ -162,8 +162,7 @@ TriedCavity<M> try_cavity(const CavityPatch<M>& patch, const SizeCriterion& size
     const auto cells = pm.node_cells(n);
     movable[n] = !cells.empty() && std::all_of(cells.begin(), cells.end(), in_cavity);
   }
-  smooth(t.pillowed.mesh, movable, boundary_constraints(pm, o.boundary), o.smooth, nullptr,
-         t.size);
+  smooth(t.pillowed.mesh, movable, boundary_constraints(pm, o.boundary), o.smooth, nullptr, t.size);
   for (CellId c : id_range<CellId>(pm.n_cells()))
     if (in_cavity(c)) t.worst = std::min(t.worst, cell_score(pm, c, t.size));
   return t;
@@ -198,7 +197,7 @@ inline std::vector<CellId> patch_origin(const std::vector<CellId>& origin,
 }  // namespace
 
 template <class M>
-CavityResult<M> cavity_pillow(const M& mesh, const IdVector<CellId, int>& material, int n_materials,
+CavityResult<M> cavity_pillow(const M& mesh, const CellMaterials& material, int n_materials,
                               const std::vector<NodeId>& seeds, const CavityOptions& options,
                               const SizeCriterion& size) {
   if (options.range < 1)
@@ -236,9 +235,8 @@ CavityResult<M> cavity_pillow(const M& mesh, const IdVector<CellId, int>& materi
       std::optional<TriedCavity<M>> tried;
       for (bool whole = options.whole_mesh;; whole = true) {
         try {
-          tried.emplace(
-              try_cavity(patch, size.remapped(patch_origin(r.cell_origin.raw(), patch.cells)),
-                         options));
+          tried.emplace(try_cavity(
+              patch, size.remapped(patch_origin(r.cell_origin.raw(), patch.cells)), options));
         } catch (const MeshError&) {
           // The set touches itself along an edge in a way its layer cannot follow (a face of
           // three cells): it cannot be published, and every seed in it shrinks. Confirmed in
@@ -297,8 +295,7 @@ CavityResult<M> cavity_pillow(const M& mesh, const IdVector<CellId, int>& materi
 template CavityResult<QuadMesh> cavity_pillow<QuadMesh>(const QuadMesh&,
                                                         const IdVector<CellId, int>&, int,
                                                         const std::vector<NodeId>&,
-                                                        const CavityOptions&,
-                                                        const SizeCriterion&);
+                                                        const CavityOptions&, const SizeCriterion&);
 template CavityResult<HexMesh> cavity_pillow<HexMesh>(const HexMesh&, const IdVector<CellId, int>&,
                                                       int, const std::vector<NodeId>&,
                                                       const CavityOptions&, const SizeCriterion&);

@@ -7,9 +7,9 @@
 namespace hexadapt {
 
 template <class M>
-GlobalPillowResult<M> global_pillow(const M& mesh, const IdVector<CellId, int>& material,
-                                    int n_materials, const BoundaryOptions& boundary,
-                                    const PillowOptions& options, const SizeCriterion& size) {
+GlobalPillowResult<M> global_pillow(const M& mesh, const CellMaterials& material, int n_materials,
+                                    const BoundaryOptions& boundary, const PillowOptions& options,
+                                    const SizeCriterion& size) {
   if (material.size() != static_cast<std::size_t>(mesh.n_cells()))
     throw InternalError("global pillow: materials do not match the mesh's cells");
   GlobalPillowResult<M> out;

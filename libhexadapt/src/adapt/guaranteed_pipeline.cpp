@@ -33,7 +33,9 @@ void set_points(M& mesh, const std::vector<Vec3>& p) {
 }
 
 // Which layers a resolved strategy makes.
-bool pillows_first(LayerStrategy s) { return s == LayerStrategy::first || s == LayerStrategy::both; }
+bool pillows_first(LayerStrategy s) {
+  return s == LayerStrategy::first || s == LayerStrategy::both;
+}
 bool pillows_cavities(LayerStrategy s) {
   return s == LayerStrategy::cavities || s == LayerStrategy::both;
 }
@@ -84,8 +86,7 @@ std::vector<NodeId> nodes_around_moves(const M& mesh, const std::vector<Vec3>& b
 template <class M>
 int move_smooth_loop(M& mesh, const Targets& targets,
                      const IdVector<NodeId, NodeConstraint>& sliding, const SizeCriterion& size,
-                     const AdaptOptions& options,
-                     int rounds_before = 0) {
+                     const AdaptOptions& options, int rounds_before = 0) {
   double best = surface_distance_sum(mesh, targets, sliding);
   std::vector<Vec3> best_points = points_of(mesh);
   const IdVector<NodeId, char> movable = loop_movable(targets);
@@ -118,7 +119,7 @@ int move_smooth_loop(M& mesh, const Targets& targets,
 // interface; its copies inside the cavity are new nodes without a target, free to smooth.
 // The layer cells take the local size of their cavity's cells.
 template <class M>
-std::vector<NodeId> pillow_cavities(M& mesh, IdVector<CellId, int>& material, Targets& targets,
+std::vector<NodeId> pillow_cavities(M& mesh, CellMaterials& material, Targets& targets,
                                     SizeCriterion& size, const MoveResult& first, int n_materials,
                                     AdaptResult<M>& r, const AdaptOptions& options) {
   std::vector<NodeId> seeds;
@@ -142,7 +143,7 @@ std::vector<NodeId> pillow_cavities(M& mesh, IdVector<CellId, int>& material, Ta
 template <class M>
 struct FirstMove {
   M mesh;
-  IdVector<CellId, int> material;
+  CellMaterials material;
   Targets targets;
   SizeCriterion size;
   MoveResult move;
@@ -156,10 +157,9 @@ struct FirstMove {
 // `mend`, when given: the layers are kept with their failing cells (interface_pillow.h), left
 // out around these input cells.
 template <class M>
-FirstMove<M> first_move(const M& mesh, const IdVector<CellId, int>& material,
-                        const Targets& targets, const SizeCriterion& size, bool pillow_first,
-                        int n_materials, const AdaptOptions& options,
-                        const std::vector<CellId>* mend) {
+FirstMove<M> first_move(const M& mesh, const CellMaterials& material, const Targets& targets,
+                        const SizeCriterion& size, bool pillow_first, int n_materials,
+                        const AdaptOptions& options, const std::vector<CellId>* mend) {
   FirstMove<M> f{mesh, material, targets, size, {}, {}, {}, 0, 0, 0, 0};
   if (options.progress) options.progress("pillow", 0.0);
   for (CellId c : id_range<CellId>(mesh.n_cells())) f.cell_origin.push_back(c);
@@ -191,7 +191,7 @@ FirstMove<M> first_move(const M& mesh, const IdVector<CellId, int>& material,
 
 // Sec. 5.3: smooths the targets on the model in 3D; says why when it does not run.
 template <class M>
-void correct(const M& mesh, const IdVector<CellId, int>& material,
+void correct(const M& mesh, const CellMaterials& material,
              const IdVector<NodeId, NodeConstraint>& boundary, Targets& targets,
              const reconstruct::InterfaceModel* model, AdaptResult<M>& r, Timer& clock,
              const AdaptOptions& options) {
@@ -277,7 +277,7 @@ std::vector<CellId> failing_origins(const M& mesh, const IdVector<CellId, CellId
 // around which no layer goes; out, the input cells of the cells left failing, whose layers
 // were kept failing (first_move).
 template <class M>
-void run_layers(const M& grid, const IdVector<CellId, int>& material, const Targets& grid_targets,
+void run_layers(const M& grid, const CellMaterials& material, const Targets& grid_targets,
                 const SizeCriterion& grid_size, int n_materials, LayerStrategy layers,
                 AdaptResult<M>& r, const AdaptOptions& options,
                 std::vector<CellId>* mend = nullptr) {
@@ -298,8 +298,8 @@ void run_layers(const M& grid, const IdVector<CellId, int>& material, const Targ
   Timer clock;
   if (options.progress) options.progress("cavity", 0.3);
 
-  const std::vector<NodeId> failed = pillow_cavities(mesh, out_material, targets, size, first,
-                                                     n_materials, r, options);
+  const std::vector<NodeId> failed =
+      pillow_cavities(mesh, out_material, targets, size, first, n_materials, r, options);
   record_step(r, mesh, "cavity", clock, options.progress, 0.4, "");  // the loop reports
   // The loop's rounds report within what is left of the run (after a probe, its second half).
   AdaptOptions rest = options;
@@ -339,9 +339,9 @@ void run_layers(const M& grid, const IdVector<CellId, int>& material, const Targ
 // layers carved where their cells fail before the move, which keeps the guarantee. The
 // discarded runs' time is the step "mend".
 template <class M>
-AdaptResult<M> first_layer(const M& grid, const IdVector<CellId, int>& material,
-                           const Targets& targets, const SizeCriterion& size, int n_materials,
-                           const AdaptResult<M>& before, const AdaptOptions& options) {
+AdaptResult<M> first_layer(const M& grid, const CellMaterials& material, const Targets& targets,
+                           const SizeCriterion& size, int n_materials, const AdaptResult<M>& before,
+                           const AdaptOptions& options) {
   std::vector<CellId> left_out;
   std::vector<index_t> failing;
   double seconds = 0;
@@ -392,8 +392,7 @@ AdaptOptions with_shared_settings(AdaptOptions o) {
 
 template <class M>
 AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions,
-                                       const IdVector<CellId, int>& material,
-                                       const AdaptOptions& given,
+                                       const CellMaterials& material, const AdaptOptions& given,
                                        const reconstruct::InterfaceModel* model) {
   const AdaptOptions options = with_shared_settings(given);
   if (options.progress) options.progress("check", 0.0);
@@ -452,10 +451,10 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
   } else if (options.layers == LayerStrategy::first) {
     r = first_layer(grid, material, targets, size, n_materials, r, layers);
   } else {
-    run_layers(grid, material, targets, size, n_materials,
-               options.layers == LayerStrategy::automatic ? LayerStrategy::cavities
-                                                          : options.layers,
-               r, layers);
+    run_layers(
+        grid, material, targets, size, n_materials,
+        options.layers == LayerStrategy::automatic ? LayerStrategy::cavities : options.layers, r,
+        layers);
   }
   if (good_input && (r.n_below_threshold > 0 || r.n_below_min_edge > 0))
     throw InternalError("guaranteed pipeline left " + std::to_string(r.n_below_threshold) +
@@ -466,10 +465,9 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
   return r;
 }
 
-template AdaptResult<QuadMesh> run_guaranteed_pipeline<QuadMesh>(const QuadMesh&, const Fractions&,
-                                                                 const IdVector<CellId, int>&,
-                                                                 const AdaptOptions&,
-                                                                 const reconstruct::InterfaceModel*);
+template AdaptResult<QuadMesh> run_guaranteed_pipeline<QuadMesh>(
+    const QuadMesh&, const Fractions&, const IdVector<CellId, int>&, const AdaptOptions&,
+    const reconstruct::InterfaceModel*);
 template AdaptResult<HexMesh> run_guaranteed_pipeline<HexMesh>(const HexMesh&, const Fractions&,
                                                                const IdVector<CellId, int>&,
                                                                const AdaptOptions&,

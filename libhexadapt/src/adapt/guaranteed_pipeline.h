@@ -9,8 +9,7 @@ namespace hexadapt::detail {
 /// move-smooth loop; every output cell >= threshold when every input cell is.
 template <class M>
 AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions,
-                                       const IdVector<CellId, int>& material,
-                                       const AdaptOptions& options,
+                                       const CellMaterials& material, const AdaptOptions& options,
                                        const reconstruct::InterfaceModel* model);
 
 }  // namespace hexadapt::detail

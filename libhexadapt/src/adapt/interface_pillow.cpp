@@ -127,7 +127,7 @@ std::vector<CellId> edge_touching(const M& mesh, const IdVector<CellId, char>& s
 }  // namespace
 
 template <class M>
-InterfacePillowResult<M> pillow_interfaces(const M& mesh, const IdVector<CellId, int>& material,
+InterfacePillowResult<M> pillow_interfaces(const M& mesh, const CellMaterials& material,
                                            int n_materials, const IdVector<NodeId, char>& fixed,
                                            const SizeCriterion& size,
                                            const InterfacePillowOptions& options,

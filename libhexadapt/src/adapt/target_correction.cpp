@@ -39,10 +39,10 @@ struct TargetSurface {
   IdVector<NodeId, std::vector<index_t>> node_faces;
   IdVector<NodeId, Role> role;
   IdVector<NodeId, std::vector<NodeId>> curve_next;  ///< ends of the node's feature edges
-  double mean_edge = 0;  ///< on the mesh points
+  double mean_edge = 0;                              ///< on the mesh points
 };
 
-void collect_faces(const HexMesh& mesh, const IdVector<CellId, int>& material, TargetSurface& s) {
+void collect_faces(const HexMesh& mesh, const CellMaterials& material, TargetSurface& s) {
   for (CellId c : id_range<CellId>(mesh.n_cells()))
     for (int lf = 0; lf < 6; ++lf) {
       const HalfFaceId h = HexMesh::half_face(c, lf);
@@ -161,7 +161,7 @@ double min_quality_all(const TargetSurface& s, const IdVector<NodeId, Vec3>& t, 
   return q;
 }
 
-void check_inputs(const HexMesh& mesh, const IdVector<CellId, int>& material,
+void check_inputs(const HexMesh& mesh, const CellMaterials& material,
                   const IdVector<NodeId, NodeConstraint>& boundary,
                   const reconstruct::InterfaceModel& model, const Targets& targets) {
   const auto nn = static_cast<std::size_t>(mesh.n_nodes());
@@ -273,9 +273,11 @@ void check_options(const TargetCorrectionOptions& o) {
   if (o.iterations < 0)
     throw OptionError("correction iterations must be >= 0, got " + std::to_string(o.iterations));
   if (!(o.relaxation > 0 && o.relaxation <= 1))
-    throw OptionError("correction relaxation must be in (0, 1], got " + std::to_string(o.relaxation));
+    throw OptionError("correction relaxation must be in (0, 1], got " +
+                      std::to_string(o.relaxation));
   if (!(o.search_radius > 0 && std::isfinite(o.search_radius)))
-    throw OptionError("correction search radius must be > 0, got " + std::to_string(o.search_radius));
+    throw OptionError("correction search radius must be > 0, got " +
+                      std::to_string(o.search_radius));
   if (!(o.min_projected_quality >= -1 && o.min_projected_quality <= 1))
     throw OptionError("correction min projected quality must be in [-1, 1], got " +
                       std::to_string(o.min_projected_quality));
@@ -283,7 +285,7 @@ void check_options(const TargetCorrectionOptions& o) {
     throw OptionError("correction max shift must be > 0, got " + std::to_string(o.max_shift));
 }
 
-TargetCorrectionResult correct_targets(const HexMesh& mesh, const IdVector<CellId, int>& material,
+TargetCorrectionResult correct_targets(const HexMesh& mesh, const CellMaterials& material,
                                        const IdVector<NodeId, NodeConstraint>& boundary,
                                        const reconstruct::InterfaceModel& model, Targets& targets,
                                        const TargetCorrectionOptions& o) {

@@ -28,8 +28,7 @@ struct Mover {
 
 // The node's two materials when it is a plain interface node with exactly two around.
 template <class M>
-std::optional<std::pair<int, int>> two_materials(const M& mesh,
-                                                 const IdVector<CellId, int>& material,
+std::optional<std::pair<int, int>> two_materials(const M& mesh, const CellMaterials& material,
                                                  const Targets& targets, NodeId v) {
   if (!targets.has[v] || targets.interface[v].n_normals() != 1) return std::nullopt;
   int a = -1, b = -1;
@@ -71,7 +70,7 @@ double volume_with(const M& mesh, const Positions& x, CellId c, NodeId v, const 
 // Rate at which the cells of the mover's material around it gain volume as it moves along
 // its direction.
 template <class M>
-double growth_rate(const M& mesh, const Positions& x, const IdVector<CellId, int>& material,
+double growth_rate(const M& mesh, const Positions& x, const CellMaterials& material,
                    const Mover& m) {
   const Vec3 p = x[m.node];
   const double eps = 1e-3 * m.size;
@@ -85,7 +84,7 @@ double growth_rate(const M& mesh, const Positions& x, const IdVector<CellId, int
 }
 
 template <class M>
-std::vector<Mover> find_movers(const M& mesh, const IdVector<CellId, int>& material,
+std::vector<Mover> find_movers(const M& mesh, const CellMaterials& material,
                                const IdVector<NodeId, NodeConstraint>& boundary,
                                const Targets& targets, const std::vector<double>& volume) {
   std::vector<Mover> out;
@@ -109,7 +108,7 @@ std::vector<Mover> find_movers(const M& mesh, const IdVector<CellId, int>& mater
 
 template <class M>
 void conserve_target_volumes(const M& mesh, const Fractions& fractions,
-                             const IdVector<CellId, int>& material,
+                             const CellMaterials& material,
                              const IdVector<NodeId, NodeConstraint>& boundary, Targets& targets,
                              const TargetOptions& options) {
   const bool runs = options.volume_offset == VolumeOffset::on ||

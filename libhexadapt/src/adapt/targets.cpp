@@ -17,7 +17,7 @@ namespace hexadapt {
 namespace {
 
 template <class M>
-void check_inputs(const M& mesh, const Fractions& fractions, const IdVector<CellId, int>& material,
+void check_inputs(const M& mesh, const Fractions& fractions, const CellMaterials& material,
                   const IdVector<NodeId, NodeConstraint>& boundary) {
   const auto n = static_cast<std::size_t>(mesh.n_cells());
   if (static_cast<std::size_t>(fractions.n_cells()) != n || material.size() != n)
@@ -161,8 +161,7 @@ int face_towards(const M& mesh, CellId c, CellId o) {
 // nullopt when the cell is not a sheet along this axis.
 template <class M>
 std::optional<double> sheet_side(const M& mesh, const Fractions& fractions,
-                                 const IdVector<CellId, int>& material, CellId sheet,
-                                 CellId other) {
+                                 const CellMaterials& material, CellId sheet, CellId other) {
   const int m = material[sheet];
   const CellId beyond = next_across(mesh, sheet, face_towards(mesh, sheet, other));
   if (!beyond.valid() || material[beyond] == m) return std::nullopt;
@@ -177,8 +176,7 @@ std::optional<double> sheet_side(const M& mesh, const Fractions& fractions,
 // is a sheet along the segment's axis; nullopt otherwise.
 template <class M>
 std::optional<double> sheet_crossing(const M& mesh, const Fractions& fractions,
-                                     const IdVector<CellId, int>& material,
-                                     const InterfaceFace& f) {
+                                     const CellMaterials& material, const InterfaceFace& f) {
   const std::optional<double> s0 = sheet_side(mesh, fractions, material, f.c0, f.c1);
   const std::optional<double> s1 = sheet_side(mesh, fractions, material, f.c1, f.c0);
   if (s0.has_value() == s1.has_value()) return std::nullopt;
@@ -221,8 +219,7 @@ std::vector<Vec3> fraction_gradients(const M& mesh, const Fractions& fractions, 
 }
 
 template <class M>
-Targets compute_targets(const M& mesh, const Fractions& fractions,
-                        const IdVector<CellId, int>& material,
+Targets compute_targets(const M& mesh, const Fractions& fractions, const CellMaterials& material,
                         const IdVector<NodeId, NodeConstraint>& boundary,
                         const TargetOptions& options) {
   check_inputs(mesh, fractions, material, boundary);

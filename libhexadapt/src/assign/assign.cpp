@@ -10,9 +10,9 @@ AssignResult assign_materials(const M& mesh, const Fractions& fractions,
                               const AssignOptions& options) {
   AssignResult r;
   Timer t;
-  r.majority = majority_assignment(fractions);
+  r.majority = majority_materials(fractions);
   r.times.emplace_back("majority", t.seconds());
-  Labels start = r.majority;
+  CellMaterials start = r.majority;
   if (options.min_island > 1) {
     t.restart();
     r.islands = remove_islands(mesh, fractions, start, options.min_island);

@@ -18,7 +18,7 @@ namespace hexadapt::assign {
 namespace {
 
 template <class M>
-void validate(const M& mesh, const Fractions& fractions, const Labels& labels,
+void validate(const M& mesh, const Fractions& fractions, const CellMaterials& labels,
               const CorrectionOptions& options) {
   if (options.keep < 1) throw OptionError("keep must be at least 1");
   if (options.max_materials < 1) throw OptionError("max-materials must be at least 1");
@@ -52,7 +52,7 @@ void sort_by_position(const M& mesh, std::vector<NodeId>& nodes) {
 template <class M>
 class Neighbourhood {
  public:
-  Neighbourhood(const M& mesh, const Labels& labels, const LocalBall<M>& ball) {
+  Neighbourhood(const M& mesh, const CellMaterials& labels, const LocalBall<M>& ball) {
     std::vector<NodeId> nodes;
     for (CellId c : ball.cells())
       for (NodeId v : mesh.cell_nodes(c))
@@ -168,7 +168,7 @@ class Corrector {
     return chosen;
   }
 
-  /// Labels are only read during the parallel phase, so this is thread-count independent.
+  /// CellMaterials are only read during the parallel phase, so this is thread-count independent.
   const Configuration* take_sparing(const LocalBall<M>& ball, ConfigurationStore& store) const {
     const Neighbourhood<M> around(mesh_, result_.labels, ball);
     return store.take_preferring(
@@ -206,8 +206,8 @@ class Corrector {
 }  // namespace
 
 template <class M>
-CorrectionResult correct_assignment(const M& mesh, const Fractions& fractions, Labels initial,
-                                    const CorrectionOptions& options) {
+CorrectionResult correct_assignment(const M& mesh, const Fractions& fractions,
+                                    CellMaterials initial, const CorrectionOptions& options) {
   validate(mesh, fractions, initial, options);
   Timer total, phase;
   CorrectionResult result;
@@ -235,9 +235,9 @@ CorrectionResult correct_assignment(const M& mesh, const Fractions& fractions, L
   return result;
 }
 
-template CorrectionResult correct_assignment(const QuadMesh&, const Fractions&, Labels,
+template CorrectionResult correct_assignment(const QuadMesh&, const Fractions&, CellMaterials,
                                              const CorrectionOptions&);
-template CorrectionResult correct_assignment(const HexMesh&, const Fractions&, Labels,
+template CorrectionResult correct_assignment(const HexMesh&, const Fractions&, CellMaterials,
                                              const CorrectionOptions&);
 
 }  // namespace hexadapt::assign

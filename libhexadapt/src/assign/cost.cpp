@@ -33,7 +33,7 @@ IdVector<CellId, double> cell_volumes(const M& mesh) {
 }
 
 double assignment_cost(const Fractions& fractions, const IdVector<CellId, double>& volumes,
-                       const Labels& labels) {
+                       const CellMaterials& labels) {
   double sum = 0;
   for (CellId c : id_range<CellId>(fractions.n_cells()))
     sum += cell_cost(fractions, volumes, c, labels[c]);

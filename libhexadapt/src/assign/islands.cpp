@@ -11,7 +11,7 @@ namespace {
 // The pieces of `labels`: cells joined across faces within one material, numbered by their
 // lowest cell, each piece's cells in increasing order of discovery.
 template <class M>
-std::vector<std::vector<CellId>> pieces(const M& mesh, const Labels& labels) {
+std::vector<std::vector<CellId>> pieces(const M& mesh, const CellMaterials& labels) {
   IdVector<CellId, char> seen(static_cast<std::size_t>(mesh.n_cells()), 0);
   std::vector<std::vector<CellId>> out;
   for (CellId start : id_range<CellId>(mesh.n_cells())) {
@@ -34,7 +34,7 @@ std::vector<std::vector<CellId>> pieces(const M& mesh, const Labels& labels) {
 // The material a small piece goes to: among those of its face neighbours outside small
 // pieces, the most present in its cells; -1 when it has no such neighbour.
 template <class M>
-int new_material(const M& mesh, const Fractions& f, const Labels& labels,
+int new_material(const M& mesh, const Fractions& f, const CellMaterials& labels,
                  const IdVector<CellId, char>& in_small, const std::vector<CellId>& piece) {
   std::vector<char> around(static_cast<std::size_t>(f.n_materials()), 0);
   for (CellId c : piece)
@@ -56,7 +56,7 @@ int new_material(const M& mesh, const Fractions& f, const Labels& labels,
 }  // namespace
 
 template <class M>
-IslandResult remove_islands(const M& mesh, const Fractions& fractions, Labels& labels,
+IslandResult remove_islands(const M& mesh, const Fractions& fractions, CellMaterials& labels,
                             index_t min_cells) {
   IslandResult r;
   if (min_cells <= 1) return r;
@@ -67,7 +67,7 @@ IslandResult remove_islands(const M& mesh, const Fractions& fractions, Labels& l
     for (const auto& p : all)
       if (static_cast<index_t>(p.size()) < min_cells)
         for (CellId c : p) in_small[c] = 1;
-    Labels next = labels;
+    CellMaterials next = labels;
     for (const auto& p : all) {
       if (static_cast<index_t>(p.size()) >= min_cells) continue;
       const int m = new_material(mesh, fractions, labels, in_small, p);
@@ -84,15 +84,15 @@ IslandResult remove_islands(const M& mesh, const Fractions& fractions, Labels& l
 }
 
 template <class M>
-index_t count_small_pieces(const M& mesh, const Labels& labels, index_t min_cells) {
+index_t count_small_pieces(const M& mesh, const CellMaterials& labels, index_t min_cells) {
   index_t n = 0;
   for (const auto& p : pieces(mesh, labels)) n += static_cast<index_t>(p.size()) < min_cells;
   return n;
 }
 
-template IslandResult remove_islands(const QuadMesh&, const Fractions&, Labels&, index_t);
-template IslandResult remove_islands(const HexMesh&, const Fractions&, Labels&, index_t);
-template index_t count_small_pieces(const QuadMesh&, const Labels&, index_t);
-template index_t count_small_pieces(const HexMesh&, const Labels&, index_t);
+template IslandResult remove_islands(const QuadMesh&, const Fractions&, CellMaterials&, index_t);
+template IslandResult remove_islands(const HexMesh&, const Fractions&, CellMaterials&, index_t);
+template index_t count_small_pieces(const QuadMesh&, const CellMaterials&, index_t);
+template index_t count_small_pieces(const HexMesh&, const CellMaterials&, index_t);
 
 }  // namespace hexadapt::assign

@@ -24,7 +24,7 @@ std::vector<CellId> by_presence(const Fractions& f, int m) {
 
 template <class M>
 std::vector<KeptMaterial> keep_vanished_materials(const M& mesh, const Fractions& fractions,
-                                                  Labels& labels) {
+                                                  CellMaterials& labels) {
   const std::vector<MaterialBalance> balance = material_balance(mesh, fractions, labels);
   std::vector<index_t> count;
   std::vector<char> vanished;
@@ -55,8 +55,8 @@ std::vector<KeptMaterial> keep_vanished_materials(const M& mesh, const Fractions
 }
 
 template std::vector<KeptMaterial> keep_vanished_materials(const QuadMesh&, const Fractions&,
-                                                           Labels&);
+                                                           CellMaterials&);
 template std::vector<KeptMaterial> keep_vanished_materials(const HexMesh&, const Fractions&,
-                                                           Labels&);
+                                                           CellMaterials&);
 
 }  // namespace hexadapt::assign

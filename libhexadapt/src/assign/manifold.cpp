@@ -92,7 +92,7 @@ bool manifold_cells(const LocalBall<M>& ball, std::uint64_t cells) {
 }
 
 template <class M>
-bool uniform_around(const M& mesh, const Labels& labels, NodeId n) {
+bool uniform_around(const M& mesh, const CellMaterials& labels, NodeId n) {
   const auto cells = mesh.node_cells(n);
   for (CellId c : cells)
     if (labels[c] != labels[cells[0]]) return false;
@@ -124,7 +124,7 @@ bool is_manifold(const LocalBall<M>& ball, const std::vector<int>& labels) {
 }
 
 template <class M>
-std::vector<int> non_manifold_materials(const M& mesh, const Labels& labels, NodeId n) {
+std::vector<int> non_manifold_materials(const M& mesh, const CellMaterials& labels, NodeId n) {
   std::vector<int> bad;
   if (uniform_around(mesh, labels, n)) return bad;
   const LocalBall<M> ball(mesh, n);
@@ -141,7 +141,7 @@ std::vector<int> non_manifold_materials(const M& mesh, const Labels& labels, Nod
 namespace {
 
 template <class M>
-bool manifold_node(const M& mesh, const Labels& labels, NodeId n) {
+bool manifold_node(const M& mesh, const CellMaterials& labels, NodeId n) {
   if (uniform_around(mesh, labels, n)) return true;
   const LocalBall<M> ball(mesh, n);
   std::vector<int> local;
@@ -152,7 +152,7 @@ bool manifold_node(const M& mesh, const Labels& labels, NodeId n) {
 }  // namespace
 
 template <class M>
-std::vector<NodeId> non_manifold_among(const M& mesh, const Labels& labels,
+std::vector<NodeId> non_manifold_among(const M& mesh, const CellMaterials& labels,
                                        std::vector<NodeId> nodes) {
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
@@ -174,7 +174,7 @@ std::vector<NodeId> non_manifold_among(const M& mesh, const Labels& labels,
 }
 
 template <class M>
-std::vector<NodeId> non_manifold_nodes(const M& mesh, const Labels& labels) {
+std::vector<NodeId> non_manifold_nodes(const M& mesh, const CellMaterials& labels) {
   std::vector<char> bad(static_cast<std::size_t>(mesh.n_nodes()), 0);
   parallel_for(mesh.n_nodes(), [&](std::int64_t i) {
     bad[static_cast<std::size_t>(i)] = !manifold_node(mesh, labels, NodeId(i));
@@ -185,13 +185,14 @@ std::vector<NodeId> non_manifold_nodes(const M& mesh, const Labels& labels) {
   return out;
 }
 
-#define HEXADAPT_INSTANTIATE(M)                                                         \
-  template int euler_characteristic(const LocalBall<M>&, const std::vector<int>&, int); \
-  template bool is_manifold(const LocalBall<M>&, const std::vector<int>&, int);         \
-  template bool is_manifold(const LocalBall<M>&, const std::vector<int>&);              \
-  template std::vector<int> non_manifold_materials(const M&, const Labels&, NodeId);    \
-  template std::vector<NodeId> non_manifold_nodes(const M&, const Labels&);             \
-  template std::vector<NodeId> non_manifold_among(const M&, const Labels&, std::vector<NodeId>);
+#define HEXADAPT_INSTANTIATE(M)                                                             \
+  template int euler_characteristic(const LocalBall<M>&, const std::vector<int>&, int);     \
+  template bool is_manifold(const LocalBall<M>&, const std::vector<int>&, int);             \
+  template bool is_manifold(const LocalBall<M>&, const std::vector<int>&);                  \
+  template std::vector<int> non_manifold_materials(const M&, const CellMaterials&, NodeId); \
+  template std::vector<NodeId> non_manifold_nodes(const M&, const CellMaterials&);          \
+  template std::vector<NodeId> non_manifold_among(const M&, const CellMaterials&,           \
+                                                  std::vector<NodeId>);
 HEXADAPT_INSTANTIATE(QuadMesh)
 HEXADAPT_INSTANTIATE(HexMesh)
 #undef HEXADAPT_INSTANTIATE

@@ -8,7 +8,7 @@ namespace hexadapt::assign {
 
 template <class M>
 std::vector<MaterialBalance> material_balance(const M& mesh, const Fractions& fractions,
-                                              const Labels& labels) {
+                                              const CellMaterials& labels) {
   std::vector<MaterialBalance> out(static_cast<std::size_t>(fractions.n_materials()));
   double domain = 0;
   for (CellId c : id_range<CellId>(mesh.n_cells())) {  // serial: the same sums at any thread count
@@ -25,8 +25,8 @@ std::vector<MaterialBalance> material_balance(const M& mesh, const Fractions& fr
 }
 
 template std::vector<MaterialBalance> material_balance(const QuadMesh&, const Fractions&,
-                                                       const Labels&);
+                                                       const CellMaterials&);
 template std::vector<MaterialBalance> material_balance(const HexMesh&, const Fractions&,
-                                                       const Labels&);
+                                                       const CellMaterials&);
 
 }  // namespace hexadapt::assign

@@ -8,6 +8,7 @@
 #include "hexadapt/core/error.h"
 #include "hexadapt/core/parallel.h"
 #include "hexadapt/generate/extrusion.h"
+#include "hexadapt/io/assigned_grid_file.h"
 #include "hexadapt/mesh/structured.h"
 
 namespace hexadapt::generate {
@@ -91,11 +92,9 @@ void add_arrays(const Fractions& f, bool jittered, double box_volume, GenerateRe
 }
 
 void add_metadata(const Case& c, const GenerateOptions& o, const Bounds& b, GenerateResult& r) {
-  std::string mats;
-  for (const auto& m : c.materials) mats += (mats.empty() ? "" : ",") + m;
   auto& md = r.data.metadata;
   md.emplace_back("hexadapt_case", c.name);
-  md.emplace_back("hexadapt_materials", mats);
+  md.emplace_back("hexadapt_materials", io::join_material_names(c.materials));
   md.emplace_back("hexadapt_time", number(r.time));
   md.emplace_back("hexadapt_samples", std::to_string(o.samples));
   md.emplace_back("hexadapt_rk4_steps", std::to_string(r.steps));

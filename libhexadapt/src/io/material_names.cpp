@@ -1,5 +1,7 @@
 #include "material_names.h"
 
+#include "hexadapt/io/assigned_grid_file.h"
+
 namespace hexadapt::io::detail {
 
 std::vector<std::string> material_names(const MeshData& data) {
@@ -8,16 +10,7 @@ std::vector<std::string> material_names(const MeshData& data) {
   for (const char* wanted : {"hexadapt_materials", "materials"})
     for (const auto& [key, value] : data.metadata)
       if (key == wanted) joined = &value;
-  std::vector<std::string> out;
-  if (joined == nullptr || joined->empty()) return out;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t comma = joined->find(',', start);
-    out.push_back(
-        joined->substr(start, comma == std::string::npos ? std::string::npos : comma - start));
-    if (comma == std::string::npos) return out;
-    start = comma + 1;
-  }
+  return joined ? split_material_names(*joined) : std::vector<std::string>{};
 }
 
 }  // namespace hexadapt::io::detail

@@ -96,7 +96,7 @@ double output_cell_volume(const io::MeshData& output, index_t o) {
 }
 
 void check_inputs(const io::MeshData& input, const io::MeshData& output,
-                  const std::vector<int>& material, int n_materials) {
+                  const CellMaterials& material, int n_materials) {
   if (input.dim == 0 || output.dim == 0) throw InputError({}, {}, "imprint: a mesh has no cells");
   if (input.dim != output.dim)
     throw InputError({}, {},
@@ -113,15 +113,15 @@ void check_inputs(const io::MeshData& input, const io::MeshData& output,
     throw InputError({}, {},
                      "imprint: " + std::to_string(material.size()) + " materials given for " +
                          std::to_string(output.n_cells()) + " cells");
-  for (std::size_t o = 0; o < material.size(); ++o)
+  for (CellId o : id_range<CellId>(output.n_cells()))
     if (material[o] < 0 || material[o] >= n_materials)
-      throw InputError({}, "cell " + std::to_string(o),
+      throw InputError({}, "cell " + std::to_string(o.value()),
                        "material " + std::to_string(material[o]) + " is not in [0, " +
                            std::to_string(n_materials) + ")");
 }
 
 Imprint imprint_as_given(const io::MeshData& input, const io::MeshData& output,
-                         const std::vector<int>& material, int n_materials,
+                         const CellMaterials& material, int n_materials,
                          const ImprintOptions& options) {
   Imprint r;
   r.n_materials = n_materials;
@@ -131,8 +131,7 @@ Imprint imprint_as_given(const io::MeshData& input, const io::MeshData& output,
   r.cell_volume.assign(static_cast<std::size_t>(r.n_cells), 0.0);
   r.output_volume.assign(n_mat, 0.0);
   for (index_t o = 0; o < output.n_cells(); ++o)
-    r.output_volume[static_cast<std::size_t>(material[static_cast<std::size_t>(o)])] +=
-        output_cell_volume(output, o);
+    r.output_volume[static_cast<std::size_t>(material[CellId(o)])] += output_cell_volume(output, o);
   const CellBins bins(output, options.bins_per_cell);
   parallel_for_progress(r.n_cells, options.progress, "imprint", [&](std::int64_t i) {
     const auto c = static_cast<index_t>(i);
@@ -145,7 +144,7 @@ Imprint imprint_as_given(const io::MeshData& input, const io::MeshData& output,
     for (index_t o : candidates) {
       const double v =
           input.dim == 3 ? hex_in_pieces(output, o, pieces) : quad_in_pieces(output, o, pieces);
-      slot[material[static_cast<std::size_t>(o)]] += v;
+      slot[material[CellId(o)]] += v;
     }
   });
   return r;
@@ -154,7 +153,7 @@ Imprint imprint_as_given(const io::MeshData& input, const io::MeshData& output,
 }  // namespace
 
 Imprint imprint(const io::MeshData& input, const io::MeshData& output,
-                const std::vector<int>& material, int n_materials, const ImprintOptions& options) {
+                const CellMaterials& material, int n_materials, const ImprintOptions& options) {
   check_inputs(input, output, material, n_materials);
   const UnitFrame frame = far_unit_frame(input.points);
   if (frame.is_identity()) return imprint_as_given(input, output, material, n_materials, options);
@@ -162,22 +161,6 @@ Imprint imprint(const io::MeshData& input, const io::MeshData& output,
                                material, n_materials, options);
   r.volume_exponent = frame.exponent * input.dim;
   return r;
-}
-
-std::vector<int> cell_materials(const io::MeshData& output, const std::string& name) {
-  const io::DataArray* a = output.find_cell_array(name);
-  if (!a) throw InputError({}, "cell array '" + name + "'", "missing: the mesh has no materials");
-  if (a->n_components != 1)
-    throw InputError({}, "cell array '" + name + "'", "expected one component");
-  std::vector<int> m(a->values.size());
-  for (std::size_t o = 0; o < m.size(); ++o) {
-    const double v = a->values[o];
-    if (!(v >= 0) || v != std::floor(v) || v > 1e9)
-      throw InputError({}, "cell " + std::to_string(o) + " of array '" + name + "'",
-                       "expected a non-negative integer material index");
-    m[o] = static_cast<int>(v);
-  }
-  return m;
 }
 
 }  // namespace hexadapt

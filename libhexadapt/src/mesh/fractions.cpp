@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <utility>
 
+#include "hexadapt/core/parallel.h"
+
 namespace hexadapt {
 
 Fractions::Fractions(index_t n_cells, std::vector<std::string> names)
@@ -22,6 +24,17 @@ int Fractions::majority(CellId c) const {
   return best;
 }
 
-bool Fractions::is_pure(CellId c) const { return (*this)(c, majority(c)) >= 1.0; }
+bool Fractions::is_pure(CellId c) const {
+  return (*this)(c, majority(c)) >= 1.0;
+}
+
+CellMaterials majority_materials(const Fractions& fractions) {
+  CellMaterials m(static_cast<std::size_t>(fractions.n_cells()), 0);
+  parallel_for(fractions.n_cells(), [&](std::int64_t i) {
+    const CellId c(i);
+    m[c] = fractions.majority(c);
+  });
+  return m;
+}
 
 }  // namespace hexadapt

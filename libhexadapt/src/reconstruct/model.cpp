@@ -33,7 +33,7 @@ struct KeyHash {
 template <class M>
 class Extractor {
  public:
-  Extractor(const M& mesh, const PixelMesh& px, const std::vector<int>& assignment)
+  Extractor(const M& mesh, const PixelMesh& px, const CellMaterials& assignment)
       : mesh_(mesh), px_(px), assign_(assignment), rc_(ref_cell(M::dim)), n_(px.nsub()) {
     model_.dim = M::dim;
   }
@@ -71,7 +71,7 @@ class Extractor {
 
   int label(CellId c, const std::array<int, 3>& L) const {
     const index_t b = px_.cell_block(c);
-    return b >= 0 ? px_.label(px_.pixel_at(b, L)) : assign_[c.idx()];
+    return b >= 0 ? px_.label(px_.pixel_at(b, L)) : assign_[c];
   }
 
   void inner_faces(CellId c, std::vector<Facet>& out) const {
@@ -90,8 +90,7 @@ class Extractor {
   void coarse_face(CellId c, int lf, std::vector<Facet>& out) const {
     const CellId o = mesh_.neighbour(c, lf);
     if (!o.valid() || o < c) return;
-    if (px_.cell_block(c) < 0 && px_.cell_block(o) < 0 && assign_[c.idx()] == assign_[o.idx()])
-      return;
+    if (px_.cell_block(c) < 0 && px_.cell_block(o) < 0 && assign_[c] == assign_[o]) return;
     const FaceLink fl = face_link(mesh_, c, lf);
     const auto a = static_cast<std::size_t>(rc_.face_axis[static_cast<std::size_t>(lf)]);
     const int layer = rc_.face_side[static_cast<std::size_t>(lf)] ? n_ - 1 : 0;
@@ -123,9 +122,10 @@ class Extractor {
     std::array<index_t, 4> f{{-1, -1, -1, -1}};
     const int npf = rc_.nodes_per_face;
     for (int i = 0; i < npf; ++i) {
-      const auto v = static_cast<std::size_t>(rc_.face[static_cast<std::size_t>(lf)][static_cast<std::size_t>(i)]);
-      f[static_cast<std::size_t>(i)] = vertex(c, {{L[0] + rc_.corner[v][0], L[1] + rc_.corner[v][1],
-                                                   L[2] + rc_.corner[v][2]}});
+      const auto v = static_cast<std::size_t>(
+          rc_.face[static_cast<std::size_t>(lf)][static_cast<std::size_t>(i)]);
+      f[static_cast<std::size_t>(i)] =
+          vertex(c, {{L[0] + rc_.corner[v][0], L[1] + rc_.corner[v][1], L[2] + rc_.corner[v][2]}});
     }
     if (la > lb) {
       std::reverse(f.begin(), f.begin() + npf);
@@ -173,7 +173,8 @@ class Extractor {
         elements.push_back({{{q[1], q[1]}}, f});
       } else {
         for (int i = 0; i < npf; ++i) {
-          index_t a = q[static_cast<std::size_t>(i)], b = q[static_cast<std::size_t>((i + 1) % npf)];
+          index_t a = q[static_cast<std::size_t>(i)],
+                  b = q[static_cast<std::size_t>((i + 1) % npf)];
           elements.push_back({{{std::min(a, b), std::max(a, b)}}, f});
         }
       }
@@ -210,7 +211,7 @@ class Extractor {
 
   const M& mesh_;
   const PixelMesh& px_;
-  const std::vector<int>& assign_;
+  const CellMaterials& assign_;
   const RefCell& rc_;
   int n_;
   InterfaceModel model_;
@@ -235,7 +236,7 @@ double bilinear_flux(const Vec3& q0, const Vec3& q1, const Vec3& q2, const Vec3&
 
 template <class M>
 InterfaceModel extract_model(const M& mesh, const PixelMesh& pixels,
-                             const std::vector<int>& assignment) {
+                             const CellMaterials& assignment) {
   return Extractor<M>(mesh, pixels, assignment).run();
 }
 
@@ -270,7 +271,8 @@ std::int64_t open_boundary_count(const InterfaceModel& model, int material) {
       continue;
     }
     for (int i = 0; i < npf; ++i) {
-      const index_t a = q[static_cast<std::size_t>(i)], b = q[static_cast<std::size_t>((i + 1) % npf)];
+      const index_t a = q[static_cast<std::size_t>(i)],
+                    b = q[static_cast<std::size_t>((i + 1) % npf)];
       if (a < b)
         balance[{{a, b}}] += sign;
       else
@@ -282,7 +284,7 @@ std::int64_t open_boundary_count(const InterfaceModel& model, int material) {
   return open;
 }
 
-template InterfaceModel extract_model(const QuadMesh&, const PixelMesh&, const std::vector<int>&);
-template InterfaceModel extract_model(const HexMesh&, const PixelMesh&, const std::vector<int>&);
+template InterfaceModel extract_model(const QuadMesh&, const PixelMesh&, const CellMaterials&);
+template InterfaceModel extract_model(const HexMesh&, const PixelMesh&, const CellMaterials&);
 
 }  // namespace hexadapt::reconstruct

@@ -19,8 +19,12 @@ using detail::RefCell;
 
 PixelMesh::PixelMesh(int dim, int nsub, int n_materials, const std::vector<CellId>& block_cells,
                      const std::vector<std::uint8_t>& block_free, index_t n_cells)
-    : dim_(dim), nsub_(nsub), n_materials_(n_materials), cells_(block_cells),
-      free_(block_free), cell_block_(static_cast<std::size_t>(n_cells), -1) {
+    : dim_(dim),
+      nsub_(nsub),
+      n_materials_(n_materials),
+      cells_(block_cells),
+      free_(block_free),
+      cell_block_(static_cast<std::size_t>(n_cells), -1) {
   ppb_ = dim == 3 ? nsub * nsub * nsub : nsub * nsub;
   for (std::size_t b = 0; b < cells_.size(); ++b) cell_block_[cells_[b]] = static_cast<index_t>(b);
   const auto np = cells_.size() * static_cast<std::size_t>(ppb_);
@@ -87,22 +91,25 @@ Vec3 PixelMesh::centre(std::int64_t p) const {
 
 namespace {
 
-int default_nsub(int dim) { return dim == 3 ? 4 : 10; }
+int default_nsub(int dim) {
+  return dim == 3 ? 4 : 10;
+}
 
 template <class M>
-void check_inputs(const M& mesh, const Fractions& f, const std::vector<int>& assignment) {
+void check_inputs(const M& mesh, const Fractions& f, const CellMaterials& assignment) {
   if (f.n_cells() != mesh.n_cells())
-    throw InputError("", "", "fractions are given for " + std::to_string(f.n_cells()) +
-                                 " cells but the mesh has " + std::to_string(mesh.n_cells()));
+    throw InputError("", "",
+                     "fractions are given for " + std::to_string(f.n_cells()) +
+                         " cells but the mesh has " + std::to_string(mesh.n_cells()));
   if (assignment.size() != static_cast<std::size_t>(mesh.n_cells()))
-    throw InputError("", "", "the material assignment has " +
-                                 std::to_string(assignment.size()) + " values but the mesh has " +
-                                 std::to_string(mesh.n_cells()) + " cells");
-  for (std::size_t c = 0; c < assignment.size(); ++c)
+    throw InputError("", "",
+                     "the material assignment has " + std::to_string(assignment.size()) +
+                         " values but the mesh has " + std::to_string(mesh.n_cells()) + " cells");
+  for (CellId c : id_range<CellId>(mesh.n_cells()))
     if (assignment[c] < 0 || assignment[c] >= f.n_materials())
-      throw InputError("", "cell " + std::to_string(c),
-                       "assigned material " + std::to_string(assignment[c]) +
-                           " is not in [0, " + std::to_string(f.n_materials()) + ")");
+      throw InputError("", "cell " + std::to_string(c.value()),
+                       "assigned material " + std::to_string(assignment[c]) + " is not in [0, " +
+                           std::to_string(f.n_materials()) + ")");
 }
 
 /// Per cell: 0 plain, 1 fixed block (pure, shares a node with a mixed cell), 2 free block.
@@ -137,7 +144,8 @@ std::string megabytes(double bytes) {
 namespace {
 
 template <class M>
-PixelPlan plan_of(const M& mesh, const std::vector<std::uint8_t>& pix, const PixelOptions& options) {
+PixelPlan plan_of(const M& mesh, const std::vector<std::uint8_t>& pix,
+                  const PixelOptions& options) {
   PixelPlan plan;
   plan.dim = M::dim;
   plan.nsub = options.nsub == 0 ? default_nsub(M::dim) : options.nsub;
@@ -187,8 +195,8 @@ bool is_affine(const std::array<Vec3, N>& x, const detail::RefCell& rc) {
 }  // namespace
 
 template <class M>
-PixelPlan plan_pixels(const M& mesh, const Fractions& fractions,
-                      const std::vector<int>& assignment, const PixelOptions& options) {
+PixelPlan plan_pixels(const M& mesh, const Fractions& fractions, const CellMaterials& assignment,
+                      const PixelOptions& options) {
   check_inputs(mesh, fractions, assignment);
   return plan_of(mesh, pixelated_cells(mesh, fractions), options);
 }
@@ -235,7 +243,7 @@ FaceLink face_link(const M& mesh, CellId c, int lf) {
 
 template <class M>
 PixelMesh build_pixel_mesh(const M& mesh, const Fractions& fractions,
-                           const std::vector<int>& assignment, const PixelOptions& options,
+                           const CellMaterials& assignment, const PixelOptions& options,
                            PixelPlan* plan_out) {
   check_inputs(mesh, fractions, assignment);
   const auto pix = pixelated_cells(mesh, fractions);
@@ -246,9 +254,9 @@ PixelMesh build_pixel_mesh(const M& mesh, const Fractions& fractions,
            std::to_string(plan.nsub) + ", estimated memory " + megabytes(plan.bytes));
   if (plan.bytes > options.max_memory)
     throw ResourceError("the sub-pixel mesh needs about " + megabytes(plan.bytes) + " (" +
-                      std::to_string(plan.n_pixels) + " pixels, nsub " +
-                      std::to_string(plan.nsub) + "), more than the allowed " +
-                      megabytes(options.max_memory) + ": lower {nsub} or raise {max_memory}");
+                        std::to_string(plan.n_pixels) + " pixels, nsub " +
+                        std::to_string(plan.nsub) + "), more than the allowed " +
+                        megabytes(options.max_memory) + ": lower {nsub} or raise {max_memory}");
   std::vector<CellId> cells;
   std::vector<std::uint8_t> free;
   for (CellId c : id_range<CellId>(mesh.n_cells()))
@@ -267,7 +275,8 @@ PixelMesh build_pixel_mesh(const M& mesh, const Fractions& fractions,
     const auto b = static_cast<index_t>(bi);
     const CellId c = pm.block_cell(b);
     const auto nodes = mesh.cell_nodes(c);
-    for (std::size_t v = 0; v < npc; ++v) corners[static_cast<std::size_t>(b) * npc + v] = mesh.point(nodes[v]);
+    for (std::size_t v = 0; v < npc; ++v)
+      corners[static_cast<std::size_t>(b) * npc + v] = mesh.point(nodes[v]);
     for (std::size_t lf = 0; lf < nf; ++lf) {
       FaceLink fl = face_link(mesh, c, static_cast<int>(lf));
       const CellId o = mesh.neighbour(c, static_cast<int>(lf));
@@ -278,7 +287,7 @@ PixelMesh build_pixel_mesh(const M& mesh, const Fractions& fractions,
   parallel_for(pm.n_blocks(), [&](std::int64_t bi) {
     const auto b = static_cast<index_t>(bi);
     const CellId c = pm.block_cell(b);
-    const int fixed = pm.block_free(b) ? PixelMesh::unassigned : assignment[c.idx()];
+    const int fixed = pm.block_free(b) ? PixelMesh::unassigned : assignment[c];
     const bool affine = is_affine(mesh.cell_points(c), rc);
     const double equal = mesh.cell_volume(c) / pm.pixels_per_block();
     for (std::int64_t p = pm.first_pixel(b); p < pm.first_pixel(b + 1); ++p) {
@@ -302,13 +311,13 @@ PixelMesh build_pixel_mesh(const M& mesh, const Fractions& fractions,
   return pm;
 }
 
-template PixelPlan plan_pixels(const QuadMesh&, const Fractions&, const std::vector<int>&,
+template PixelPlan plan_pixels(const QuadMesh&, const Fractions&, const CellMaterials&,
                                const PixelOptions&);
-template PixelPlan plan_pixels(const HexMesh&, const Fractions&, const std::vector<int>&,
+template PixelPlan plan_pixels(const HexMesh&, const Fractions&, const CellMaterials&,
                                const PixelOptions&);
-template PixelMesh build_pixel_mesh(const QuadMesh&, const Fractions&, const std::vector<int>&,
+template PixelMesh build_pixel_mesh(const QuadMesh&, const Fractions&, const CellMaterials&,
                                     const PixelOptions&, PixelPlan*);
-template PixelMesh build_pixel_mesh(const HexMesh&, const Fractions&, const std::vector<int>&,
+template PixelMesh build_pixel_mesh(const HexMesh&, const Fractions&, const CellMaterials&,
                                     const PixelOptions&, PixelPlan*);
 template FaceLink face_link(const QuadMesh&, CellId, int);
 template FaceLink face_link(const HexMesh&, CellId, int);

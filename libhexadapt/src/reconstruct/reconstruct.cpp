@@ -8,10 +8,14 @@ namespace hexadapt::reconstruct {
 
 std::string to_string(Method m) {
   switch (m) {
-    case Method::greedy: return "greedy";
-    case Method::annealing: return "annealing";
-    case Method::graph_cut: return "graphcut";
-    case Method::mip: return "mip";
+    case Method::greedy:
+      return "greedy";
+    case Method::annealing:
+      return "annealing";
+    case Method::graph_cut:
+      return "graphcut";
+    case Method::mip:
+      return "mip";
   }
   return "?";
 }
@@ -26,23 +30,27 @@ namespace {
 
 double method_bytes(Method m, int n_materials, int dim) {
   switch (m) {
-    case Method::greedy: return greedy_bytes_per_free_pixel(n_materials, dim);
-    case Method::annealing: return 0;
-    case Method::graph_cut: return graph_cut_bytes_per_free_pixel(n_materials, dim);
-    case Method::mip: return mip_bytes_per_free_pixel(n_materials, dim);
+    case Method::greedy:
+      return greedy_bytes_per_free_pixel(n_materials, dim);
+    case Method::annealing:
+      return 0;
+    case Method::graph_cut:
+      return graph_cut_bytes_per_free_pixel(n_materials, dim);
+    case Method::mip:
+      return mip_bytes_per_free_pixel(n_materials, dim);
   }
   return 0;
 }
 
 template <class M>
 double unpixelated_discrepancy(const M& mesh, const PixelMesh& px, const Fractions& f,
-                               const std::vector<int>& assignment, double* domain_volume) {
+                               const CellMaterials& assignment, double* domain_volume) {
   double d = 0, total = 0;
   for (CellId c : id_range<CellId>(mesh.n_cells())) {
     const double v = mesh.cell_volume(c);
     total += v;
     if (px.cell_block(c) >= 0) continue;
-    d += 2 * (1 - f(c, assignment[c.idx()])) * v;  // pure cells: 0 or 2 V
+    d += 2 * (1 - f(c, assignment[c])) * v;  // pure cells: 0 or 2 V
   }
   *domain_volume = total;
   return d;
@@ -63,7 +71,7 @@ void to_world(Reconstruction& out, const UnitFrame& frame, int dim) {
 
 template <class M>
 Reconstruction reconstruct_in_frame(const M& mesh, const Fractions& fractions,
-                                    const std::vector<int>& assignment,
+                                    const CellMaterials& assignment,
                                     const ReconstructOptions& options) {
   Reconstruction out;
   ReconstructResult& r = out.result;
@@ -76,7 +84,9 @@ Reconstruction reconstruct_in_frame(const M& mesh, const Fractions& fractions,
   t.restart();
   if (options.progress) options.progress(to_string(options.method), 0);
   switch (options.method) {
-    case Method::greedy: r.greedy = greedy_assign(out.pixels, fractions, options.greedy); break;
+    case Method::greedy:
+      r.greedy = greedy_assign(out.pixels, fractions, options.greedy);
+      break;
     case Method::annealing:
       r.annealing = annealing_assign(out.pixels, fractions, options.annealing);
       break;
@@ -111,16 +121,16 @@ Reconstruction reconstruct_in_frame(const M& mesh, const Fractions& fractions,
 
 template <class M>
 Reconstruction reconstruct(const M& mesh, const Fractions& fractions,
-                           const std::vector<int>& assignment, const ReconstructOptions& options) {
+                           const CellMaterials& assignment, const ReconstructOptions& options) {
   const UnitFrame frame = unit_frame(mesh);
   Reconstruction out = reconstruct_in_frame(to_local(mesh, frame), fractions, assignment, options);
   to_world(out, frame, M::dim);
   return out;
 }
 
-template Reconstruction reconstruct(const QuadMesh&, const Fractions&, const std::vector<int>&,
+template Reconstruction reconstruct(const QuadMesh&, const Fractions&, const CellMaterials&,
                                     const ReconstructOptions&);
-template Reconstruction reconstruct(const HexMesh&, const Fractions&, const std::vector<int>&,
+template Reconstruction reconstruct(const HexMesh&, const Fractions&, const CellMaterials&,
                                     const ReconstructOptions&);
 
 }  // namespace hexadapt::reconstruct

@@ -45,10 +45,11 @@ enum class AdaptMethod { base, guaranteed };
 /// interfaces pillowed `first`, before the move (interface_pillow.h), or `both`. `automatic`:
 /// cavities in 2D; in 3D a first layer, and when that leaves more than 1 - enough_share of
 /// the interface nodes away from their interface, cavities too, keeping the result that
-/// brings more nodes near their interface (the time is then that of both). In 2D, and on extruded 2D cases, the move and the cavities reach the
-/// interfaces and a first layer cost reach (half the nodes blocked on the extruded ones); on
-/// curved 3D surfaces the first layer reaches them where cavities could not, and cavities
-/// after it gained almost nothing at three times the time (docs/results.md).
+/// brings more nodes near their interface (the time is then that of both). In 2D, and on extruded
+/// 2D cases, the move and the cavities reach the interfaces and a first layer cost reach (half the
+/// nodes blocked on the extruded ones); on curved 3D surfaces the first layer reaches them where
+/// cavities could not, and cavities after it gained almost nothing at three times the time
+/// (docs/results.md).
 enum class LayerStrategy { automatic, cavities, first, both };
 
 /// "base" / "guaranteed"; throws OptionError for another name.
@@ -67,15 +68,15 @@ struct AdaptOptions {
   double min_edge = 0.1;
   /// guaranteed: the controlled move (its steps, drag and rounds).
   MoveOptions move;
-  BoundaryOptions boundary;                      ///< feature detection on the domain boundary
-  TargetOptions targets;                         ///< target computation
-  TargetCorrectionOptions correction;            ///< guaranteed, 3D: targets smoothed on the model
-  PillowOptions pillow;                          ///< where pillow nodes start
-  SmoothOptions smooth;                          ///< smoothing sweeps
-  Progress progress;                             ///< phase progress, nullptr = silent
+  BoundaryOptions boundary;            ///< feature detection on the domain boundary
+  TargetOptions targets;               ///< target computation
+  TargetCorrectionOptions correction;  ///< guaranteed, 3D: targets smoothed on the model
+  PillowOptions pillow;                ///< where pillow nodes start
+  SmoothOptions smooth;                ///< smoothing sweeps
+  Progress progress;                   ///< phase progress, nullptr = silent
   /// guaranteed: run even when input cells are below the threshold (no guarantee then).
   bool allow_bad_input = false;
-  int max_loops = 20;    ///< guaranteed: move-smooth rounds at most
+  int max_loops = 20;                               ///< guaranteed: move-smooth rounds at most
   LayerStrategy layers = LayerStrategy::automatic;  ///< guaranteed: cavities, first or both
   /// guaranteed, automatic, 3D: the share of interface nodes near their interface with a
   /// first layer beyond which cavities are not tried. Measured with the layers mended
@@ -119,7 +120,7 @@ struct AdaptStep {
 template <class M>
 struct AdaptResult {
   M mesh;  ///< the output: one material per cell
-  IdVector<CellId, int> material;
+  CellMaterials material;
   IdVector<NodeId, Vec3> target;  ///< each node's target (its own position when it has none)
   IdVector<NodeId, char> has_target;
   IdVector<NodeId, double> distance;  ///< |position - target|
@@ -129,19 +130,19 @@ struct AdaptResult {
   IdVector<NodeId, char> near_interface;  ///< within near_interface local sizes of it
   std::vector<AdaptStep> steps;
   index_t n_interface_nodes = 0;
-  index_t n_reached = 0;          ///< interface nodes on their target at the end
-  index_t n_near_interface = 0;   ///< interface nodes within near_interface of their surface
-  double surface_dist_init = 0;   ///< sum of surface distances after the first move
-  double surface_dist_final = 0;  ///< sum of surface distances at the end
-  NodeId farthest;                ///< the node with a target farthest from its surface
-  double farthest_distance = 0;   ///< its surface distance
-  double farthest_local_size = 0; ///< the mean local size of its cells
-  double dist_init = 0;           ///< sum of distances after the first (controlled or direct) move
-  double dist_final = 0;          ///< sum of distances at the end
-  double min_quality = 1;         ///< of the output
-  index_t n_below_threshold = 0;  ///< output cells with scaled Jacobian < threshold
-  index_t n_inverted = 0;         ///< output cells with scaled Jacobian <= 0
-  index_t n_below_min_edge = 0;   ///< output cells breaking the size criterion
+  index_t n_reached = 0;           ///< interface nodes on their target at the end
+  index_t n_near_interface = 0;    ///< interface nodes within near_interface of their surface
+  double surface_dist_init = 0;    ///< sum of surface distances after the first move
+  double surface_dist_final = 0;   ///< sum of surface distances at the end
+  NodeId farthest;                 ///< the node with a target farthest from its surface
+  double farthest_distance = 0;    ///< its surface distance
+  double farthest_local_size = 0;  ///< the mean local size of its cells
+  double dist_init = 0;            ///< sum of distances after the first (controlled or direct) move
+  double dist_final = 0;           ///< sum of distances at the end
+  double min_quality = 1;          ///< of the output
+  index_t n_below_threshold = 0;   ///< output cells with scaled Jacobian < threshold
+  index_t n_inverted = 0;          ///< output cells with scaled Jacobian <= 0
+  index_t n_below_min_edge = 0;    ///< output cells breaking the size criterion
   /// Of the output: smallest shortest edge / local size over the cells.
   double min_edge_ratio = 0;
   IdVector<CellId, double> local_size;  ///< each output cell's local input size
@@ -156,7 +157,7 @@ struct AdaptResult {
   index_t n_blocked = 0;  ///< interface nodes farther than near_interface from their surface
   /// The worst cells next to blocked nodes, lowest quality first (at most 10).
   std::vector<std::pair<CellId, double>> blocking_cells;
-  int loops = 0;                        ///< move-smooth rounds run
+  int loops = 0;                                   ///< move-smooth rounds run
   LayerStrategy layers = LayerStrategy::cavities;  ///< guaranteed: the strategy that ran
   /// automatic, 3D, when both strategies ran: interface nodes the one not kept brought near
   /// their interface.
@@ -168,7 +169,7 @@ struct AdaptResult {
   index_t n_interface_layer_cells = 0;  ///< cells the interface pillowing added
   std::vector<CavityAttempt> cavities;  ///< every cavity tried, in order
   index_t n_cavities_published = 0;
-  index_t n_cells_added = 0;  ///< layer cells of the published cavities
+  index_t n_cells_added = 0;          ///< layer cells of the published cavities
   TargetCorrectionResult correction;  ///< the 3D target correction (ran or why skipped)
 };
 
@@ -177,8 +178,8 @@ struct AdaptResult {
 /// the target correction is skipped). Throws InputError for inconsistent sizes or a model
 /// whose material indices do not fit, OptionError for bad options.
 template <class M>
-AdaptResult<M> adapt(const M& grid, const Fractions& fractions,
-                     const IdVector<CellId, int>& material, const AdaptOptions& options = {},
+AdaptResult<M> adapt(const M& grid, const Fractions& fractions, const CellMaterials& material,
+                     const AdaptOptions& options = {},
                      const reconstruct::InterfaceModel* model = nullptr);
 
 }  // namespace hexadapt

@@ -25,14 +25,15 @@
 
 #include "hexadapt/adapt/pillow.h"
 #include "hexadapt/adapt/smoothing.h"
+#include "hexadapt/mesh/fractions.h"
 
 namespace hexadapt {
 
 struct CavityOptions {
-  int range = 3;           ///< vertex distance a cavity starts with
+  int range = 3;                         ///< vertex distance a cavity starts with
   double threshold = default_threshold;  ///< S_q: every cavity cell must reach it to be published
-  PillowOptions pillow;    ///< where the copies start
-  SmoothOptions smooth;    ///< smoothing of the cavity's nodes
+  PillowOptions pillow;                  ///< where the copies start
+  SmoothOptions smooth;                  ///< smoothing of the cavity's nodes
   BoundaryOptions boundary;
   /// Pillow and smooth each cavity in a copy of the whole mesh instead of in the cavity and
   /// the ring of cells around it: slow, the reference the local patches must reproduce.
@@ -52,7 +53,7 @@ struct CavityAttempt {
 template <class M>
 struct CavityResult {
   M mesh;
-  IdVector<CellId, int> material;
+  CellMaterials material;
   IdVector<NodeId, NodeId> node_origin;  ///< the input node each node is (a copy of)
   IdVector<CellId, CellId> cell_origin;  ///< the input cell; a layer cell: its cavity's cell
   std::vector<CavityAttempt> attempts;
@@ -64,7 +65,7 @@ struct CavityResult {
 /// `seeds`: node ids of `mesh`; `size`: the size criterion on mesh's cells (off by default).
 /// Throws OptionError for range < 1.
 template <class M>
-CavityResult<M> cavity_pillow(const M& mesh, const IdVector<CellId, int>& material, int n_materials,
+CavityResult<M> cavity_pillow(const M& mesh, const CellMaterials& material, int n_materials,
                               const std::vector<NodeId>& seeds, const CavityOptions& options = {},
                               const SizeCriterion& size = {});
 

@@ -5,13 +5,14 @@
 #pragma once
 
 #include "hexadapt/adapt/pillow.h"
+#include "hexadapt/mesh/fractions.h"
 
 namespace hexadapt {
 
 template <class M>
 struct GlobalPillowResult {
   M mesh;
-  IdVector<CellId, int> material;        ///< one material per output cell
+  CellMaterials material;                ///< one material per output cell
   IdVector<NodeId, NodeId> node_origin;  ///< the input node each output node comes from
   IdVector<CellId, CellId> cell_origin;  ///< the input cell each output cell comes from
   index_t n_layer_cells = 0;
@@ -20,8 +21,8 @@ struct GlobalPillowResult {
 /// `material`: one index per cell of `mesh`, in [0, n_materials); `size`: the size criterion
 /// on mesh's cells, which sets the layers' least thickness (off by default).
 template <class M>
-GlobalPillowResult<M> global_pillow(const M& mesh, const IdVector<CellId, int>& material,
-                                    int n_materials, const BoundaryOptions& boundary = {},
+GlobalPillowResult<M> global_pillow(const M& mesh, const CellMaterials& material, int n_materials,
+                                    const BoundaryOptions& boundary = {},
                                     const PillowOptions& options = {},
                                     const SizeCriterion& size = {});
 

@@ -29,13 +29,14 @@
 #include "hexadapt/adapt/pillow.h"
 #include "hexadapt/adapt/size_criterion.h"
 #include "hexadapt/adapt/smoothing.h"
+#include "hexadapt/mesh/fractions.h"
 
 namespace hexadapt {
 
 struct InterfacePillowOptions {
   double threshold = default_threshold;  ///< S_q every cell keeps
-  int rounds = 4;          ///< pillowing attempts per material
-  int carve = 0;           ///< vertex distance of the cells left out around a failing cell
+  int rounds = 4;                        ///< pillowing attempts per material
+  int carve = 0;              ///< vertex distance of the cells left out around a failing cell
   bool keep_failing = false;  ///< keep a layer at its first pillowing, failing cells and all
   PillowOptions pillow;
   SmoothOptions smooth;
@@ -55,7 +56,7 @@ struct InterfacePillowAttempt {
 template <class M>
 struct InterfacePillowResult {
   M mesh;
-  IdVector<CellId, int> material;
+  CellMaterials material;
   IdVector<CellId, CellId> cell_origin;  ///< the input cell; a layer cell: its region's cell
   index_t n_new_nodes = 0;               ///< appended after the input's nodes
   std::vector<InterfacePillowAttempt> attempts;
@@ -65,7 +66,7 @@ struct InterfacePillowResult {
 /// the size criterion on mesh's cells; `left_out_around`: cells of mesh around which (within
 /// vertex distance `carve`) no region is pillowed.
 template <class M>
-InterfacePillowResult<M> pillow_interfaces(const M& mesh, const IdVector<CellId, int>& material,
+InterfacePillowResult<M> pillow_interfaces(const M& mesh, const CellMaterials& material,
                                            int n_materials, const IdVector<NodeId, char>& fixed,
                                            const SizeCriterion& size,
                                            const InterfacePillowOptions& options = {},

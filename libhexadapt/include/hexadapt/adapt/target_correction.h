@@ -26,6 +26,7 @@
 
 #include "hexadapt/adapt/node_constraint.h"
 #include "hexadapt/adapt/targets.h"
+#include "hexadapt/mesh/fractions.h"
 #include "hexadapt/mesh/hex_mesh.h"
 #include "hexadapt/reconstruct/model.h"
 
@@ -36,8 +37,8 @@ struct TargetCorrectionOptions {
   /// once the interfaces are pillowed first and nodes slide on their interface, the corrected
   /// targets cost reach and volume on every 3D case measured (docs/results.md).
   bool enabled = false;
-  int iterations = 20;          ///< smoothing sweeps over the target surface
-  double relaxation = 0.5;      ///< share of the way to the smoothed position per sweep
+  int iterations = 20;      ///< smoothing sweeps over the target surface
+  double relaxation = 0.5;  ///< share of the way to the smoothed position per sweep
   /// Model search radius, in mean lengths of the target-surface edges of the input grid.
   double search_radius = 1.5;
   /// A target never moves farther than this from its computed position (in mean edge
@@ -49,15 +50,15 @@ struct TargetCorrectionOptions {
 };
 
 struct TargetCorrectionResult {
-  bool ran = false;         ///< false: skipped (see `skipped`)
-  std::string skipped;      ///< why it did not run ("" when it ran)
-  index_t n_faces = 0;      ///< quads of the target surface
+  bool ran = false;     ///< false: skipped (see `skipped`)
+  std::string skipped;  ///< why it did not run ("" when it ran)
+  index_t n_faces = 0;  ///< quads of the target surface
   index_t n_surface_nodes = 0, n_curve_nodes = 0, n_fixed_nodes = 0;
-  index_t n_unprojected = 0;  ///< nodes with no model within the search radius (kept fixed)
-  index_t n_off_model = 0;    ///< movable nodes whose every projection was refused
-  double min_quality_before = 1;  ///< worst target-surface quad, computed targets
+  index_t n_unprojected = 0;         ///< nodes with no model within the search radius (kept fixed)
+  index_t n_off_model = 0;           ///< movable nodes whose every projection was refused
+  double min_quality_before = 1;     ///< worst target-surface quad, computed targets
   double min_quality_projected = 1;  ///< after the first projection onto the model
-  double min_quality_after = 1;   ///< after the correction
+  double min_quality_after = 1;      ///< after the correction
   index_t n_poor_before = 0, n_poor_after = 0;  ///< quads below 0.3 before / after
   double mean_displacement = 0;  ///< mean |corrected - computed| over the interface nodes
   double max_displacement = 0;
@@ -75,7 +76,7 @@ void check_options(const TargetCorrectionOptions& options);
 /// Corrects `targets` in place. `material` is the cell assignment, `boundary` the domain
 /// boundary constraint of every node; `model` uses the same material indices. Throws
 /// InputError when sizes disagree or the model is not 3D, OptionError for bad options.
-TargetCorrectionResult correct_targets(const HexMesh& mesh, const IdVector<CellId, int>& material,
+TargetCorrectionResult correct_targets(const HexMesh& mesh, const CellMaterials& material,
                                        const IdVector<NodeId, NodeConstraint>& boundary,
                                        const reconstruct::InterfaceModel& model, Targets& targets,
                                        const TargetCorrectionOptions& options = {});

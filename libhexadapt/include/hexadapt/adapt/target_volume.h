@@ -26,13 +26,14 @@
 #pragma once
 
 #include "hexadapt/adapt/targets.h"
+#include "hexadapt/mesh/fractions.h"
 
 namespace hexadapt {
 
 /// Offsets the targets in place (TargetOptions::volume_*).
 template <class M>
 void conserve_target_volumes(const M& mesh, const Fractions& fractions,
-                             const IdVector<CellId, int>& material,
+                             const CellMaterials& material,
                              const IdVector<NodeId, NodeConstraint>& boundary, Targets& targets,
                              const TargetOptions& options);
 

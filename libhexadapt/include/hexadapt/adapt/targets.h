@@ -79,8 +79,7 @@ struct Targets {
 /// fractions. `boundary` is the boundary constraint of every node (boundary_constraints()).
 /// Throws InputError when sizes disagree or a material index is out of range.
 template <class M>
-Targets compute_targets(const M& mesh, const Fractions& fractions,
-                        const IdVector<CellId, int>& material,
+Targets compute_targets(const M& mesh, const Fractions& fractions, const CellMaterials& material,
                         const IdVector<NodeId, NodeConstraint>& boundary,
                         const TargetOptions& options = {});
 

@@ -1,8 +1,8 @@
 // The assignment stage (paper sec. 3): majority assignment, small pieces given to the
 // materials around them and materials without a cell given some when asked (islands.h,
 // keep_materials.h), then manifold correction. This is what hexadapt-assign runs; the steps
-// are also available one by one (majority.h, islands.h, keep_materials.h, manifold.h,
-// enumerate.h, correction.h).
+// are also available one by one (mesh/fractions.h's majority_materials, islands.h,
+// keep_materials.h, manifold.h, enumerate.h, correction.h).
 #pragma once
 
 #include <vector>
@@ -10,8 +10,8 @@
 #include "hexadapt/assign/correction.h"
 #include "hexadapt/assign/islands.h"
 #include "hexadapt/assign/keep_materials.h"
-#include "hexadapt/assign/majority.h"
 #include "hexadapt/assign/material_balance.h"
+#include "hexadapt/mesh/fractions.h"
 
 namespace hexadapt::assign {
 
@@ -26,13 +26,13 @@ struct AssignOptions {
 };
 
 struct AssignResult {
-  Labels majority;              ///< eq. (2), before correction
-  IslandResult islands;         ///< the small pieces reassigned in the majority assignment
+  CellMaterials majority;  ///< eq. (2), before correction
+  IslandResult islands;    ///< the small pieces reassigned in the majority assignment
   /// Pieces smaller than min_island in the final assignment (the correction may leave some).
   index_t small_pieces_final = 0;
   std::vector<KeptMaterial> kept;  ///< with keep_materials: the materials given cells
-  CorrectionResult correction;  ///< labels: the final assignment, with statistics
-  PhaseTimes times;             ///< majority, then the correction's phases
+  CorrectionResult correction;     ///< labels: the final assignment, with statistics
+  PhaseTimes times;                ///< majority, then the correction's phases
   /// Per material, input and assigned volumes of the final assignment (in the grid's units;
   /// shares computed before, so a grid of 1e-300 still has them).
   std::vector<MaterialBalance> balance;

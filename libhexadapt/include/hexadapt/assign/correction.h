@@ -25,7 +25,6 @@
 #include <optional>
 #include <vector>
 
-#include "hexadapt/assign/majority.h"
 #include "hexadapt/core/geometry.h"
 #include "hexadapt/core/ids.h"
 #include "hexadapt/core/log.h"
@@ -53,8 +52,8 @@ struct CorrectionFailure {
 };
 
 struct CorrectionResult {
-  Labels labels;        ///< the assignment reached (final when solved)
-  bool solved = false;  ///< no non-manifold node remains
+  CellMaterials labels;  ///< the assignment reached (final when solved)
+  bool solved = false;   ///< no non-manifold node remains
   std::optional<CorrectionFailure> failure;
   index_t non_manifold_initial = 0;    ///< nodes non-manifold in the initial assignment
   int rounds = 0;                      ///< rounds of independent nodes
@@ -72,7 +71,7 @@ struct CorrectionResult {
 /// Corrects `initial` on `mesh`. Throws OptionError for keep or max_materials < 1, and
 /// Error when the sizes of fractions or labels do not match the mesh.
 template <class M>
-CorrectionResult correct_assignment(const M& mesh, const Fractions& fractions, Labels initial,
-                                    const CorrectionOptions& options = {});
+CorrectionResult correct_assignment(const M& mesh, const Fractions& fractions,
+                                    CellMaterials initial, const CorrectionOptions& options = {});
 
 }  // namespace hexadapt::assign

@@ -3,7 +3,6 @@
 // volume is given to a material the fractions did not put there.
 #pragma once
 
-#include "hexadapt/assign/majority.h"
 #include "hexadapt/core/ids.h"
 #include "hexadapt/mesh/fractions.h"
 
@@ -20,6 +19,6 @@ inline double cell_cost(const Fractions& fractions, const IdVector<CellId, doubl
 
 /// eq. (4) summed over every cell, in cell order.
 double assignment_cost(const Fractions& fractions, const IdVector<CellId, double>& volumes,
-                       const Labels& labels);
+                       const CellMaterials& labels);
 
 }  // namespace hexadapt::assign

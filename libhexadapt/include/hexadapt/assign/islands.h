@@ -11,7 +11,6 @@
 // counted in `left`. A material whose every piece is small vanishes: assign reports it.
 #pragma once
 
-#include "hexadapt/assign/majority.h"
 #include "hexadapt/core/ids.h"
 #include "hexadapt/mesh/fractions.h"
 
@@ -25,11 +24,11 @@ struct IslandResult {
 
 /// Pieces of `labels` smaller than min_cells, reassigned in place (min_cells <= 1: none).
 template <class M>
-IslandResult remove_islands(const M& mesh, const Fractions& fractions, Labels& labels,
+IslandResult remove_islands(const M& mesh, const Fractions& fractions, CellMaterials& labels,
                             index_t min_cells);
 
 /// The number of pieces of `labels` with fewer than min_cells cells.
 template <class M>
-index_t count_small_pieces(const M& mesh, const Labels& labels, index_t min_cells);
+index_t count_small_pieces(const M& mesh, const CellMaterials& labels, index_t min_cells);
 
 }  // namespace hexadapt::assign

@@ -9,7 +9,6 @@
 
 #include <vector>
 
-#include "hexadapt/assign/majority.h"
 #include "hexadapt/mesh/fractions.h"
 
 namespace hexadapt::assign {
@@ -23,6 +22,6 @@ struct KeptMaterial {
 /// place; one entry per material kept, in increasing material index.
 template <class M>
 std::vector<KeptMaterial> keep_vanished_materials(const M& mesh, const Fractions& fractions,
-                                                  Labels& labels);
+                                                  CellMaterials& labels);
 
 }  // namespace hexadapt::assign

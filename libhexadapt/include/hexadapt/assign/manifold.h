@@ -30,7 +30,7 @@
 #include <vector>
 
 #include "hexadapt/assign/local_ball.h"
-#include "hexadapt/assign/majority.h"
+#include "hexadapt/mesh/fractions.h"
 
 namespace hexadapt::assign {
 
@@ -49,15 +49,15 @@ bool is_manifold(const LocalBall<M>& ball, const std::vector<int>& labels);
 
 /// The materials present around node n that are not manifold there, increasing.
 template <class M>
-std::vector<int> non_manifold_materials(const M& mesh, const Labels& labels, NodeId n);
+std::vector<int> non_manifold_materials(const M& mesh, const CellMaterials& labels, NodeId n);
 
 /// Every node where some material is not manifold, increasing ids (parallel scan).
 template <class M>
-std::vector<NodeId> non_manifold_nodes(const M& mesh, const Labels& labels);
+std::vector<NodeId> non_manifold_nodes(const M& mesh, const CellMaterials& labels);
 
 /// The subset of `nodes` (any order) that are non-manifold, increasing ids (parallel).
 template <class M>
-std::vector<NodeId> non_manifold_among(const M& mesh, const Labels& labels,
+std::vector<NodeId> non_manifold_among(const M& mesh, const CellMaterials& labels,
                                        std::vector<NodeId> nodes);
 
 }  // namespace hexadapt::assign

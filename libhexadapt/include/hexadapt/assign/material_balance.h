@@ -6,7 +6,6 @@
 
 #include <vector>
 
-#include "hexadapt/assign/majority.h"
 #include "hexadapt/mesh/fractions.h"
 
 namespace hexadapt::assign {
@@ -15,7 +14,7 @@ struct MaterialBalance {
   double input_volume = 0;     ///< sum_c fraction(c) x V(c)
   double assigned_volume = 0;  ///< sum of V(c) over the cells assigned to the material
   index_t assigned_cells = 0;
-  double input_share = 0;      ///< input_volume / the domain's volume
+  double input_share = 0;  ///< input_volume / the domain's volume
   /// The material had volume in the input and has no cell now.
   bool vanished() const { return input_volume > 0 && assigned_cells == 0; }
 };
@@ -23,6 +22,6 @@ struct MaterialBalance {
 /// One entry per material of `fractions`, for the assignment `labels` of mesh's cells.
 template <class M>
 std::vector<MaterialBalance> material_balance(const M& mesh, const Fractions& fractions,
-                                              const Labels& labels);
+                                              const CellMaterials& labels);
 
 }  // namespace hexadapt::assign

@@ -18,6 +18,7 @@
 
 #include "hexadapt/core/ids.h"
 #include "hexadapt/core/log.h"
+#include "hexadapt/mesh/fractions.h"
 
 namespace hexadapt {
 namespace io {
@@ -55,11 +56,6 @@ struct Imprint {
 /// [0, n_materials)) onto the cells of `input`. Both must have the same dimension. Throws
 /// InputError (dimension mismatch, a material out of range or of the wrong size).
 Imprint imprint(const io::MeshData& input, const io::MeshData& output,
-                const std::vector<int>& material, int n_materials,
-                const ImprintOptions& options = {});
-
-/// The output's material per cell, read from its integer cell array `name`. Throws
-/// InputError when missing, not one component, or not a non-negative integer.
-std::vector<int> cell_materials(const io::MeshData& output, const std::string& name);
+                const CellMaterials& material, int n_materials, const ImprintOptions& options = {});
 
 }  // namespace hexadapt

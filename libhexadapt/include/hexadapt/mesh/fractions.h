@@ -11,6 +11,10 @@
 
 namespace hexadapt {
 
+/// Each cell's one material: an index into Fractions::names(). The type every stage passes a
+/// grid's assignment in.
+using CellMaterials = IdVector<CellId, int>;
+
 class Fractions {
  public:
   Fractions() = default;
@@ -37,5 +41,8 @@ class Fractions {
   std::vector<std::string> names_;
   std::vector<double> data_;
 };
+
+/// Each cell's majority material (Fractions::majority): the paper's initial assignment, eq. (2).
+CellMaterials majority_materials(const Fractions& fractions);
 
 }  // namespace hexadapt

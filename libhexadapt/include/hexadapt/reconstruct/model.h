@@ -18,6 +18,7 @@
 
 #include "hexadapt/core/geometry.h"
 #include "hexadapt/core/ids.h"
+#include "hexadapt/mesh/fractions.h"
 #include "hexadapt/reconstruct/pixel_mesh.h"
 
 namespace hexadapt::reconstruct {
@@ -38,7 +39,7 @@ struct InterfaceModel {
 /// without pixels.
 template <class M>
 InterfaceModel extract_model(const M& mesh, const PixelMesh& pixels,
-                             const std::vector<int>& assignment);
+                             const CellMaterials& assignment);
 
 /// Area (2D) or volume (3D) enclosed by the facets bounding `material` (divergence theorem,
 /// exact for the bilinear pixel faces). Meaningful when the material does not reach the

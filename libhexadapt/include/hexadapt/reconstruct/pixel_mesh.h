@@ -128,14 +128,14 @@ class PixelMesh {
 /// coarse cell's material. Throws InputError when sizes or materials are inconsistent,
 /// OptionError for nsub out of [1, 64].
 template <class M>
-PixelPlan plan_pixels(const M& mesh, const Fractions& fractions, const std::vector<int>& assignment,
+PixelPlan plan_pixels(const M& mesh, const Fractions& fractions, const CellMaterials& assignment,
                       const PixelOptions& options);
 
 /// Builds the pixel mesh; fixed pixels get their cell's assigned material, free ones
 /// PixelMesh::unassigned. Throws ResourceError when the plan exceeds options.max_memory.
 template <class M>
 PixelMesh build_pixel_mesh(const M& mesh, const Fractions& fractions,
-                           const std::vector<int>& assignment, const PixelOptions& options,
+                           const CellMaterials& assignment, const PixelOptions& options,
                            PixelPlan* plan = nullptr);
 
 /// The face link from local face lf of coarse cell c to its neighbour (block left at -1).

@@ -32,15 +32,15 @@ struct ReconstructOptions {
   AnnealingOptions annealing;
   GraphCutOptions graph_cut;
   MipOptions mip;
-  bool extract_model = true;       ///< also build the geometric model
-  Progress progress;               ///< phase progress, nullptr for none
+  bool extract_model = true;  ///< also build the geometric model
+  Progress progress;          ///< phase progress, nullptr for none
 };
 
 struct ReconstructResult {
   PixelPlan plan;
-  std::string status = "done";   ///< the method's own status (MIP: optimal / feasible / ...)
+  std::string status = "done";  ///< the method's own status (MIP: optimal / feasible / ...)
   std::int64_t edgecut = 0;
-  double discrepancy = 0;        ///< over the pixelated cells
+  double discrepancy = 0;              ///< over the pixelated cells
   double unpixelated_discrepancy = 0;  ///< cells without pixels whose assignment is not pure
   double domain_volume = 0;
   /// (discrepancy + unpixelated_discrepancy) / domain_volume, computed before the volumes go
@@ -62,6 +62,6 @@ struct Reconstruction {
 /// Runs the stage on a grid with fractions and a per-cell material assignment.
 template <class M>
 Reconstruction reconstruct(const M& mesh, const Fractions& fractions,
-                           const std::vector<int>& assignment, const ReconstructOptions& options);
+                           const CellMaterials& assignment, const ReconstructOptions& options);
 
 }  // namespace hexadapt::reconstruct

@@ -1,0 +1,121 @@
+#include "hexadapt/io/assigned_grid_file.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include "hexadapt/core/error.h"
+
+namespace hexadapt::io {
+
+namespace {
+
+CellMaterials materials_of(const MeshData& data, const Fractions& fractions,
+                           const AssignedGridOptions& options, const std::string& file) {
+  switch (options.material) {
+    case MaterialSource::array:
+      return read_material_array(data, fractions.n_materials(), file, options.material_array);
+    case MaterialSource::majority:
+      return majority_materials(fractions);
+    case MaterialSource::none:
+      break;
+  }
+  return {};
+}
+
+void replace_metadata(MeshData& data, const std::string& key, std::string value) {
+  auto& meta = data.metadata;
+  meta.erase(
+      std::remove_if(meta.begin(), meta.end(), [&](const auto& kv) { return kv.first == key; }),
+      meta.end());
+  meta.emplace_back(key, std::move(value));
+}
+
+}  // namespace
+
+AssignedGrid to_assigned_grid(const MeshData& data, const AssignedGridOptions& options,
+                              const std::string& file, FractionReport* report) {
+  AssignedGrid grid;
+  grid.fractions = extract_fractions(data, options.fractions, report, file);
+  grid.material = materials_of(data, grid.fractions, options, file);
+  grid.mesh = to_mesh(data, file);
+  return grid;
+}
+
+void put_assignment(const AssignedGrid& grid, MeshData& data) {
+  const Fractions& f = grid.fractions;
+  for (int m = 0; m < f.n_materials(); ++m) {
+    DataArray a;
+    a.name = "vf_" + f.names()[static_cast<std::size_t>(m)];
+    for (CellId c : id_range<CellId>(f.n_cells())) a.values.push_back(f(c, m));
+    data.set_cell_array(std::move(a));
+  }
+  if (grid.assigned()) {
+    DataArray a;
+    a.name = "material";
+    a.type = ScalarType::int32;
+    a.values.assign(grid.material.begin(), grid.material.end());
+    data.set_cell_array(std::move(a));
+  }
+  replace_metadata(data, "hexadapt_materials", join_material_names(f.names()));
+}
+
+MeshData to_mesh_data(const AssignedGrid& grid) {
+  MeshData data = from_mesh(grid.mesh);
+  put_assignment(grid, data);
+  return data;
+}
+
+CellMaterials read_material_array(const MeshData& data, int n_materials, const std::string& file,
+                                  const std::string& array) {
+  const DataArray* a = data.find_cell_array(array);
+  if (a == nullptr)
+    throw InputError(file, "cell data",
+                     "no '" + array +
+                         "' cell array: the cells' materials are missing (the "
+                         "assign and adapt stages write them)");
+  if (a->n_components != 1 || a->n_tuples() != static_cast<std::size_t>(data.n_cells()))
+    throw InputError(file, "cell array '" + array + "'",
+                     "expected one value per cell (" + std::to_string(data.n_cells()) + ")");
+  CellMaterials out(static_cast<std::size_t>(data.n_cells()));
+  for (CellId c : id_range<CellId>(data.n_cells())) {
+    const double v = a->values[c.idx()];
+    if (!(v >= 0 && v < n_materials && v == std::floor(v)))
+      throw InputError(file, "cell " + std::to_string(c.value()),
+                       "'" + array + "' is " + std::to_string(v) +
+                           ", expected a material index in [0, " + std::to_string(n_materials) +
+                           ")");
+    out[c] = static_cast<int>(v);
+  }
+  return out;
+}
+
+std::string join_material_names(const std::vector<std::string>& names) {
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (i > 0) out += ',';
+    for (char ch : names[i]) {
+      if (ch == ',' || ch == '\\') out += '\\';
+      out += ch;
+    }
+  }
+  return out;
+}
+
+std::vector<std::string> split_material_names(const std::string& joined) {
+  std::vector<std::string> out;
+  if (joined.empty()) return out;
+  out.emplace_back();
+  for (std::size_t i = 0; i < joined.size(); ++i) {
+    if (joined[i] == '\\' && i + 1 < joined.size())
+      out.back() += joined[++i];
+    else if (joined[i] == ',')
+      out.emplace_back();
+    else
+      out.back() += joined[i];
+  }
+  return out;
+}
+
+}  // namespace hexadapt::io
