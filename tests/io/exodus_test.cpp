@@ -5,12 +5,14 @@
 
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "hexadapt/core/error.h"
+#include "hexadapt/io/assigned_grid_file.h"
 #include "hexadapt/io/mesh_file.h"
 #include "hexadapt/mesh/structured.h"
 
@@ -91,6 +93,47 @@ TEST(Exodus, HexesRoundTripInCellOrder) {
     expect_round_trip(d, read_mesh(path));
     std::filesystem::remove(path);
   }
+}
+
+// Info records hold 80 characters a line: every entry comes back whole, whatever it holds.
+TEST(Exodus, MetadataComesBackFromTheInfoRecords) {
+  MeshData d = two_materials(from_mesh(make_quad_grid(2, 1)), 2);
+  std::string record =
+      "{\"fractions\": [\"Volume Fraction for Body, Nose\"], \"note\": \"a\\\\b\nc\"}";
+  while (record.size() < 300) record += " pad";
+  d.metadata = {{"hexadapt_tool", "hexadapt-test"},
+                {"hexadapt_input", record},
+                {"key: with colon", "+plus"},
+                {"+lead", ""},
+                {"hexadapt_command", std::string(80, 'x')},
+                {"materials", join_material_names({"steel", "Body, Nose"})}};
+  const std::string path = temp_path("info.exo");
+  write_mesh(d, path);
+  const MeshData r = read_mesh(path);
+  std::filesystem::remove(path);
+  EXPECT_EQ(r.metadata, d.metadata);
+}
+
+// Random entries of the characters the info records escape or lose (spaces ending a line).
+TEST(Exodus, RandomMetadataComesBackWhole) {
+  MeshData d = two_materials(from_mesh(make_quad_grid(2, 1)), 2);
+  std::mt19937 rng(7);
+  const std::string alphabet = "  \\:+\na,";
+  auto text = [&](std::size_t max) {
+    std::string t(std::uniform_int_distribution<std::size_t>(0, max)(rng), ' ');
+    for (char& c : t) c = alphabet[rng() % alphabet.size()];
+    return t;
+  };
+  d.metadata.clear();
+  for (int k = 0; k < 60; ++k) d.metadata.emplace_back("k" + text(20), text(250));
+  d.metadata.emplace_back("materials", "steel,air");
+  const std::string path = temp_path("random_info.exo");
+  write_mesh(d, path);
+  const MeshData r = read_mesh(path);
+  std::filesystem::remove(path);
+  ASSERT_EQ(r.metadata.size(), d.metadata.size());
+  for (std::size_t k = 0; k < d.metadata.size(); ++k)
+    EXPECT_EQ(r.metadata[k], d.metadata[k]) << "entry " << k;
 }
 
 // A mesh without a `material` array is one block; read back, the block is the material.

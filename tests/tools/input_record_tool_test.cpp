@@ -32,13 +32,13 @@ class InputRecordTool : public ToolTest {
   }
 };
 
-// The record travels in a .vtu's field data and comment, and in a legacy .vtk's field data
-// (its 255-character title cannot hold it).
+// The record travels in a .vtu's field data and comment, in a legacy .vtk's field data (its
+// 255-character title cannot hold it) and in an Exodus file's info records.
 TEST_F(InputRecordTool, MeasureReadsTheReferenceAsAssignReadTheInput) {
   write_input();
   const std::string arrays = " --fractions 'Body, Nose' air";
   const std::string reading = arrays + " --sum-tolerance 0.003";
-  for (const std::string ext : {".vtu", ".vtk"}) {
+  for (const std::string ext : {".vtu", ".vtk", ".exo"}) {
     ToolRun r = run("assign", path("in.vtu") + " -o " + path("a" + ext) + reading);
     ASSERT_EQ(r.code, 0) << r.err;
     r = run("adapt", path("a" + ext) + " -o " + path("o" + ext) + " -q");

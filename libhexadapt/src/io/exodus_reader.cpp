@@ -12,8 +12,10 @@
 
 #include "exodus_file.h"
 #include "exodus_guard.h"
+#include "exodus_info.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/core/geometry.h"
+#include "hexadapt/io/assigned_grid_file.h"
 #include "hexadapt/io/exodus.h"
 #include "netcdf_extent.h"
 #include "time_step.h"
@@ -308,6 +310,29 @@ std::vector<double> read_times(const ExodusFile& f) {
   return times;
 }
 
+// The info records as metadata (exodus_info.h).
+void read_info(const ExodusFile& f, MeshData& d) {
+  const int64_t n = ex_inquire_int(f.id(), EX_INQ_INFO);
+  if (n < 0) f.check(static_cast<int>(n), "info records");
+  check_size(f, "info records", n, (MAX_LINE_LENGTH + 1) / 4);  // characters, not 4-byte values
+  if (n == 0) return;
+  const std::size_t width = MAX_LINE_LENGTH + 1;
+  detail::check_variable_size(f, "info_records", static_cast<std::size_t>(n) * width);
+  detail::check_string_length(f, "info_records", width);
+  std::vector<std::vector<char>> buffers(static_cast<std::size_t>(n),
+                                         std::vector<char>(width + 1, '\0'));
+  std::vector<char*> pointers;
+  for (auto& b : buffers) pointers.push_back(b.data());
+  f.check(ex_get_info(f.id(), pointers.data()), "info records");
+  std::vector<std::string> lines;  // a line's characters, without the spaces filling its row
+  for (const auto& b : buffers) {
+    std::string line(b.begin(), std::find(b.begin(), b.begin() + MAX_LINE_LENGTH, '\0'));
+    line.erase(line.find_last_not_of(' ') + 1);
+    lines.push_back(std::move(line));
+  }
+  d.metadata = detail::metadata_of_info(lines);
+}
+
 // The block of each cell as the `material` array, the block names as the materials; when
 // the file has its own `material` variable (our files), block id - 1 is the material index.
 void block_materials(const std::vector<Block>& blocks, MeshData& d) {
@@ -328,9 +353,11 @@ void block_materials(const std::vector<Block>& blocks, MeshData& d) {
       names[m] = b.name;
     }
   }
-  std::string joined;
-  for (const std::string& n : names) joined += (joined.empty() ? "" : ",") + n;
-  d.metadata.emplace_back("materials", joined);
+  auto& meta = d.metadata;
+  meta.erase(std::remove_if(meta.begin(), meta.end(),
+                            [](const auto& kv) { return kv.first == "materials"; }),
+             meta.end());
+  meta.emplace_back("materials", join_material_names(names));
 }
 
 // The cells back in their own order when the element id map is a permutation of 1..n (our
@@ -372,6 +399,7 @@ MeshData read_exodus(const std::string& path, const ReadOptions& options) {
   const std::vector<Block> blocks = read_blocks(f, h);
   read_cells(f, h, blocks, d);
   read_points(f, h, d);
+  read_info(f, d);
   const std::vector<double> times = read_times(f);
   const std::size_t step = detail::select_time_step(times, options, path);
   if (!times.empty()) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "exodus_file.h"
+#include "exodus_info.h"
 #include "exodus_sets.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/core/geometry.h"
@@ -171,13 +172,10 @@ void write_records(const ExodusFile& f, const MeshData& d) {
   for (std::string& s : qa) s = s.substr(0, MAX_STR_LENGTH);
   char* record[1][4] = {{qa[0].data(), qa[1].data(), qa[2].data(), qa[3].data()}};
   f.check(ex_put_qa(f.id(), 1, record), "QA record");
-  std::vector<std::string> lines;
-  for (const auto& [key, value] : d.metadata) {
-    std::string text = key + ": " + value;
-    std::replace(text.begin(), text.end(), '\n', ' ');
-    for (std::size_t at = 0; at < text.size(); at += MAX_LINE_LENGTH)
-      lines.push_back(text.substr(at, MAX_LINE_LENGTH));
-  }
+  // Each line fills its row: the library writes a line's characters only, and the rest of a
+  // row keeps what its buffer held before (the tail of a longer line).
+  std::vector<std::string> lines = detail::info_lines(d.metadata, MAX_LINE_LENGTH);
+  for (std::string& line : lines) line.resize(MAX_LINE_LENGTH, ' ');
   if (lines.empty()) return;
   NameList list(std::move(lines));
   f.check(ex_put_info(f.id(), static_cast<int>(list.text.size()), list.data()), "info records");

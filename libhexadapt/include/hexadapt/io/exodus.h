@@ -12,8 +12,9 @@
 // of touching materials a and b, side sets `a_b` (the faces of a's cells against b) and
 // `b_a`, and one node set `a_b` (a before b in the material order). QA record: tool and
 // version (date and time left empty: the same mesh gives the same bytes); info records: the
-// metadata, "key: value", cut into lines of 80 characters. Names longer than Exodus' default
-// of 32 characters raise the file's name length (up to 255).
+// metadata, each entry "key: value" in lines of 80 characters, its further lines starting with
+// '+' (a backslash and a line break in it written \\ and \n). Names longer than Exodus'
+// default of 32 characters raise the file's name length (up to 255).
 //
 // Reading: QUAD4 (num_dim 2) or HEX8 (num_dim 3) element blocks; the cells in block order;
 // element variables at the chosen time step (ReadOptions::step or ::time, needed when the
@@ -21,7 +22,8 @@
 // P_z in a row: the 3-component array P), so fractions stored as element variables (as Sculpt
 // reads them) are found by --fractions or the vf_ convention. Without a `material` element
 // variable, the block of each cell becomes the `material` cell array (block order) and the
-// block names the `materials` metadata entry.
+// block names the `materials` metadata entry. The info records become the metadata again
+// (a line of another writer that is no "key: value" entry: the entry `exodus_info`).
 #pragma once
 
 #include <string>
