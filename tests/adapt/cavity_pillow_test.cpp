@@ -46,9 +46,9 @@ TEST(CavityPillow, ShrinksToRangeTwo) {
   IdVector<CellId, int> material(static_cast<std::size_t>(grid.n_cells()), 0);
   for (CellId c : id_range<CellId>(grid.n_cells()))
     material[c] = c.value() % 10 >= 7 && c.value() / 10 >= 7;
-  CavityOptions o;
-  o.threshold = 0.7;
-  const auto r = cavity_pillow(grid, material, 2, {grid_node(5, 5, 10)}, o);
+  StepSettings shared;
+  shared.threshold = 0.7;
+  const auto r = cavity_pillow(grid, material, 2, {grid_node(5, 5, 10)}, {}, shared);
   ASSERT_EQ(r.attempts.size(), 2u);
   EXPECT_EQ(r.attempts[0].material, 0);
   EXPECT_FALSE(r.attempts[0].published);
@@ -68,9 +68,10 @@ TEST(CavityPillow, GivesUpAndLeavesTheMeshUnchanged) {
   const HexMesh grid = make_hex_grid(10, 10, 10);
   const IdVector<CellId, int> material(static_cast<std::size_t>(grid.n_cells()), 0);
   CavityOptions o;
-  o.threshold = 0.999;  // no layer cell is a perfect cube
+  StepSettings shared;
+  shared.threshold = 0.999;  // no layer cell is a perfect cube
   const NodeId seed(5 * 121 + 5 * 11 + 5);
-  const auto r = cavity_pillow(grid, material, 1, {seed}, o);
+  const auto r = cavity_pillow(grid, material, 1, {seed}, o, shared);
   ASSERT_EQ(r.attempts.size(), 3u);
   for (int k = 0; k < 3; ++k) {
     EXPECT_FALSE(r.attempts[static_cast<std::size_t>(k)].published);
@@ -153,7 +154,7 @@ void expect_same_as_whole_mesh(const M& mesh, const IdVector<CellId, int>& mater
   EXPECT_EQ(local.material.raw(), whole.material.raw());
   EXPECT_EQ(local.node_origin.raw(), whole.node_origin.raw());
   EXPECT_TRUE(check_mesh(local.mesh).ok());
-  EXPECT_GE(min_quality(local.mesh), o.threshold);
+  EXPECT_GE(min_quality(local.mesh), StepSettings{}.threshold);
 }
 
 TEST(CavityPillow, PatchesGiveTheWholeMeshResult2D) {
@@ -192,9 +193,10 @@ TEST(CavityPillow, RejectsACavityTouchingItselfAlongAnEdge) {
       material[CellId(i + 5 * (j + 5 * k))] = (k == 2 && i == 2 && j == 1) ? 1 : 0;
   CavityOptions o;
   o.range = 2;
-  o.threshold = 0.2;
+  StepSettings shared;
+  shared.threshold = 0.2;
   const NodeId top(2 + 6 * (2 + 6 * 3));  // node (2, 2, 3)
-  const auto r = cavity_pillow(grid, material, 2, {top}, o);
+  const auto r = cavity_pillow(grid, material, 2, {top}, o, shared);
   ASSERT_EQ(r.attempts.size(), 3u);  // material 0 at ranges 2 and 1, then material 1
   EXPECT_EQ(r.attempts[0].material, 0);
   EXPECT_EQ(r.attempts[0].range, 2);

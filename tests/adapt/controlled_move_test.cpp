@@ -36,9 +36,9 @@ test::Shape three_regions(double xs, double ys) {
 template <class M>
 void expect_move_keeps_threshold(M mesh, const Targets& t, double threshold) {
   ASSERT_GE(min_quality(mesh), threshold);
-  MoveOptions o;
-  o.threshold = threshold;
-  const MoveResult r = controlled_move(mesh, t, o);
+  StepSettings shared;
+  shared.threshold = threshold;
+  const MoveResult r = controlled_move(mesh, t, {}, shared);
   EXPECT_GE(min_quality(mesh), threshold);
   EXPECT_GT(r.n_moving, 0);
   EXPECT_NEAR(r.dist, target_distance(mesh, t), 1e-12);
@@ -120,9 +120,10 @@ TEST(ControlledMove, NeverMakesAPassingCellFailNorAFailingOneWorse) {
   ASSERT_GT(failing, 10);
   ASSERT_LT(failing, grid.n_cells() - 10);
   QuadMesh mesh = grid;
-  MoveOptions o;
-  o.threshold = threshold;
-  const MoveResult r = controlled_move(mesh, targets_of(grid, disk(Vec3(7.1, 6.8, 0), 4.6), 2), o);
+  StepSettings shared;
+  shared.threshold = threshold;
+  const MoveResult r =
+      controlled_move(mesh, targets_of(grid, disk(Vec3(7.1, 6.8, 0), 4.6), 2), {}, shared);
   EXPECT_GT(r.n_reached, 0);
   for (CellId c : id_range<CellId>(grid.n_cells())) {
     const double before = grid.cell_quality(c), after = mesh.cell_quality(c);
@@ -183,16 +184,17 @@ TEST(ControlledMove, ANodeCarriesItsNeighboursAcrossALayerAlong) {
   const NodeId above = test::node_at(grid, Vec3(1, 2.2, 0));
   const auto surface = boundary_constraints(grid);
   MoveOptions o;
-  o.threshold = 0.8;
   o.drag = false;
+  StepSettings shared;
+  shared.threshold = 0.8;
   QuadMesh alone = grid;
-  const MoveResult stopped = controlled_move(alone, t, o, SizeCriterion{}, &surface);
+  const MoveResult stopped = controlled_move(alone, t, o, shared, SizeCriterion{}, &surface);
   EXPECT_EQ(stopped.n_reached, 0);
   EXPECT_GT((alone.point(node) - t.position[node]).norm(), 0.2) << alone.point(node).transpose();
 
   o.drag = true;
   QuadMesh mesh = grid;
-  const MoveResult r = controlled_move(mesh, t, o, SizeCriterion{}, &surface);
+  const MoveResult r = controlled_move(mesh, t, o, shared, SizeCriterion{}, &surface);
   EXPECT_EQ(r.n_reached, 1);
   EXPECT_EQ(r.n_drags, 10);
   EXPECT_EQ(mesh.point(node), Vec3(1.4, 1.2, 0));
@@ -209,14 +211,15 @@ TEST(ControlledMove, GivesTheSamePositionsWhateverTheThreadCount) {
   };
   const Targets t = targets_of(start, stripes, 3, 3);
   MoveOptions o;
-  o.threshold = 0.7;
   o.steps = 4;  // few rounds: each parallel region is slow on a loaded machine
+  StepSettings shared;
+  shared.threshold = 0.7;
   set_threads(1);
   HexMesh a = start;
-  const MoveResult ra = controlled_move(a, t, o);
+  const MoveResult ra = controlled_move(a, t, o, shared);
   set_threads(2);
   HexMesh b = start;
-  const MoveResult rb = controlled_move(b, t, o);
+  const MoveResult rb = controlled_move(b, t, o, shared);
   set_threads(0);
   EXPECT_EQ(a.points(), b.points());
   EXPECT_EQ(ra.dist, rb.dist);

@@ -346,7 +346,7 @@ TEST(GuaranteedMethod, HoldsAHigherThresholdInAnExtrudedCase) {
   check_guaranteed(grid, r, 0.5);
 }
 
-// AdaptOptions holds one threshold: the step options it holds take it, whatever theirs says.
+// AdaptOptions holds the one threshold (StepSettings) every step keeps.
 TEST(GuaranteedMethod, EveryStepKeepsTheOneThreshold) {
   const auto [grid, f] = extruded_triple_point();
   AdaptOptions o = guaranteed_options();
@@ -354,11 +354,8 @@ TEST(GuaranteedMethod, EveryStepKeepsTheOneThreshold) {
   o.layers = LayerStrategy::both;  // the interface pillows, the move and the cavities
   const auto r = adapt(grid, f, majority_materials(f), o);
   check_guaranteed(grid, r, 0.5);
-  o.move.threshold = o.cavity.threshold = o.interface_pillow.threshold = -0.9;
-  const auto same = adapt(grid, f, majority_materials(f), o);
-  EXPECT_EQ(same.mesh.points(), r.mesh.points());
-  EXPECT_EQ(same.n_cells_added, r.n_cells_added);
-  EXPECT_EQ(same.n_interface_layer_cells, r.n_interface_layer_cells);
+  EXPECT_GT(r.n_cells_added, 0);
+  EXPECT_GT(r.n_interface_layer_cells, 0);
 }
 
 TEST(GuaranteedMethod, StopsOnBadInputUnlessAllowed) {

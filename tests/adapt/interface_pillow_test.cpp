@@ -44,7 +44,7 @@ TEST(InterfacePillow, CarvesWhereCellsFailOrKeepsThemForTheMovesToMend) {
     }
     EXPECT_GT(left_out, 0);
     const SizeCriterion carved_size = size.remapped(carved.cell_origin.raw());
-    EXPECT_EQ(failing_cells(carved.mesh, carved_size, o.threshold), 0);
+    EXPECT_EQ(failing_cells(carved.mesh, carved_size, default_threshold), 0);
 
     o.keep_failing = true;
     const auto kept = pillow_interfaces(grid, m, n_materials, fixed, size, o);
@@ -58,7 +58,7 @@ TEST(InterfacePillow, CarvesWhereCellsFailOrKeepsThemForTheMovesToMend) {
     EXPECT_GT(failing, 0);
     EXPECT_GT(kept.mesh.n_cells(), carved.mesh.n_cells());
     const SizeCriterion kept_size = size.remapped(kept.cell_origin.raw());
-    EXPECT_EQ(failing_cells(kept.mesh, kept_size, o.threshold), failing);
+    EXPECT_EQ(failing_cells(kept.mesh, kept_size, default_threshold), failing);
     // The nodes with a target never move.
     for (NodeId v : id_range<NodeId>(grid.n_nodes()))
       if (fixed[v]) {
@@ -78,13 +78,13 @@ TEST(InterfacePillow, LeavesTheRegionsOutAroundTheCellsGiven) {
     const SizeCriterion first_size = size.remapped(first.cell_origin.raw());
     std::vector<CellId> around;
     for (CellId c : id_range<CellId>(first.mesh.n_cells()))
-      if (cell_score(first.mesh, c, first_size) < o.threshold)
+      if (cell_score(first.mesh, c, first_size) < default_threshold)
         around.push_back(first.cell_origin[c]);
     std::sort(around.begin(), around.end());
     around.erase(std::unique(around.begin(), around.end()), around.end());
     ASSERT_FALSE(around.empty());
 
-    const auto again = pillow_interfaces(grid, m, n_materials, fixed, size, o, around);
+    const auto again = pillow_interfaces(grid, m, n_materials, fixed, size, o, {}, around);
     index_t left_out = 0;
     for (const InterfacePillowAttempt& a : again.attempts) left_out += a.left_out;
     EXPECT_GE(left_out, static_cast<index_t>(around.size()));

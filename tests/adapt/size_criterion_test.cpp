@@ -13,7 +13,9 @@ namespace hexadapt {
 namespace {
 
 // Two unit squares side by side; node 4 is (1, 1), the top of their shared edge.
-QuadMesh two_squares() { return make_quad_grid(2, 1); }
+QuadMesh two_squares() {
+  return make_quad_grid(2, 1);
+}
 
 using test::node_at;
 
@@ -40,16 +42,14 @@ TEST(SizeCriterion, LocalSizeIsTheMeanEdgeAndTheScoreDropsBelowEveryJacobian) {
 TEST(SizeCriterion, AMoveIsRefusedOnlyBecauseOfSize) {
   QuadMesh free_mesh = two_squares();
   const Targets t = squeeze_target(free_mesh);
-  MoveOptions o;
-  o.threshold = 0.3;
-  const MoveResult without = controlled_move(free_mesh, t, o);
+  const MoveResult without = controlled_move(free_mesh, t);
   EXPECT_EQ(without.n_reached, 1);  // the shape alone lets it through
   EXPECT_GE(min_quality(free_mesh), 0.72);
   EXPECT_NEAR(cell_edge_lengths(free_mesh, CellId(1)).min, 0.05, 1e-12);
 
   QuadMesh mesh = two_squares();
   const SizeCriterion size = size_criterion(mesh, 0.1);
-  const MoveResult with = controlled_move(mesh, t, o, size);
+  const MoveResult with = controlled_move(mesh, t, {}, {}, size);
   EXPECT_EQ(with.n_reached, 0);
   // 16 steps of 0.95 / 16: step 15 leaves 1 - 0.95 x 15 / 16 = 0.109 >= 0.1, step 16 not.
   const NodeId top = node_at(mesh, Vec3(1 + 0.95 * 15 / 16, 1, 0));
@@ -70,7 +70,7 @@ TEST(SizeCriterion, ANodeRefusedBySizeSlidesOntoItsSurface) {
   const SizeCriterion size = size_criterion(mesh, 0.1);
   MoveOptions o;
   o.drag = false;
-  const MoveResult r = controlled_move(mesh, t, o, size, &surface);
+  const MoveResult r = controlled_move(mesh, t, o, {}, size, &surface);
   EXPECT_EQ(r.n_reached, 0);
   EXPECT_EQ(r.n_slid, 1);
   EXPECT_TRUE(r.on_surface[top]);
@@ -92,14 +92,14 @@ TEST(SizeCriterion, AFreeNodeAheadIsDraggedAlong) {
   MoveOptions o;
   o.drag = false;
   QuadMesh stopped = grid;
-  const MoveResult without = controlled_move(stopped, t, o, size, &surface);
+  const MoveResult without = controlled_move(stopped, t, o, {}, size, &surface);
   EXPECT_EQ(without.n_reached, 0);
   EXPECT_EQ(without.n_drags, 0);
   EXPECT_EQ(stopped.point(ahead), Vec3(2, 1, 0));
 
   o.drag = true;
   QuadMesh mesh = grid;
-  const MoveResult with = controlled_move(mesh, t, o, size, &surface);
+  const MoveResult with = controlled_move(mesh, t, o, {}, size, &surface);
   EXPECT_EQ(with.n_reached, 1);
   EXPECT_EQ(with.n_drags, 1);
   EXPECT_EQ(mesh.point(node_at(grid, Vec3(1, 1, 0))), Vec3(1.95, 1, 0));

@@ -149,7 +149,7 @@ struct TriedCavity {
 // the size criterion on the patch's cells.
 template <class M>
 TriedCavity<M> try_cavity(const CavityPatch<M>& patch, const SizeCriterion& size,
-                          const CavityOptions& o) {
+                          const StepSettings& o) {
   const M& mesh = patch.mesh;
   const IdVector<CellId, char>& set = patch.in_set;
   TriedCavity<M> t{
@@ -199,7 +199,7 @@ inline std::vector<CellId> patch_origin(const std::vector<CellId>& origin,
 template <class M>
 CavityResult<M> cavity_pillow(const M& mesh, const CellMaterials& material, int n_materials,
                               const std::vector<NodeId>& seeds, const CavityOptions& options,
-                              const SizeCriterion& size) {
+                              const StepSettings& shared, const SizeCriterion& size) {
   if (options.range < 1)
     throw OptionError("cavity range must be at least 1, got " + std::to_string(options.range));
   CavityResult<M> r;
@@ -236,7 +236,7 @@ CavityResult<M> cavity_pillow(const M& mesh, const CellMaterials& material, int 
       for (bool whole = options.whole_mesh;; whole = true) {
         try {
           tried.emplace(try_cavity(
-              patch, size.remapped(patch_origin(r.cell_origin.raw(), patch.cells)), options));
+              patch, size.remapped(patch_origin(r.cell_origin.raw(), patch.cells)), shared));
         } catch (const MeshError&) {
           // The set touches itself along an edge in a way its layer cannot follow (a face of
           // three cells): it cannot be published, and every seed in it shrinks. Confirmed in
@@ -250,7 +250,7 @@ CavityResult<M> cavity_pillow(const M& mesh, const CellMaterials& material, int 
         break;
       }
       a.min_quality = tried ? tried->worst : -1.0;
-      a.published = tried && tried->worst >= options.threshold && tried->pillowed.n_new_cells > 0;
+      a.published = tried && tried->worst >= shared.threshold && tried->pillowed.n_new_cells > 0;
       r.attempts.push_back(a);
       if (a.published) {
         const PillowResult<M>& p = tried->pillowed;
@@ -269,7 +269,7 @@ CavityResult<M> cavity_pillow(const M& mesh, const CellMaterials& material, int 
         continue;
       }
       // The seeds whose cavity holds a cell below the threshold shrink it.
-      const std::vector<CellId> bad = bad_cells(patch, set, tried, options.threshold);
+      const std::vector<CellId> bad = bad_cells(patch, set, tried, shared.threshold);
       bool any = false;
       for (std::size_t i : group) {
         Seed& s = pending[i];
@@ -295,9 +295,11 @@ CavityResult<M> cavity_pillow(const M& mesh, const CellMaterials& material, int 
 template CavityResult<QuadMesh> cavity_pillow<QuadMesh>(const QuadMesh&,
                                                         const IdVector<CellId, int>&, int,
                                                         const std::vector<NodeId>&,
-                                                        const CavityOptions&, const SizeCriterion&);
+                                                        const CavityOptions&, const StepSettings&,
+                                                        const SizeCriterion&);
 template CavityResult<HexMesh> cavity_pillow<HexMesh>(const HexMesh&, const IdVector<CellId, int>&,
                                                       int, const std::vector<NodeId>&,
-                                                      const CavityOptions&, const SizeCriterion&);
+                                                      const CavityOptions&, const StepSettings&,
+                                                      const SizeCriterion&);
 
 }  // namespace hexadapt

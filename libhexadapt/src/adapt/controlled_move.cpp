@@ -63,8 +63,10 @@ std::vector<NodeId> try_drag(M& mesh, NodeId n, const Vec3& p, double threshold,
     ok = min_score_around(mesh, ahead[i].first, size, threshold) >= threshold;
   std::vector<NodeId> dragged;
   for (const auto& [f, at] : ahead) {
-    if (ok) dragged.push_back(f);
-    else mesh.set_point(f, at);
+    if (ok)
+      dragged.push_back(f);
+    else
+      mesh.set_point(f, at);
   }
   if (!ok) mesh.set_point(n, old);
   return dragged;
@@ -98,16 +100,16 @@ std::vector<Vec3> ring_directions(const std::vector<Vec3>& basis) {
 // where every cell around n keeps the criteria (the best such point of the ring). Returns
 // false and leaves n where it was when no ring does.
 template <class M>
-bool slide(M& mesh, NodeId n, const Vec3& target, const NodeConstraint& surface,
-           double threshold, const SizeCriterion& size) {
+bool slide(M& mesh, NodeId n, const Vec3& target, const NodeConstraint& surface, double threshold,
+           const SizeCriterion& size) {
   const std::vector<Vec3> basis = tangent_basis<M::dim>(surface);
   if (basis.empty()) return false;
   const std::vector<NodeId> around = edge_neighbours(mesh, n);
   if (around.empty()) return false;
   const Vec3 old = mesh.point(n);
   // The radii's unit: the local size of n's cells, or its mean edge length without sizes.
-  const double h = size.local_size.empty() ? mean_edge_length(mesh, n, around)
-                                           : node_local_size(mesh, n, size);
+  const double h =
+      size.local_size.empty() ? mean_edge_length(mesh, n, around) : node_local_size(mesh, n, size);
   const std::vector<Vec3> directions = ring_directions(basis);
   for (double r : {0.0625, 0.125, 0.25, 0.375, 0.5}) {
     double best = threshold;
@@ -156,7 +158,7 @@ void slide_blocked(M& mesh, const Targets& targets, const IdVector<NodeId, NodeC
 
 template <class M>
 MoveResult controlled_move(M& mesh, const Targets& targets, const MoveOptions& options,
-                           const SizeCriterion& size,
+                           const StepSettings& shared, const SizeCriterion& size,
                            const IdVector<NodeId, NodeConstraint>* surface) {
   if (options.steps < 1)
     throw OptionError("steps must be at least 1, got " + std::to_string(options.steps));
@@ -194,7 +196,7 @@ MoveResult controlled_move(M& mesh, const Targets& targets, const MoveOptions& o
       for_each_item(set.size(), [&](std::int64_t i) {
         const NodeId n = set[static_cast<std::size_t>(i)];
         if (done[n] >= options.steps || waiting[n]) return;
-        if (try_position(mesh, n, step_target(n), options.threshold, size))
+        if (try_position(mesh, n, step_target(n), shared.threshold, size))
           moved[static_cast<std::size_t>(i)] = 1;
         else
           refused[static_cast<std::size_t>(i)] = 1;
@@ -206,7 +208,7 @@ MoveResult controlled_move(M& mesh, const Targets& targets, const MoveOptions& o
         std::vector<NodeId> d;
         for (bool all : {false, true})
           if (d.empty())
-            d = try_drag(mesh, set[i], step_target(set[i]), options.threshold, size, targets,
+            d = try_drag(mesh, set[i], step_target(set[i]), shared.threshold, size, targets,
                          *surface, all);
         if (d.empty()) continue;
         moved[i] = 1;
@@ -230,7 +232,7 @@ MoveResult controlled_move(M& mesh, const Targets& targets, const MoveOptions& o
       ++out.n_reached;
     }
   out.on_surface = out.reached;
-  if (surface) slide_blocked(mesh, targets, *surface, options.threshold, size, out);
+  if (surface) slide_blocked(mesh, targets, *surface, shared.threshold, size, out);
   out.dist = target_distance(mesh, targets);
   return out;
 }
@@ -251,10 +253,10 @@ MoveResult direct_move(M& mesh, const Targets& targets) {
   return out;
 }
 
-#define HEXADAPT_INSTANTIATE(M)                                                   \
-  template MoveResult controlled_move<M>(M&, const Targets&, const MoveOptions&, \
-                                         const SizeCriterion&,                  \
-                                         const IdVector<NodeId, NodeConstraint>*); \
+#define HEXADAPT_INSTANTIATE(M)                                                     \
+  template MoveResult controlled_move<M>(M&, const Targets&, const MoveOptions&,    \
+                                         const StepSettings&, const SizeCriterion&, \
+                                         const IdVector<NodeId, NodeConstraint>*);  \
   template MoveResult direct_move<M>(M&, const Targets&);
 HEXADAPT_INSTANTIATE(QuadMesh)
 HEXADAPT_INSTANTIATE(HexMesh)

@@ -101,7 +101,7 @@ int move_smooth_loop(M& mesh, const Targets& targets,
     const SmoothResult s = smooth(mesh, movable, sliding, options.smooth,
                                   loops == 1 ? nullptr : &start, size, &neighbours);
     const std::vector<Vec3> before = points_of(mesh);
-    controlled_move(mesh, targets, options.move, size, &sliding);
+    controlled_move(mesh, targets, options.move, options, size, &sliding);
     start = nodes_around_moves(mesh, before, s.unsettled);
     const double dist = surface_distance_sum(mesh, targets, sliding);
     const bool better = dist < best;
@@ -126,7 +126,8 @@ std::vector<NodeId> pillow_cavities(M& mesh, CellMaterials& material, Targets& t
   for (NodeId v : id_range<NodeId>(mesh.n_nodes()))
     if (targets.has[v] && !first.on_surface[v]) seeds.push_back(v);
   if (seeds.empty() || options.cavity.range < 1 || !pillows_cavities(r.layers)) return {};
-  CavityResult<M> c = cavity_pillow(mesh, material, n_materials, seeds, options.cavity, size);
+  CavityResult<M> c =
+      cavity_pillow(mesh, material, n_materials, seeds, options.cavity, options, size);
   size = size.remapped(c.cell_origin.raw());
   r.cavities = std::move(c.attempts);
   r.n_cavities_published = c.n_published;
@@ -168,7 +169,7 @@ FirstMove<M> first_move(const M& mesh, const CellMaterials& material, const Targ
     InterfacePillowOptions io = options.interface_pillow;
     io.keep_failing = mend != nullptr;
     InterfacePillowResult<M> p =
-        pillow_interfaces(f.mesh, f.material, n_materials, f.targets.has, f.size, io,
+        pillow_interfaces(f.mesh, f.material, n_materials, f.targets.has, f.size, io, options,
                           mend ? *mend : std::vector<CellId>{});
     f.pillows = std::move(p.attempts);
     f.layer_cells = p.mesh.n_cells() - f.mesh.n_cells();
@@ -183,7 +184,7 @@ FirstMove<M> first_move(const M& mesh, const CellMaterials& material, const Targ
   clock.restart();
   const auto sliding =
       sliding_constraints(boundary_constraints(f.mesh, options.boundary), f.targets);
-  f.move = controlled_move(f.mesh, f.targets, options.move, f.size, &sliding);
+  f.move = controlled_move(f.mesh, f.targets, options.move, options, f.size, &sliding);
   f.surface_dist = surface_distance_sum(f.mesh, f.targets, sliding);
   f.move_seconds = clock.seconds();
   return f;
@@ -377,14 +378,9 @@ AdaptResult<M> first_layer(const M& grid, const CellMaterials& material, const T
   return finish(std::move(r));
 }
 
-// The options as the steps take them: one threshold, which no smoothing sinks a cell below,
-// and the pillowing steps with the same pillow, smoothing and boundary settings.
+// The options as the steps take them: no smoothing sinks a cell below the threshold.
 AdaptOptions with_shared_settings(AdaptOptions o) {
   o.smooth.floor = o.threshold;
-  o.move.threshold = o.cavity.threshold = o.interface_pillow.threshold = o.threshold;
-  o.cavity.pillow = o.interface_pillow.pillow = o.pillow;
-  o.cavity.smooth = o.interface_pillow.smooth = o.smooth;
-  o.cavity.boundary = o.interface_pillow.boundary = o.boundary;
   return o;
 }
 

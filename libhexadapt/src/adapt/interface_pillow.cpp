@@ -38,7 +38,7 @@ IdVector<NodeId, char> layer_movable(const PillowResult<M>& p, index_t n_old,
 template <class M>
 Attempt<M> try_pillow(const M& mesh, const IdVector<CellId, char>& set,
                       const IdVector<NodeId, char>& fixed, const SizeCriterion& size,
-                      const InterfacePillowOptions& o) {
+                      const StepSettings& o) {
   Attempt<M> a{
       pillow_cells(mesh, set, boundary_constraints(mesh, o.boundary), o.pillow, size), {}, {}};
   a.size = size.remapped(a.p.cell_origin.raw());
@@ -131,6 +131,7 @@ InterfacePillowResult<M> pillow_interfaces(const M& mesh, const CellMaterials& m
                                            int n_materials, const IdVector<NodeId, char>& fixed,
                                            const SizeCriterion& size,
                                            const InterfacePillowOptions& options,
+                                           const StepSettings& shared,
                                            const std::vector<CellId>& left_out_around) {
   if (options.rounds < 0 || options.carve < 0)
     throw OptionError("interface pillow rounds and carve must be >= 0");
@@ -154,7 +155,7 @@ InterfacePillowResult<M> pillow_interfaces(const M& mesh, const CellMaterials& m
       ++log.rounds;
       std::optional<Attempt<M>> tried;
       try {
-        tried.emplace(try_pillow(r.mesh, set, still, current, options));
+        tried.emplace(try_pillow(r.mesh, set, still, current, shared));
       } catch (const MeshError&) {
         // The set touches itself along an edge where no layer can follow it: those places
         // are carved out, and the layer tried again.
@@ -191,9 +192,11 @@ InterfacePillowResult<M> pillow_interfaces(const M& mesh, const CellMaterials& m
 
 template InterfacePillowResult<QuadMesh> pillow_interfaces<QuadMesh>(
     const QuadMesh&, const IdVector<CellId, int>&, int, const IdVector<NodeId, char>&,
-    const SizeCriterion&, const InterfacePillowOptions&, const std::vector<CellId>&);
+    const SizeCriterion&, const InterfacePillowOptions&, const StepSettings&,
+    const std::vector<CellId>&);
 template InterfacePillowResult<HexMesh> pillow_interfaces<HexMesh>(
     const HexMesh&, const IdVector<CellId, int>&, int, const IdVector<NodeId, char>&,
-    const SizeCriterion&, const InterfacePillowOptions&, const std::vector<CellId>&);
+    const SizeCriterion&, const InterfacePillowOptions&, const StepSettings&,
+    const std::vector<CellId>&);
 
 }  // namespace hexadapt

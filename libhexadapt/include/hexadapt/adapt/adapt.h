@@ -31,6 +31,7 @@
 #include "hexadapt/adapt/node_constraint.h"
 #include "hexadapt/adapt/size_criterion.h"
 #include "hexadapt/adapt/smoothing.h"
+#include "hexadapt/adapt/step_settings.h"
 #include "hexadapt/adapt/target_correction.h"
 #include "hexadapt/adapt/targets.h"
 #include "hexadapt/core/log.h"
@@ -59,20 +60,16 @@ std::string to_string(AdaptMethod method);
 LayerStrategy parse_layer_strategy(const std::string& name);
 std::string to_string(LayerStrategy strategy);
 
-struct AdaptOptions {
+/// The threshold (S_q, the quality the guaranteed method keeps), pillow, smooth and boundary
+/// settings are StepSettings', held once for every step.
+struct AdaptOptions : StepSettings {
   AdaptMethod method = AdaptMethod::guaranteed;  ///< which pipeline runs
-  /// S_q, the quality the guaranteed method keeps: the one threshold of every step (the
-  /// `threshold` of move, cavity and interface_pillow below is not read).
-  double threshold = default_threshold;
   /// Shortest edge / local input size every cell keeps (guaranteed); 0 = no size criterion.
   double min_edge = 0.1;
   /// guaranteed: the controlled move (its steps, drag and rounds).
   MoveOptions move;
-  BoundaryOptions boundary;            ///< feature detection on the domain boundary
   TargetOptions targets;               ///< target computation
   TargetCorrectionOptions correction;  ///< guaranteed, 3D: targets smoothed on the model
-  PillowOptions pillow;                ///< where pillow nodes start
-  SmoothOptions smooth;                ///< smoothing sweeps
   Progress progress;                   ///< phase progress, nullptr = silent
   /// guaranteed: run even when input cells are below the threshold (no guarantee then).
   bool allow_bad_input = false;
@@ -84,11 +81,11 @@ struct AdaptOptions {
   /// on the extruded ones, and cavities never did better.
   double enough_share = 0.8;
   /// guaranteed: cavity pillowing (cavity_pillow.h): its starting vertex distance `range`,
-  /// 0 = no cavities. Its pillow, smooth and boundary are this struct's.
+  /// 0 = no cavities.
   CavityOptions cavity;
   /// guaranteed: the interfaces pillowed before the first move (interface_pillow.h): the
-  /// attempts per material `rounds` (0 = none) and the `carve` around a failing cell. Its
-  /// pillow, smooth and boundary are this struct's; keep_failing is the mend runs'.
+  /// attempts per material `rounds` (0 = none) and the `carve` around a failing cell;
+  /// keep_failing is the mend runs'.
   InterfacePillowOptions interface_pillow;
   /// guaranteed, first layer: runs that keep the layers with their failing cells for the
   /// moves and a local smoothing to mend (interface_pillow.h), each one leaving the layers

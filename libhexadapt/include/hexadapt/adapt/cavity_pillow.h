@@ -25,16 +25,13 @@
 
 #include "hexadapt/adapt/pillow.h"
 #include "hexadapt/adapt/smoothing.h"
+#include "hexadapt/adapt/step_settings.h"
 #include "hexadapt/mesh/fractions.h"
 
 namespace hexadapt {
 
 struct CavityOptions {
-  int range = 3;                         ///< vertex distance a cavity starts with
-  double threshold = default_threshold;  ///< S_q: every cavity cell must reach it to be published
-  PillowOptions pillow;                  ///< where the copies start
-  SmoothOptions smooth;                  ///< smoothing of the cavity's nodes
-  BoundaryOptions boundary;
+  int range = 3;  ///< vertex distance a cavity starts with
   /// Pillow and smooth each cavity in a copy of the whole mesh instead of in the cavity and
   /// the ring of cells around it: slow, the reference the local patches must reproduce.
   bool whole_mesh = false;
@@ -62,11 +59,12 @@ struct CavityResult {
   index_t n_cells_added = 0;
 };
 
-/// `seeds`: node ids of `mesh`; `size`: the size criterion on mesh's cells (off by default).
-/// Throws OptionError for range < 1.
+/// `seeds`: node ids of `mesh`; `size`: the size criterion on mesh's cells (off by default). A
+/// cavity is published when every cell of it and its layer reaches shared.threshold and the
+/// size criterion. Throws OptionError for range < 1.
 template <class M>
 CavityResult<M> cavity_pillow(const M& mesh, const CellMaterials& material, int n_materials,
                               const std::vector<NodeId>& seeds, const CavityOptions& options = {},
-                              const SizeCriterion& size = {});
+                              const StepSettings& shared = {}, const SizeCriterion& size = {});
 
 }  // namespace hexadapt

@@ -20,44 +20,43 @@
 // normals and the domain boundary, sliding_constraints()), a node still short of its target
 // then slides onto its surface instead: it takes the nearest ring of points of the surface
 // around the target (1/16, 1/8, 1/4, 3/8, 1/2 of its cells' local size away, or of its mean
-// edge length without local sizes) that holds a point keeping the criteria, the best point of that ring. A target that only a sliver or a flat
-// cell could reach is thus replaced by another point of the same interface. Nodes that share
-// no cell move in
-// parallel (independent_node_sets), in a fixed order: the result is the same whatever the
-// thread count.
+// edge length without local sizes) that holds a point keeping the criteria, the best point of that
+// ring. A target that only a sliver or a flat cell could reach is thus replaced by another point of
+// the same interface. Nodes that share no cell move in parallel (independent_node_sets), in a fixed
+// order: the result is the same whatever the thread count.
 #pragma once
 
 #include "hexadapt/adapt/size_criterion.h"
+#include "hexadapt/adapt/step_settings.h"
 #include "hexadapt/adapt/targets.h"
 #include "hexadapt/core/ids.h"
 
 namespace hexadapt {
 
 struct MoveOptions {
-  double threshold = default_threshold;  ///< S_q: the smallest scaled Jacobian a step may leave
-  int steps = 16;          ///< a node moves 1/steps of its way at a time
-  int max_rounds = 0;      ///< rounds over all nodes; 0 = 4 * steps
-  bool drag = true;        ///< a refused step is retried with free neighbours dragged along
+  int steps = 16;      ///< a node moves 1/steps of its way at a time
+  int max_rounds = 0;  ///< rounds over all nodes; 0 = 4 * steps
+  bool drag = true;    ///< a refused step is retried with free neighbours dragged along
 };
 
 struct MoveResult {
   IdVector<NodeId, char> reached;  ///< 1: the node got to its target (or had none)
   /// 1: the node got to its target or slid onto its surface (or had no target).
   IdVector<NodeId, char> on_surface;
-  index_t n_slid = 0;  ///< nodes that slid onto their surface away from their target
-  index_t n_moving = 0;            ///< nodes that had somewhere to go
-  index_t n_reached = 0;           ///< of those, how many got all the way
-  index_t n_drags = 0;             ///< steps taken with free nodes dragged along
+  index_t n_slid = 0;     ///< nodes that slid onto their surface away from their target
+  index_t n_moving = 0;   ///< nodes that had somewhere to go
+  index_t n_reached = 0;  ///< of those, how many got all the way
+  index_t n_drags = 0;    ///< steps taken with free nodes dragged along
   int rounds = 0;
   double dist = 0;  ///< sum over target nodes of |position - target| after
 };
 
-/// Moves the nodes with targets.has set, keeping the threshold and the size criterion (off by
-/// default); `surface`, when given, lets the nodes left short slide onto their target's
+/// Moves the nodes with targets.has set, keeping shared.threshold and the size criterion (off
+/// by default); `surface`, when given, lets the nodes left short slide onto their target's
 /// surface. Throws OptionError for steps < 1.
 template <class M>
 MoveResult controlled_move(M& mesh, const Targets& targets, const MoveOptions& options = {},
-                           const SizeCriterion& size = {},
+                           const StepSettings& shared = {}, const SizeCriterion& size = {},
                            const IdVector<NodeId, NodeConstraint>* surface = nullptr);
 
 /// Puts every node with a target on it, whatever happens to the cells (base algorithm).

@@ -29,18 +29,15 @@
 #include "hexadapt/adapt/pillow.h"
 #include "hexadapt/adapt/size_criterion.h"
 #include "hexadapt/adapt/smoothing.h"
+#include "hexadapt/adapt/step_settings.h"
 #include "hexadapt/mesh/fractions.h"
 
 namespace hexadapt {
 
 struct InterfacePillowOptions {
-  double threshold = default_threshold;  ///< S_q every cell keeps
-  int rounds = 4;                        ///< pillowing attempts per material
+  int rounds = 4;             ///< pillowing attempts per material
   int carve = 0;              ///< vertex distance of the cells left out around a failing cell
   bool keep_failing = false;  ///< keep a layer at its first pillowing, failing cells and all
-  PillowOptions pillow;
-  SmoothOptions smooth;
-  BoundaryOptions boundary;
 };
 
 /// What happened to one material.
@@ -63,13 +60,15 @@ struct InterfacePillowResult {
 };
 
 /// `fixed`: one flag per node of mesh, nodes that must not move (those with a target); `size`:
-/// the size criterion on mesh's cells; `left_out_around`: cells of mesh around which (within
-/// vertex distance `carve`) no region is pillowed.
+/// the size criterion on mesh's cells; a layer is kept when its cells reach shared.threshold
+/// and the size criterion; `left_out_around`: cells of mesh around which (within vertex
+/// distance `carve`) no region is pillowed.
 template <class M>
 InterfacePillowResult<M> pillow_interfaces(const M& mesh, const CellMaterials& material,
                                            int n_materials, const IdVector<NodeId, char>& fixed,
                                            const SizeCriterion& size,
                                            const InterfacePillowOptions& options = {},
+                                           const StepSettings& shared = {},
                                            const std::vector<CellId>& left_out_around = {});
 
 }  // namespace hexadapt
