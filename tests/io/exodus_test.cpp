@@ -348,9 +348,10 @@ TEST(Exodus, LyingSizesAreInputErrors) {
   std::filesystem::remove(bad);
 }
 
-// A file made with the Exodus API: one block of `type` elements with `conn`.
+// A file made with the Exodus API: one block of `type` elements with `conn`, and `info` as
+// its info records.
 std::string one_block(const std::string& name, int dim, const char* type, int per_element,
-                      const std::vector<int>& conn) {
+                      const std::vector<int>& conn, std::vector<std::string> info = {}) {
   const std::string path = temp_path(name);
   int cpu = 8, io = 8;
   const int id = ex_create(path.c_str(), EX_CLOBBER, &cpu, &io);
@@ -362,8 +363,23 @@ std::string one_block(const std::string& name, int dim, const char* type, int pe
   const double x[8] = {0, 1, 0, 1, 0, 1, 0, 1}, y[8] = {0, 0, 1, 1, 0, 0, 1, 1},
                z[8] = {0, 0, 0, 0, 1, 1, 1, 1};
   ex_put_coord(id, x, y, dim == 3 ? z : nullptr);
+  std::vector<char*> lines;
+  for (std::string& line : info) lines.push_back(line.data());
+  if (!info.empty()) ex_put_info(id, static_cast<int>(lines.size()), lines.data());
   ex_close(id);
   return path;
+}
+
+// Info records without the first line "hexadapt metadata" (another writer's, or ours before
+// it, which cut a long entry into lines of 80 characters) give no metadata.
+TEST(Exodus, InfoRecordsOfOtherWritersAreNotMetadata) {
+  const std::string record = "{\"fractions\":[],\"void\":\"\",\"value_tolerance\":0.0001,";
+  const std::string path =
+      one_block("old_info.exo", 2, "QUAD4", 4, {1, 2, 4, 3},
+                {"hexadapt_input: " + record.substr(0, 40), record.substr(40), "a: b"});
+  const MeshData r = read_mesh(path);
+  std::filesystem::remove(path);
+  for (const auto& [key, value] : r.metadata) EXPECT_EQ(key, "materials") << value;
 }
 
 // A file of another tool: blocks 20 and 10 (in that order), one named, no `material`

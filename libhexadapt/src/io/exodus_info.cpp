@@ -53,7 +53,7 @@ std::optional<std::size_t> key_end(const std::string& text) {
 // The Exodus library trims the spaces that end a line, so a line never ends with one: the
 // space goes to the start of the next line, or, ending the entry, is written \s.
 std::vector<std::string> info_lines(const Metadata& metadata, std::size_t width) {
-  std::vector<std::string> lines;
+  std::vector<std::string> lines{info_marker};
   for (const auto& [key, value] : metadata) {
     const std::string text = escaped(key, true) + ": " + escaped(value, false);
     std::string line;
@@ -85,22 +85,20 @@ std::vector<std::string> info_lines(const Metadata& metadata, std::size_t width)
 }
 
 Metadata metadata_of_info(const std::vector<std::string>& lines) {
+  if (lines.empty() || lines.front() != info_marker) return {};
   std::vector<std::string> entries;
-  for (const std::string& line : lines) {
-    if (!line.empty() && line[0] == '+' && !entries.empty())
-      entries.back() += line.substr(1);
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    if (!lines[i].empty() && lines[i][0] == '+' && !entries.empty())
+      entries.back() += lines[i].substr(1);
     else
-      entries.push_back(line);
+      entries.push_back(lines[i]);
   }
   Metadata out;
-  for (const std::string& text : entries) {
-    const std::optional<std::size_t> end = key_end(text);
-    if (end)  // the value after ": ", or after ":\s" (an empty value)
+  for (const std::string& text : entries)  // a line of no entry (edited by hand) is left out
+    if (const std::optional<std::size_t> end = key_end(text))
+      // the value after ": ", or after ":\s" (an empty value)
       out.emplace_back(unescaped(text.substr(0, *end)),
                        unescaped(text.substr(*end + (text[*end + 1] == ' ' ? 2 : 3))));
-    else
-      out.emplace_back("exodus_info", text);
-  }
   return out;
 }
 

@@ -11,9 +11,9 @@
 // `zmax`), by the dominant direction from the cell's centre to the face's centre; per pair
 // of touching materials a and b, side sets `a_b` (the faces of a's cells against b) and
 // `b_a`, and one node set `a_b` (a before b in the material order). QA record: tool and
-// version (date and time left empty: the same mesh gives the same bytes); info records: the
-// metadata, each entry "key: value" in lines of 80 characters, its further lines starting with
-// '+' (a backslash and a line break in it written \\ and \n). Names longer than Exodus'
+// version (date and time left empty: the same mesh gives the same bytes); info records: a
+// line "hexadapt metadata", then each metadata entry "key: value" in lines of 80 characters,
+// its further lines starting with '+' (a backslash and a line break in it written \\ and \n). Names longer than Exodus'
 // default of 32 characters raise the file's name length (up to 255).
 //
 // Reading: QUAD4 (num_dim 2) or HEX8 (num_dim 3) element blocks; the cells in block order;
@@ -22,8 +22,9 @@
 // P_z in a row: the 3-component array P), so fractions stored as element variables (as Sculpt
 // reads them) are found by --fractions or the vf_ convention. Without a `material` element
 // variable, the block of each cell becomes the `material` cell array (block order) and the
-// block names the `materials` metadata entry. The info records become the metadata again
-// (a line of another writer that is no "key: value" entry: the entry `exodus_info`).
+// block names the `materials` metadata entry. Info records that start with the line
+// "hexadapt metadata" become the metadata again; others (other writers', and ours before that
+// line, which cut entries at 80 characters) are left as they are.
 #pragma once
 
 #include <string>
