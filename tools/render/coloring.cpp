@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "hexadapt/core/error.h"
+#include "hexadapt/io/assigned_grid_file.h"
 #include "hexadapt/measure/quality_report.h"
 
 namespace hexadapt::render {
@@ -15,13 +16,10 @@ Rgb hex_color(unsigned v) {
           static_cast<double>((v >> 8) & 0xffu) / 255.0, static_cast<double>(v & 0xffu) / 255.0};
 }
 
-std::vector<std::string> split_commas(const std::string& s) {
+std::vector<std::string> split_lines(const std::string& s) {
   std::vector<std::string> out;
   std::stringstream in(s);
-  std::string item;
-  // A String field-data array is read as one line per string; the metadata entry uses commas.
-  const char separator = s.find('\n') != std::string::npos ? '\n' : ',';
-  while (std::getline(in, item, separator)) out.push_back(item);
+  for (std::string item; std::getline(in, item, '\n');) out.push_back(item);
   return out;
 }
 
@@ -116,7 +114,8 @@ CellColors blended(const io::MeshData& data) {
     for (std::size_t m = 0; m < arrays.size(); ++m) {
       const double f = std::clamp(arrays[m]->values[i], 0.0, 1.0);
       const Rgb p = c.legend[m].color;
-      for (int k = 0; k < 3; ++k) mix[static_cast<std::size_t>(k)] += f * p[static_cast<std::size_t>(k)];
+      for (int k = 0; k < 3; ++k)
+        mix[static_cast<std::size_t>(k)] += f * p[static_cast<std::size_t>(k)];
       total += f;
     }
     for (double& x : mix) x = total > 0 ? x / total : 1.0;
@@ -139,8 +138,8 @@ CellColors categorical(const io::MeshData& data, const io::DataArray& material) 
   }
   for (int m = 0; m <= largest; ++m) {
     const auto k = static_cast<std::size_t>(m);
-    c.legend.push_back({k < names.size() ? names[k] : "material " + std::to_string(m),
-                        palette_color(m)});
+    c.legend.push_back(
+        {k < names.size() ? names[k] : "material " + std::to_string(m), palette_color(m)});
   }
   if (any_unassigned) c.legend.push_back({"none", unassigned});
   return c;
@@ -172,9 +171,12 @@ Rgb colormap(double t) {
 }
 
 std::vector<std::string> material_names(const io::MeshData& data) {
+  // A String field-data array is read as one line per string; the metadata entries are
+  // io::join_material_names'.
   for (const char* key : {"material_names", "hexadapt_materials", "materials"})
     for (const auto& [k, v] : data.metadata)
-      if (k == key && !v.empty()) return split_commas(v);
+      if (k == key && !v.empty())
+        return k == "material_names" ? split_lines(v) : io::split_material_names(v);
   std::vector<std::string> names;
   for (const auto& a : data.cell_data)
     if (a.name.rfind("vf_", 0) == 0) names.push_back(a.name.substr(3));
@@ -193,8 +195,8 @@ CellColors color_cells(const io::MeshData& data, const std::string& field,
   if (field == "quality") return quality_colors(data, options);
   const io::DataArray* a = data.find_cell_array(field);
   if (!a)
-    throw OptionError("--color: no cell array '" + field + "' (available: " +
-                      available_arrays(data) + ")");
+    throw OptionError("--color: no cell array '" + field +
+                      "' (available: " + available_arrays(data) + ")");
   if (field == "material" && a->n_components == 1) return categorical(data, *a);
   return field_colors(*a, n, options);
 }
