@@ -13,8 +13,9 @@
 // `b_a`, and one node set `a_b` (a before b in the material order). QA record: tool and
 // version (date and time left empty: the same mesh gives the same bytes); info records: a
 // line "hexadapt metadata", then each metadata entry "key: value" in lines of 80 characters,
-// its further lines starting with '+' (a backslash and a line break in it written \\ and \n). Names longer than Exodus'
-// default of 32 characters raise the file's name length (up to 255).
+// its further lines starting with '+' (a backslash and a line break in it written \\ and \n).
+// Names longer than Exodus' default of 32 characters raise the file's name length (up to
+// 255).
 //
 // Reading: QUAD4 (num_dim 2) or HEX8 (num_dim 3) element blocks; the cells in block order;
 // element variables at the chosen time step (ReadOptions::step or ::time, needed when the
