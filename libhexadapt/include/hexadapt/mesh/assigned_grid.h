@@ -16,7 +16,6 @@ struct AssignedGrid {
   Fractions fractions;     ///< valid and summing to 1 in each cell; the material names
   CellMaterials material;  ///< one per cell; empty for a grid not assigned yet
   const std::vector<std::string>& names() const { return fractions.names(); }
-  int n_materials() const { return fractions.n_materials(); }
   bool assigned() const { return !material.empty(); }
 };
 
