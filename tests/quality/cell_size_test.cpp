@@ -1,5 +1,6 @@
 // Known answers for the size metrics: edge lengths, edge ratio and time-step length of
-// boxes, a collapsed cell and an inverted one.
+// boxes, a collapsed cell and an inverted one; the one-pass and bounded forms the
+// adaptation's score uses against the whole computations.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -172,6 +173,51 @@ TEST(CellSize, NoMoveOfOneCornerRaisesACellAboveItsBound) {
   flat[7] = flat[6];
   EXPECT_EQ(hex_bound_moving(flat, 0).shortest_edge, 0);
   EXPECT_EQ(hex_bound_moving(flat, 0).scaled_jacobian, 1);  // no direction there: no bound
+}
+
+// The figures a score needs down to a bound (hex_shape_and_size with min_edge and
+// stop_below): bit for bit the whole computation where they are at or above their bounds,
+// below the bound where the whole one is. The hexes include inversions, a collapsed edge and
+// a NaN.
+void expect_as_whole(const HexShapeAndSize& got, const std::array<Vec3, 8>& p, double min_edge,
+                     double stop_below) {
+  const HexShapeAndSize whole = hex_shape_and_size(p);
+  EXPECT_EQ(got.edges.min, whole.edges.min);
+  EXPECT_EQ(got.edges.max, whole.edges.max);
+  EXPECT_EQ(got.edges.mean, whole.edges.mean);
+  if (whole.edges.min < min_edge) {
+    EXPECT_EQ(got.scaled_jacobian, -1);
+  } else if (whole.scaled_jacobian >= stop_below) {
+    EXPECT_EQ(got.scaled_jacobian, whole.scaled_jacobian);
+  } else {
+    EXPECT_LT(got.scaled_jacobian, stop_below);
+  }
+}
+
+TEST(CellSize, ScoresDownToABoundAreTheWholeComputationAboveIt) {
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> jitter(-0.4, 0.4), step(-1.2, 1.2), bound(-1.2, 1.0);
+  int stopped = 0, exact = 0;
+  for (int k = 0; k < 80; ++k) {
+    std::array<Vec3, 8> p = box(1, 2, 0.5);
+    for (Vec3& x : p) x += Vec3(jitter(rng), jitter(rng), jitter(rng));
+    for (std::size_t moving = 0; moving < 8; ++moving) {
+      for (int t = 0; t < 12; ++t) {
+        std::array<Vec3, 8> q = p;
+        q[moving] += Vec3(step(rng), step(rng), step(rng));
+        if (t == 10) q[moving] = p[moving ^ 1u];  // a collapsed edge
+        if (t == 11) q[moving].y() = std::nan("");
+        const double min_edge = t % 3 == 0 ? 0.0 : 0.3, stop_below = bound(rng);
+        expect_as_whole(hex_shape_and_size(q, min_edge, stop_below), q, min_edge, stop_below);
+        const double whole = hex_scaled_jacobian(q);
+        stopped +=
+            whole < stop_below && hex_shape_and_size(q, 0, stop_below).scaled_jacobian != whole;
+        exact += whole >= stop_below;
+      }
+    }
+  }
+  EXPECT_GT(stopped, 100);  // the bound does stop computations early
+  EXPECT_GT(exact, 1000);
 }
 
 }  // namespace

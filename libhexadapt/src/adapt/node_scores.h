@@ -66,7 +66,7 @@ class NodeScores {
   double trial(double stop_below = -std::numeric_limits<double>::infinity()) {
     double s = 1.0;
     for (Entry& e : cells_) {
-      e.trial = cell_score(mesh_, e.cell, size_);
+      e.trial = cell_score(mesh_, e.cell, size_, stop_below);
       s = std::min(s, e.trial);
       if (s < stop_below) break;
     }

@@ -40,8 +40,16 @@ EdgeLengths hex_edge_lengths(const std::array<Vec3, 8>& p) {
 }
 
 HexShapeAndSize hex_shape_and_size(const std::array<Vec3, 8>& p) {
+  return hex_shape_and_size(p, 0.0, -std::numeric_limits<double>::infinity());
+}
+
+HexShapeAndSize hex_shape_and_size(const std::array<Vec3, 8>& p, double min_edge,
+                                   double stop_below) {
   const quality_detail::HexEdges e = quality_detail::hex_edges(p);
-  return {quality_detail::hex_scaled_jacobian(p, e), edge_lengths(e.length)};
+  HexShapeAndSize out{-1.0, edge_lengths(e.length)};
+  if (!(out.edges.min < min_edge))
+    out.scaled_jacobian = quality_detail::hex_scaled_jacobian(p, e, stop_below);
+  return out;
 }
 
 ShapeAndSizeBound hex_bound_moving(const std::array<Vec3, 8>& p, std::size_t moving) {

@@ -60,8 +60,9 @@ inline std::size_t hex_edge_index(std::size_t v, int axis) {
   return 8 + (v & 3u);
 }
 
-/// hex_scaled_jacobian(p) from p's edges (scaled_jacobian.cpp).
-double hex_scaled_jacobian(const std::array<Vec3, 8>& p, const HexEdges& e);
+/// hex_scaled_jacobian(p) from p's edges (scaled_jacobian.cpp), exact when it is at least
+/// `stop_below`; otherwise some value below stop_below (it stops at the first corner below).
+double hex_scaled_jacobian(const std::array<Vec3, 8>& p, const HexEdges& e, double stop_below);
 
 /// The largest scaled Jacobian the hex can have while only its corner `moving` moves: the
 /// smallest Jacobian of the four corners whose frames do not hold it, computed as

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "frames.h"
 
@@ -49,12 +50,9 @@ double unit_cross(const Eigen::Vector2d& a, double la, const Eigen::Vector2d& b,
 }  // namespace
 
 double quality_detail::hex_scaled_jacobian(const std::array<Vec3, 8>& p,
-                                           const quality_detail::HexEdges& e) {
+                                           const quality_detail::HexEdges& e, double stop_below) {
   const double scale = e.longest;
   if (!(scale > 0) || !std::isfinite(scale)) return -1.0;
-  const auto axes = quality_detail::hex_principal_axes(p);
-  double worst;
-  if (!scaled_det(axes[0], axes[1], axes[2], 4 * scale, worst)) return -1.0;
   // Every edge is in some corner frame, so one collapsed edge makes the cell degenerate.
   const double tiny = quality_detail::degenerate_length * scale;
   std::array<Vec3, 12> unit;
@@ -62,16 +60,25 @@ double quality_detail::hex_scaled_jacobian(const std::array<Vec3, 8>& p,
     if (!(e.length[k] > tiny)) return -1.0;  // also catches NaN
     unit[k] = e.vec[k] / e.length[k];
   }
+  // The corners before the centre: a corner is mostly the worst, so a cell below stop_below
+  // is mostly known after a few corners. Clamping keeps an early value below stop_below, or
+  // makes it -1, which the whole minimum then is too.
+  double worst = 1.0;
   for (std::size_t v = 0; v < 8; ++v) {
     const double j = corner_jacobian(unit, v);
     if (!std::isfinite(j)) return -1.0;
     worst = std::min(worst, j);
+    if (worst < stop_below) return std::clamp(worst, -1.0, 1.0);
   }
-  return std::clamp(worst, -1.0, 1.0);
+  const auto axes = quality_detail::hex_principal_axes(p);
+  double centre;
+  if (!scaled_det(axes[0], axes[1], axes[2], 4 * scale, centre)) return -1.0;
+  return std::clamp(std::min(worst, centre), -1.0, 1.0);
 }
 
 double hex_scaled_jacobian(const std::array<Vec3, 8>& p) {
-  return quality_detail::hex_scaled_jacobian(p, quality_detail::hex_edges(p));
+  return quality_detail::hex_scaled_jacobian(p, quality_detail::hex_edges(p),
+                                           -std::numeric_limits<double>::infinity());
 }
 
 double quality_detail::hex_scaled_jacobian_bound(const quality_detail::HexEdges& e,

@@ -85,14 +85,18 @@ inline double score_of(double scaled_jacobian, double shortest_edge, CellId c,
   return r < 1 ? -2.0 + r : scaled_jacobian;
 }
 
-/// The scaled Jacobian, or -2 + size_ratio in [-2, -1) when the size criterion fails.
+/// The scaled Jacobian, or -2 + size_ratio in [-2, -1) when the size criterion fails. Exact
+/// when at least `stop_below`; below it, a hex's score may be any value below it (its
+/// Jacobian is then computed only as far as needed).
 template <class M>
-double cell_score(const M& mesh, CellId c, const SizeCriterion& size) {
-  if (!size.on()) return mesh.cell_quality(c);
+double cell_score(const M& mesh, CellId c, const SizeCriterion& size,
+                  double stop_below = -std::numeric_limits<double>::infinity()) {
   if constexpr (M::dim == 3) {  // the hex's edges once for both criteria
-    const HexShapeAndSize m = hex_shape_and_size(mesh.cell_points(c));
+    const HexShapeAndSize m =
+        hex_shape_and_size(mesh.cell_points(c), size.min_length(c), stop_below);
     return score_of(m.scaled_jacobian, m.edges.min, c, size);
   } else {
+    if (!size.on()) return mesh.cell_quality(c);
     const double r = size_ratio(mesh, c, size);
     return r < 1 ? -2.0 + r : mesh.cell_quality(c);
   }
@@ -120,7 +124,7 @@ double min_score_around(const M& mesh, NodeId n, const SizeCriterion& size,
                         double stop_below = -std::numeric_limits<double>::infinity()) {
   double s = 1.0;
   for (CellId c : mesh.node_cells(n)) {
-    s = std::min(s, cell_score(mesh, c, size));
+    s = std::min(s, cell_score(mesh, c, size, stop_below));
     if (s < stop_below) break;
   }
   return s;

@@ -35,6 +35,12 @@ struct HexShapeAndSize {
   EdgeLengths edges;
 };
 HexShapeAndSize hex_shape_and_size(const std::array<Vec3, 8>& p);
+/// The same where only two questions matter, whether the shortest edge reaches `min_edge` and
+/// whether the scaled Jacobian reaches `stop_below`: the Jacobian is not computed (left at -1)
+/// when the shortest edge is below min_edge, and is exact when at least stop_below, else some
+/// value below it (the corners are not all computed).
+HexShapeAndSize hex_shape_and_size(const std::array<Vec3, 8>& p, double min_edge,
+                                   double stop_below);
 
 /// What a cell can still reach while only its corner `moving` (binary order for a hex,
 /// counter-clockwise for a quad) moves: its scaled Jacobian stays at or below
