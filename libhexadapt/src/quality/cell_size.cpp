@@ -39,15 +39,18 @@ EdgeLengths hex_edge_lengths(const std::array<Vec3, 8>& p) {
   return edge_lengths(quality_detail::hex_edges(p).length);
 }
 
-HexShapeAndSize hex_shape_and_size(const std::array<Vec3, 8>& p) {
-  return hex_shape_and_size(p, 0.0, -std::numeric_limits<double>::infinity());
-}
-
 HexShapeAndSize hex_shape_and_size(const std::array<Vec3, 8>& p, double min_edge,
                                    double stop_below) {
   const quality_detail::HexEdges e = quality_detail::hex_edges(p);
-  HexShapeAndSize out{-1.0, edge_lengths(e.length)};
-  if (!(out.edges.min < min_edge))
+  // edge_lengths(e.length).min without the mean, and with the longest hex_edges found.
+  HexShapeAndSize out;
+  out.shortest_edge = std::numeric_limits<double>::infinity();
+  for (double len : e.length) {
+    if (!std::isfinite(len)) return {-1.0, 0.0};
+    out.shortest_edge = std::min(out.shortest_edge, len);
+  }
+  if (!(out.shortest_edge > degenerate_share * e.longest)) out.shortest_edge = 0;
+  if (!(out.shortest_edge < min_edge))
     out.scaled_jacobian = quality_detail::hex_scaled_jacobian(p, e, stop_below);
   return out;
 }

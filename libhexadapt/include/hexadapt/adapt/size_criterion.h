@@ -94,7 +94,7 @@ double cell_score(const M& mesh, CellId c, const SizeCriterion& size,
   if constexpr (M::dim == 3) {  // the hex's edges once for both criteria
     const HexShapeAndSize m =
         hex_shape_and_size(mesh.cell_points(c), size.min_length(c), stop_below);
-    return score_of(m.scaled_jacobian, m.edges.min, c, size);
+    return score_of(m.scaled_jacobian, m.shortest_edge, c, size);
   } else {
     if (!size.on()) return mesh.cell_quality(c);
     const double r = size_ratio(mesh, c, size);

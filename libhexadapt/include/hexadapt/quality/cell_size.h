@@ -14,6 +14,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 
 #include "hexadapt/core/geometry.h"
 
@@ -28,19 +29,19 @@ struct EdgeLengths {
 EdgeLengths hex_edge_lengths(const std::array<Vec3, 8>& p);
 EdgeLengths quad_edge_lengths(const std::array<Vec3, 4>& p);
 
-/// A hex's scaled Jacobian (scaled_jacobian.h) and edge lengths from one pass over its
-/// edges: the two apart cost twice as much.
+/// A hex's scaled Jacobian (scaled_jacobian.h) and shortest edge (hex_edge_lengths(p).min)
+/// from one pass over its edges: the two apart cost twice as much.
 struct HexShapeAndSize {
   double scaled_jacobian = -1;
-  EdgeLengths edges;
+  double shortest_edge = 0;
 };
-HexShapeAndSize hex_shape_and_size(const std::array<Vec3, 8>& p);
-/// The same where only two questions matter, whether the shortest edge reaches `min_edge` and
-/// whether the scaled Jacobian reaches `stop_below`: the Jacobian is not computed (left at -1)
-/// when the shortest edge is below min_edge, and is exact when at least stop_below, else some
+/// Where only two questions matter, whether the shortest edge reaches `min_edge` and whether
+/// the scaled Jacobian reaches `stop_below`: the Jacobian is not computed (left at -1) when
+/// the shortest edge is below min_edge, and is exact when at least stop_below, else some
 /// value below it (the corners are not all computed).
-HexShapeAndSize hex_shape_and_size(const std::array<Vec3, 8>& p, double min_edge,
-                                   double stop_below);
+HexShapeAndSize hex_shape_and_size(
+    const std::array<Vec3, 8>& p, double min_edge = 0,
+    double stop_below = -std::numeric_limits<double>::infinity());
 
 /// What a cell can still reach while only its corner `moving` (binary order for a hex,
 /// counter-clockwise for a quad) moves: its scaled Jacobian stays at or below
