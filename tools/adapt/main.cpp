@@ -274,20 +274,18 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   std::vector<CellFailure> worst;
   bool stopped = false;
   std::visit(
-      [&](const auto& mesh) {
-        const auto r = adapt(mesh, grid.fractions, grid.material, options,
-                             args.model.empty() ? nullptr : &model.model);
+      [&](const auto& r) {
         bad_input = r.bad_input_cells;
         worst = r.failures;
         stopped = r.stopped_bad_input;
         for (const auto& s : r.steps) times.emplace_back(s.name, s.seconds);
-        report["result"] = result_json(r, mesh.n_cells(), options.threshold);
+        report["result"] = result_json(r, grid.fractions.n_cells(), options.threshold);
         below = r.n_below_threshold + r.n_below_min_edge;
         log_steps(r, options.near_interface);
         if (!r.stopped_bad_input) warn_blocked(r, options.near_interface);
         out = adapt_mesh_data(r, grid.names());
       },
-      grid.mesh);
+      adapt(grid, options, args.model.empty() ? nullptr : &model.model));
   clock.restart();
   if (stopped) return refuse_bad_input(common, report, times, bad_input, worst, options.threshold);
   for (auto& kv : cli::provenance(app)) out.metadata.push_back(kv);

@@ -206,8 +206,7 @@ int run_assign(const CLI::App& app, Options& o) {
   const Fractions& fractions = grid.fractions;
   if (o.in.fractions.labels.empty()) log_info(fractions_message(fr));
   times.emplace_back("fractions", t.seconds());
-  const assign::AssignResult r = std::visit(
-      [&](const auto& m) { return assign::assign_materials(m, fractions, o.assign); }, grid.mesh);
+  const assign::AssignResult r = assign::assign_materials(grid, o.assign);
   for (const auto& p : r.times) times.push_back(p);
   log_info("non-manifold nodes at first: " + std::to_string(r.correction.non_manifold_initial) +
            ", cells changed: " + std::to_string(r.correction.cells_changed));

@@ -145,4 +145,15 @@ template AdaptResult<HexMesh> adapt<HexMesh>(const HexMesh&, const Fractions&,
                                              const IdVector<CellId, int>&, const AdaptOptions&,
                                              const reconstruct::InterfaceModel*);
 
+AnyAdaptResult adapt(const AssignedGrid& grid, const AdaptOptions& options,
+                     const reconstruct::InterfaceModel* model) {
+  if (!grid.assigned())
+    throw InputError("", "", "the grid to adapt has no material per cell (assign it first)");
+  return std::visit(
+      [&](const auto& m) -> AnyAdaptResult {
+        return adapt(m, grid.fractions, grid.material, options, model);
+      },
+      grid.mesh);
+}
+
 }  // namespace hexadapt

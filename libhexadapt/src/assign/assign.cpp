@@ -1,5 +1,7 @@
 #include "hexadapt/assign/assign.h"
 
+#include <variant>
+
 #include "hexadapt/mesh/cell_complex.h"
 #include "hexadapt/mesh/unit_frame.h"
 
@@ -42,5 +44,10 @@ AssignResult assign_materials(const M& mesh, const Fractions& fractions,
 
 template AssignResult assign_materials(const QuadMesh&, const Fractions&, const AssignOptions&);
 template AssignResult assign_materials(const HexMesh&, const Fractions&, const AssignOptions&);
+
+AssignResult assign_materials(const AssignedGrid& grid, const AssignOptions& options) {
+  return std::visit([&](const auto& m) { return assign_materials(m, grid.fractions, options); },
+                    grid.mesh);
+}
 
 }  // namespace hexadapt::assign

@@ -133,4 +133,12 @@ template Reconstruction reconstruct(const QuadMesh&, const Fractions&, const Cel
 template Reconstruction reconstruct(const HexMesh&, const Fractions&, const CellMaterials&,
                                     const ReconstructOptions&);
 
+Reconstruction reconstruct(const AssignedGrid& grid, const ReconstructOptions& options) {
+  if (!grid.assigned())
+    throw InputError("", "", "the grid to reconstruct has no material per cell (assign it first)");
+  return std::visit(
+      [&](const auto& m) { return reconstruct(m, grid.fractions, grid.material, options); },
+      grid.mesh);
+}
+
 }  // namespace hexadapt::reconstruct

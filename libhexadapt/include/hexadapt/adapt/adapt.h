@@ -22,6 +22,7 @@
 #pragma once
 
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "hexadapt/adapt/cavity_pillow.h"
@@ -35,6 +36,7 @@
 #include "hexadapt/adapt/target_correction.h"
 #include "hexadapt/adapt/targets.h"
 #include "hexadapt/core/log.h"
+#include "hexadapt/mesh/assigned_grid.h"
 #include "hexadapt/mesh/fractions.h"
 
 namespace hexadapt {
@@ -177,6 +179,13 @@ struct AdaptResult {
 template <class M>
 AdaptResult<M> adapt(const M& grid, const Fractions& fractions, const CellMaterials& material,
                      const AdaptOptions& options = {},
+                     const reconstruct::InterfaceModel* model = nullptr);
+
+/// The result of either dimension.
+using AnyAdaptResult = std::variant<AdaptResult<QuadMesh>, AdaptResult<HexMesh>>;
+
+/// The same on an assigned grid (io::to_assigned_grid); InputError when it has no material.
+AnyAdaptResult adapt(const AssignedGrid& grid, const AdaptOptions& options = {},
                      const reconstruct::InterfaceModel* model = nullptr);
 
 }  // namespace hexadapt

@@ -11,6 +11,7 @@
 #include "hexadapt/assign/islands.h"
 #include "hexadapt/assign/keep_materials.h"
 #include "hexadapt/assign/material_balance.h"
+#include "hexadapt/mesh/assigned_grid.h"
 #include "hexadapt/mesh/fractions.h"
 
 namespace hexadapt::assign {
@@ -41,5 +42,8 @@ struct AssignResult {
 template <class M>
 AssignResult assign_materials(const M& mesh, const Fractions& fractions,
                               const AssignOptions& options = {});
+/// The same on a grid read by io::to_assigned_grid (its material, if any, is not read):
+/// put the result's correction.labels in grid.material to pass the grid on.
+AssignResult assign_materials(const AssignedGrid& grid, const AssignOptions& options = {});
 
 }  // namespace hexadapt::assign

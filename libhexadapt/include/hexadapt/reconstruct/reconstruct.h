@@ -9,6 +9,7 @@
 
 #include "hexadapt/core/log.h"
 #include "hexadapt/core/timer.h"
+#include "hexadapt/mesh/assigned_grid.h"
 #include "hexadapt/mesh/fractions.h"
 #include "hexadapt/reconstruct/annealing.h"
 #include "hexadapt/reconstruct/graph_cut.h"
@@ -63,5 +64,7 @@ struct Reconstruction {
 template <class M>
 Reconstruction reconstruct(const M& mesh, const Fractions& fractions,
                            const CellMaterials& assignment, const ReconstructOptions& options);
+/// The same on an assigned grid (io::to_assigned_grid); InputError when it has no material.
+Reconstruction reconstruct(const AssignedGrid& grid, const ReconstructOptions& options);
 
 }  // namespace hexadapt::reconstruct
