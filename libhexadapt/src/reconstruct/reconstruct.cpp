@@ -1,5 +1,7 @@
 #include "hexadapt/reconstruct/reconstruct.h"
 
+#include <variant>
+
 #include "hexadapt/core/error.h"
 #include "hexadapt/mesh/cell_complex.h"
 #include "hexadapt/mesh/unit_frame.h"
