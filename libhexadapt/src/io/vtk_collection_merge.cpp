@@ -8,27 +8,13 @@
 #include <limits>
 
 #include "hexadapt/core/error.h"
+#include "hexadapt/core/geometry.h"
 #include "hexadapt/core/log.h"
 #include "vtk_collection.h"
 
 namespace hexadapt::io::detail {
 
 namespace {
-
-// Cell edges in kernel order: quads counter-clockwise, hexes binary (v = i + 2j + 4k).
-constexpr std::array<std::array<int, 2>, 4> quad_edges{{{0, 1}, {1, 2}, {2, 3}, {3, 0}}};
-constexpr std::array<std::array<int, 2>, 12> hex_edges{{{0, 1},
-                                                        {2, 3},
-                                                        {4, 5},
-                                                        {6, 7},
-                                                        {0, 2},
-                                                        {1, 3},
-                                                        {4, 6},
-                                                        {5, 7},
-                                                        {0, 4},
-                                                        {1, 5},
-                                                        {2, 6},
-                                                        {3, 7}}};
 
 // VTK's vtkGhostType bit of a cell that another piece owns.
 constexpr int duplicate_cell_bit = 1;
@@ -91,10 +77,10 @@ std::vector<double> shortest_edges(const MeshData& d) {
   };
   for (std::size_t c = 0; c < d.cells.size() / npc; ++c) {
     const NodeId* n = d.cells.data() + c * npc;
-    if (npc == 4)
-      for (const auto& e : quad_edges) visit(n[e[0]], n[e[1]]);
+    if (npc == 4)  // cells in kernel order: a quad's faces are its edges
+      for (const auto& e : ref_quad::face_nodes) visit(n[e[0]], n[e[1]]);
     else
-      for (const auto& e : hex_edges) visit(n[e[0]], n[e[1]]);
+      for (const auto& e : ref_hex::edges) visit(n[e[0]], n[e[1]]);
   }
   for (double& x : h)
     if (!std::isfinite(x)) x = 0;
