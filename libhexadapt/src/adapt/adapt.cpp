@@ -147,8 +147,7 @@ template AdaptResult<HexMesh> adapt<HexMesh>(const HexMesh&, const Fractions&,
 
 AnyAdaptResult adapt(const AssignedGrid& grid, const AdaptOptions& options,
                      const reconstruct::InterfaceModel* model) {
-  if (!grid.assigned())
-    throw InputError("", "", "the grid to adapt has no material per cell (assign it first)");
+  grid.require_assigned("adapt");
   return std::visit(
       [&](const auto& m) -> AnyAdaptResult {
         return adapt(m, grid.fractions, grid.material, options, model);

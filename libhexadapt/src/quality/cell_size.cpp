@@ -14,6 +14,11 @@ namespace {
 // Below this share of the longest edge an edge counts as collapsed (as in scaled_jacobian).
 constexpr double degenerate_share = 1e-13;
 
+// The shortest edge as reported: 0 when it is collapsed next to the longest.
+double reported_shortest(double shortest, double longest) {
+  return shortest > degenerate_share * longest ? shortest : 0.0;
+}
+
 template <std::size_t E>
 EdgeLengths edge_lengths(const std::array<double, E>& lengths) {
   EdgeLengths out;
@@ -25,7 +30,7 @@ EdgeLengths edge_lengths(const std::array<double, E>& lengths) {
     out.mean += len;
   }
   out.mean /= static_cast<double>(E);
-  if (!(out.min > degenerate_share * out.max)) out.min = 0;
+  out.min = reported_shortest(out.min, out.max);
   return out;
 }
 
@@ -49,7 +54,7 @@ HexShapeAndSize hex_shape_and_size(const std::array<Vec3, 8>& p, double min_edge
     if (!std::isfinite(len)) return {-1.0, 0.0};
     out.shortest_edge = std::min(out.shortest_edge, len);
   }
-  if (!(out.shortest_edge > degenerate_share * e.longest)) out.shortest_edge = 0;
+  out.shortest_edge = reported_shortest(out.shortest_edge, e.longest);
   if (!(out.shortest_edge < min_edge))
     out.scaled_jacobian = quality_detail::hex_scaled_jacobian(p, e, stop_below);
   return out;

@@ -136,8 +136,7 @@ template Reconstruction reconstruct(const HexMesh&, const Fractions&, const Cell
                                     const ReconstructOptions&);
 
 Reconstruction reconstruct(const AssignedGrid& grid, const ReconstructOptions& options) {
-  if (!grid.assigned())
-    throw InputError("", "", "the grid to reconstruct has no material per cell (assign it first)");
+  grid.require_assigned("reconstruct");
   return std::visit(
       [&](const auto& m) { return reconstruct(m, grid.fractions, grid.material, options); },
       grid.mesh);

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "hexadapt/core/error.h"
 #include "hexadapt/mesh/cell_complex.h"
 #include "hexadapt/mesh/fractions.h"
 
@@ -17,6 +18,12 @@ struct AssignedGrid {
   CellMaterials material;  ///< one per cell; empty for a grid not assigned yet
   const std::vector<std::string>& names() const { return fractions.names(); }
   bool assigned() const { return !material.empty(); }
+  /// Throws InputError naming `stage` when the grid has no material per cell.
+  void require_assigned(const std::string& stage) const {
+    if (!assigned())
+      throw InputError("", "",
+                       "the grid to " + stage + " has no material per cell (assign it first)");
+  }
 };
 
 }  // namespace hexadapt
