@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <array>
+#include <utility>
+#include <vector>
 
 #include "adapt/adapt_cases.h"
 #include "adapt/generated_case.h"
@@ -13,17 +15,22 @@
 namespace hexadapt {
 namespace {
 
-// The asteroid's staircase at 20^3: pillowed on the unmoved grid, some layer cells fail at its
-// concave corners.
+// A 3D generated case's staircase, pillowed on the unmoved grid.
+template <class F>
+void on_case(const test::GeneratedCase& c, F&& check) {
+  test::with_generated_case(
+      c, [&](const auto& grid, const Fractions& f, const IdVector<CellId, int>& m) {
+        if constexpr (std::decay_t<decltype(grid)>::dim == 3) {
+          const Targets t = compute_targets(grid, f, m, boundary_constraints(grid));
+          check(grid, m, f.n_materials(), t.has, size_criterion(grid, 0.1));
+        }
+      });
+}
+
+// The asteroid at 20^3: some layer cells fail at its staircase's concave corners.
 template <class F>
 void on_asteroid(F&& check) {
-  test::with_generated_case({"asteroid", {20, 20, 20}}, [&](const auto& grid, const Fractions& f,
-                                                            const IdVector<CellId, int>& m) {
-    if constexpr (std::decay_t<decltype(grid)>::dim == 3) {
-      const Targets t = compute_targets(grid, f, m, boundary_constraints(grid));
-      check(grid, m, f.n_materials(), t.has, size_criterion(grid, 0.1));
-    }
-  });
+  on_case({"asteroid", {20, 20, 20}}, std::forward<F>(check));
 }
 
 index_t failing_cells(const HexMesh& mesh, const SizeCriterion& size, double threshold) {
@@ -65,6 +72,27 @@ TEST(InterfacePillow, CarvesWhereCellsFailOrKeepsThemForTheMovesToMend) {
         EXPECT_EQ(kept.mesh.point(v), grid.point(v));
       }
   });
+}
+
+// The drop touching the pool (balldrop at 16^3, t = 1): the air, pillowed first, keeps
+// failing cells. Each material counts those of its own layer and ring, not those of a layer
+// kept failing before it (the pool and the drop used to report the air's).
+TEST(InterfacePillow, EachMaterialCountsItsOwnFailingCells) {
+  on_case({"balldrop", {16, 16, 16}, 1.0},
+          [](const HexMesh& grid, const IdVector<CellId, int>& m, int n_materials,
+             const IdVector<NodeId, char>& fixed, const SizeCriterion& size) {
+            InterfacePillowOptions o;
+            o.keep_failing = true;
+            const auto kept = pillow_interfaces(grid, m, n_materials, fixed, size, o);
+            const SizeCriterion kept_size = size.remapped(kept.cell_origin.raw());
+            std::vector<index_t> own(static_cast<std::size_t>(n_materials), 0);
+            for (CellId c : id_range<CellId>(kept.mesh.n_cells()))
+              own[static_cast<std::size_t>(kept.material[c])] +=
+                  cell_score(kept.mesh, c, kept_size) < default_threshold;
+            EXPECT_GT(own[0], 0);
+            for (const InterfacePillowAttempt& a : kept.attempts)
+              EXPECT_EQ(a.failing, own[static_cast<std::size_t>(a.material)]) << a.material;
+          });
 }
 
 TEST(InterfacePillow, LeavesTheRegionsOutAroundTheCellsGiven) {

@@ -36,16 +36,25 @@ IdVector<NodeId, char> layer_movable(const PillowResult<M>& p, index_t n_old,
 }
 
 template <class M>
+bool touches(const M& mesh, CellId c, const IdVector<NodeId, char>& nodes) {
+  for (NodeId v : mesh.cell_nodes(c))
+    if (nodes[v]) return true;
+  return false;
+}
+
+template <class M>
 Attempt<M> try_pillow(const M& mesh, const IdVector<CellId, char>& set,
                       const IdVector<NodeId, char>& fixed, const SizeCriterion& size,
                       const StepSettings& o) {
   Attempt<M> a{
       pillow_cells(mesh, set, boundary_constraints(mesh, o.boundary), o.pillow, size), {}, {}};
   a.size = size.remapped(a.p.cell_origin.raw());
-  smooth(a.p.mesh, layer_movable(a.p, mesh.n_nodes(), fixed),
-         boundary_constraints(a.p.mesh, o.boundary), o.smooth, nullptr, a.size);
+  const IdVector<NodeId, char> movable = layer_movable(a.p, mesh.n_nodes(), fixed);
+  smooth(a.p.mesh, movable, boundary_constraints(a.p.mesh, o.boundary), o.smooth, nullptr, a.size);
+  // Only the cells with a new or smoothed node changed: the others fail or pass as before
+  // (a layer kept failing for another material is not this one's).
   for (CellId c : id_range<CellId>(a.p.mesh.n_cells()))
-    if (cell_score(a.p.mesh, c, a.size) < o.threshold) {
+    if (touches(a.p.mesh, c, movable) && cell_score(a.p.mesh, c, a.size) < o.threshold) {
       a.failing_origins.push_back(a.p.cell_origin[c]);
       ++a.failing_cells;
     }
