@@ -10,7 +10,7 @@ import sys
 ROOT = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else pathlib.Path(__file__).parents[2])
 
 # Level of each unit: a unit may include the public headers of units of a lower level.
-LEVEL = {"core": 0, "quality": 1, "mesh": 2, "io": 3, "assign": 4, "generate": 4,
+LEVEL = {"core": 0, "dist": 1, "quality": 1, "mesh": 2, "io": 3, "assign": 4, "generate": 4,
          "reconstruct": 5, "adapt": 6, "measure": 7}
 
 # Known crossings, each (file, what it includes: a unit, or another unit's private header).

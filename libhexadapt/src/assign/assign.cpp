@@ -1,15 +1,43 @@
 #include "hexadapt/assign/assign.h"
 
+#include <limits>
 #include <variant>
 
+#include "hexadapt/core/error.h"
 #include "hexadapt/mesh/cell_complex.h"
 #include "hexadapt/mesh/unit_frame.h"
 
 namespace hexadapt::assign {
 
+namespace {
+
+/// The frame of the whole distributed mesh (far_unit_frame), from every rank's box.
+template <class M>
+UnitFrame far_unit_frame(const M& mesh, const dist::Communicator& comm) {
+  if (comm.size() == 1) return hexadapt::far_unit_frame(mesh);
+  Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
+  for (NodeId n : id_range<NodeId>(mesh.n_nodes())) {
+    low = low.cwiseMin(mesh.point(n));
+    high = high.cwiseMax(mesh.point(n));
+  }
+  std::vector<double> box;
+  for (const Vec3& p : {low, high}) box.insert(box.end(), p.data(), p.data() + 3);
+  const std::vector<double> all = dist::all_gather_values(comm, box);
+  std::vector<Vec3> corners;
+  for (std::size_t i = 0; i + 2 < all.size(); i += 3)
+    corners.emplace_back(all[i], all[i + 1], all[i + 2]);
+  return hexadapt::far_unit_frame(corners);
+}
+
+}  // namespace
+
 template <class M>
 AssignResult assign_materials(const M& mesh, const Fractions& fractions,
-                              const AssignOptions& options) {
+                              const AssignOptions& options, const dist::Distribution& where) {
+  if (where.comm.size() > 1 && (options.min_island > 1 || options.keep_materials))
+    throw OptionError(
+        "small pieces and kept materials are not handled on more than one rank yet: run on one "
+        "rank, or leave min_island and keep_materials off");
   AssignResult r;
   Timer t;
   r.majority = majority_materials(fractions);
@@ -22,11 +50,11 @@ AssignResult assign_materials(const M& mesh, const Fractions& fractions,
   }
   // A grid of 1e-300 (or 1e300) has no representable cell volumes: it is assigned in its
   // UnitFrame, and the costs, volumes too, go back to its units.
-  const UnitFrame frame = far_unit_frame(mesh);
+  const UnitFrame frame = far_unit_frame(mesh, where.comm);
   auto assign_in_frame = [&](const M& local) {
     if (options.keep_materials) r.kept = keep_vanished_materials(local, fractions, start);
-    r.correction = correct_assignment(local, fractions, start, options.correction);
-    r.balance = material_balance(local, fractions, r.correction.labels);
+    r.correction = correct_assignment(local, fractions, start, options.correction, where);
+    r.balance = material_balance(local, fractions, r.correction.labels, where);
   };
   if (frame.is_identity())
     assign_in_frame(mesh);
@@ -42,6 +70,16 @@ AssignResult assign_materials(const M& mesh, const Fractions& fractions,
   return r;
 }
 
+template <class M>
+AssignResult assign_materials(const M& mesh, const Fractions& fractions,
+                              const AssignOptions& options) {
+  return assign_materials(mesh, fractions, options, dist::Distribution::whole(mesh));
+}
+
+template AssignResult assign_materials(const QuadMesh&, const Fractions&, const AssignOptions&,
+                                       const dist::Distribution&);
+template AssignResult assign_materials(const HexMesh&, const Fractions&, const AssignOptions&,
+                                       const dist::Distribution&);
 template AssignResult assign_materials(const QuadMesh&, const Fractions&, const AssignOptions&);
 template AssignResult assign_materials(const HexMesh&, const Fractions&, const AssignOptions&);
 

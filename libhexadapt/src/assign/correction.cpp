@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "hexadapt/assign/configuration_store.h"
 #include "hexadapt/assign/cost.h"
@@ -36,16 +37,46 @@ void validate(const M& mesh, const Fractions& fractions, const CellMaterials& la
                   std::to_string(fractions.n_materials()) + " materials");
 }
 
+/// A pending node as every rank sees it: its global id, place and the global ids of its cells.
+struct Pending {
+  std::int64_t node = 0;
+  Vec3 point = Vec3::Zero();
+  std::vector<std::int64_t> cells;
+};
+
 /// Position order (x, y, z, then id): the priority of nodes within a round.
-template <class M>
-void sort_by_position(const M& mesh, std::vector<NodeId>& nodes) {
-  std::sort(nodes.begin(), nodes.end(), [&](NodeId a, NodeId b) {
-    const Vec3 pa = mesh.point(a), pb = mesh.point(b);
-    for (int d = 0; d < 3; ++d)
-      if (pa[d] != pb[d]) return pa[d] < pb[d];
-    return a < b;
-  });
+bool before(const Pending& a, const Pending& b) {
+  for (int d = 0; d < 3; ++d)
+    if (a.point[d] != b.point[d]) return a.point[d] < b.point[d];
+  return a.node < b.node;
 }
+
+/// A cell's new material, by global cell id.
+struct Change {
+  std::int64_t cell = 0;
+  int material = 0;
+};
+
+void put_point(dist::Buffer& b, const Vec3& p) {
+  for (int d = 0; d < 3; ++d) b.put(p[d]);
+}
+
+Vec3 get_point(dist::Buffer& b) {
+  Vec3 p;
+  for (int d = 0; d < 3; ++d) p[d] = b.get<double>();
+  return p;
+}
+
+/// What the rank owning a selected node found, for every rank to apply in the same order.
+struct Outcome {
+  std::int64_t order = 0;  ///< the node's place among the selected ones
+  bool failed = false;
+  bool fresh = false;  ///< first visit: its configurations were enumerated
+  EnumerationStats stats;
+  int visits = 0;  ///< configurations used after this visit
+  std::vector<Change> changes;
+  CorrectionFailure failure;  ///< when failed
+};
 
 /// The nodes of n's ball other than n that are manifold now, each with its own ball, to
 /// tell whether a configuration of n's ball keeps them manifold ("spares" them).
@@ -97,75 +128,164 @@ struct NodeState {
   std::vector<int> materials;
 };
 
-/// The state of Algorithm 1 between rounds.
+/// The state of Algorithm 1 between rounds, on one rank's block.
 template <class M>
 class Corrector {
  public:
   Corrector(const M& mesh, const Fractions& fractions, const CorrectionOptions& options,
-            CorrectionResult& result)
+            const dist::Distribution& where, CorrectionResult& result)
       : mesh_(mesh),
         fractions_(fractions),
         options_(options),
+        where_(where),
         result_(result),
-        volumes_(cell_volumes(mesh)),
-        claimed_(static_cast<std::size_t>(mesh.n_cells()), -1) {}
+        volumes_(cell_volumes(mesh, where.comm)) {}
 
   const IdVector<CellId, double>& volumes() const { return volumes_; }
 
-  /// One round over `pending`; returns the nodes to test for the next one.
-  std::vector<NodeId> round(std::vector<NodeId> pending) {
-    const int r = ++result_.rounds;
-    sort_by_position(mesh_, pending);
+  /// One round over the pending nodes this rank owns; returns the ones it owns to test for
+  /// the next round.
+  std::vector<NodeId> round(const std::vector<NodeId>& pending) {
+    ++result_.rounds;
+    const std::vector<Pending> all = gather_pending(pending);
+    std::vector<std::int64_t> order;  // per selected node of this rank: its place
     std::vector<NodeId> selected, next;
-    for (NodeId n : pending) (claim(n, r) ? selected : next).push_back(n);
-    std::vector<const Configuration*> chosen = solve(selected);
-    for (std::size_t i = 0; i < selected.size(); ++i) {
-      if (!chosen[i]) {
-        fail(selected[i]);
-        return {};
+    std::unordered_set<std::int64_t> claimed;
+    std::int64_t n_selected = 0;
+    for (const Pending& p : all) {
+      const bool free = std::none_of(p.cells.begin(), p.cells.end(),
+                                     [&](std::int64_t c) { return claimed.count(c) > 0; });
+      if (free) claimed.insert(p.cells.begin(), p.cells.end());
+      const NodeId n = local_node(p.node);
+      if (n.valid() && where_.block.owns(n)) {
+        if (free) {
+          selected.push_back(n);
+          order.push_back(n_selected);
+        } else {
+          next.push_back(n);
+        }
       }
-      apply(selected[i], *chosen[i], next);
+      n_selected += free ? 1 : 0;
     }
+    std::vector<Outcome> outcomes = gather_outcomes(solve(selected, order));
+    apply(outcomes, next);
     return next;
   }
 
  private:
-  bool claim(NodeId n, int r) {
-    const auto cells = mesh_.node_cells(n);
-    for (CellId c : cells)
-      if (claimed_[c] == r) return false;
-    for (CellId c : cells) claimed_[c] = r;
-    return true;
+  NodeId local_node(std::int64_t g) const {
+    const std::int64_t l = g - where_.block.node_offset;
+    return l >= 0 && l < mesh_.n_nodes() ? NodeId(static_cast<index_t>(l)) : NodeId();
+  }
+
+  /// Every rank's pending nodes, in position order.
+  std::vector<Pending> gather_pending(const std::vector<NodeId>& pending) const {
+    dist::Buffer mine;
+    mine.put(static_cast<std::uint64_t>(pending.size()));
+    for (NodeId n : pending) {
+      mine.put(where_.block.global(n));
+      put_point(mine, mesh_.point(n));
+      std::vector<std::int64_t> cells;
+      for (CellId c : mesh_.node_cells(n)) cells.push_back(where_.block.global(c));
+      mine.put_vector(cells);
+    }
+    std::vector<Pending> all;
+    for (dist::Buffer& b : dist::all_gather(where_.comm, mine)) {
+      const auto n = b.get<std::uint64_t>();
+      for (std::uint64_t i = 0; i < n; ++i) {
+        Pending p;
+        p.node = b.get<std::int64_t>();
+        p.point = get_point(b);
+        p.cells = b.get_vector<std::int64_t>();
+        all.push_back(std::move(p));
+      }
+    }
+    std::sort(all.begin(), all.end(), before);
+    return all;
   }
 
   NodeState& state(NodeId n) { return states_[static_cast<std::size_t>(slot_.at(n))]; }
 
-  std::vector<const Configuration*> solve(const std::vector<NodeId>& nodes) {
-    std::vector<char> fresh(nodes.size(), 0);
-    for (std::size_t i = 0; i < nodes.size(); ++i)
+  /// Solves this rank's selected nodes (their balls are disjoint) from the labels at the
+  /// start of the round.
+  std::vector<Outcome> solve(const std::vector<NodeId>& nodes,
+                             const std::vector<std::int64_t>& order) {
+    std::vector<Outcome> out(nodes.size());
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      out[i].order = order[i];
       if (slot_.emplace(nodes[i], static_cast<int>(states_.size())).second) {
         states_.push_back(NodeState{ConfigurationStore(options_.keep), {}});
-        fresh[i] = 1;
+        out[i].fresh = true;
       }
-    std::vector<EnumerationStats> stats(nodes.size());
-    std::vector<const Configuration*> chosen(nodes.size(), nullptr);
+    }
     parallel_for(static_cast<std::int64_t>(nodes.size()), [&](std::int64_t k) {
       const auto i = static_cast<std::size_t>(k);
       NodeState& s = state(nodes[i]);
       const LocalBall<M> ball(mesh_, nodes[i]);
-      if (fresh[i]) {
+      if (out[i].fresh) {
         const LocalProblem p = local_problem(ball, fractions_, volumes_, options_.max_materials);
         s.materials = p.materials;
-        stats[i] = enumerate_configurations(ball, p, options_.max_leaves, s.store);
+        out[i].stats = enumerate_configurations(ball, p, options_.max_leaves, s.store);
       }
-      chosen[i] = options_.spare_neighbours ? take_sparing(ball, s.store) : s.store.take_next();
+      const Configuration* chosen =
+          options_.spare_neighbours ? take_sparing(ball, s.store) : s.store.take_next();
+      out[i].visits = s.store.used();
+      if (!chosen) {
+        out[i].failed = true;
+        out[i].failure =
+            CorrectionFailure{nodes[i], mesh_.point(nodes[i]), s.materials, s.store.size()};
+        return;
+      }
+      for (int j = 0; j < ball.n_cells(); ++j) {
+        const CellId c = ball.cell(j);
+        const int m = chosen->labels[static_cast<std::size_t>(j)];
+        if (result_.labels[c] != m) out[i].changes.push_back({where_.block.global(c), m});
+      }
     });
-    for (std::size_t i = 0; i < nodes.size(); ++i) {
-      result_.leaves += stats[i].leaves;
-      result_.truncated_enumerations += stats[i].truncated ? 1 : 0;
-      result_.nodes_treated += fresh[i];
+    return out;
+  }
+
+  /// Every rank's outcomes, in the order of their nodes.
+  std::vector<Outcome> gather_outcomes(const std::vector<Outcome>& mine) const {
+    dist::Buffer b;
+    b.put(static_cast<std::uint64_t>(mine.size()));
+    for (const Outcome& o : mine) {
+      b.put(o.order);
+      b.put(o.failed);
+      b.put(o.fresh);
+      b.put(o.stats);
+      b.put(o.visits);
+      b.put_vector(o.changes);
+      if (o.failed) {
+        b.put(where_.block.global(o.failure.node));
+        put_point(b, o.failure.position);
+        b.put_vector(o.failure.materials);
+        b.put(o.failure.stored);
+      }
     }
-    return chosen;
+    std::vector<Outcome> all;
+    for (dist::Buffer& r : dist::all_gather(where_.comm, b)) {
+      const auto n = r.get<std::uint64_t>();
+      for (std::uint64_t i = 0; i < n; ++i) {
+        Outcome o;
+        o.order = r.get<std::int64_t>();
+        o.failed = r.get<bool>();
+        o.fresh = r.get<bool>();
+        o.stats = r.get<EnumerationStats>();
+        o.visits = r.get<int>();
+        o.changes = r.get_vector<Change>();
+        if (o.failed) {
+          o.failure.node = NodeId(static_cast<index_t>(r.get<std::int64_t>()));
+          o.failure.position = get_point(r);
+          o.failure.materials = r.get_vector<int>();
+          o.failure.stored = r.get<int>();
+        }
+        all.push_back(std::move(o));
+      }
+    }
+    std::sort(all.begin(), all.end(),
+              [](const Outcome& x, const Outcome& y) { return x.order < y.order; });
+    return all;
   }
 
   /// CellMaterials are only read during the parallel phase, so this is thread-count independent.
@@ -175,30 +295,37 @@ class Corrector {
         [&](const Configuration& config) { return around.spared_by(config.labels); });
   }
 
-  void apply(NodeId n, const Configuration& config, std::vector<NodeId>& touched) {
-    ++result_.node_solves;
-    result_.max_visits = std::max(result_.max_visits, state(n).store.used());
-    const LocalBall<M> ball(mesh_, n);
-    for (int i = 0; i < ball.n_cells(); ++i) {
-      const CellId c = ball.cell(i);
-      const int m = config.labels[static_cast<std::size_t>(i)];
-      if (result_.labels[c] == m) continue;
-      result_.labels[c] = m;
-      for (NodeId v : mesh_.cell_nodes(c)) touched.push_back(v);
+  /// Applies the outcomes in order up to the first failure (whose node is reported, with the
+  /// global id), and adds the owned nodes of every changed cell to `touched`.
+  void apply(const std::vector<Outcome>& outcomes, std::vector<NodeId>& touched) {
+    for (const Outcome& o : outcomes) {
+      result_.leaves += o.stats.leaves;
+      result_.truncated_enumerations += o.stats.truncated ? 1 : 0;
+      result_.nodes_treated += o.fresh ? 1 : 0;
     }
-  }
-
-  void fail(NodeId n) {
-    NodeState& s = state(n);
-    result_.failure = CorrectionFailure{n, mesh_.point(n), s.materials, s.store.size()};
+    for (const Outcome& o : outcomes) {
+      if (o.failed) {
+        result_.failure = o.failure;
+        return;
+      }
+      ++result_.node_solves;
+      result_.max_visits = std::max(result_.max_visits, o.visits);
+      for (const Change& change : o.changes) {
+        const CellId c = where_.block.local_cell(change.cell);
+        if (!c.valid()) continue;
+        result_.labels[c] = change.material;
+        for (NodeId v : mesh_.cell_nodes(c))
+          if (where_.block.owns(v)) touched.push_back(v);
+      }
+    }
   }
 
   const M& mesh_;
   const Fractions& fractions_;
   const CorrectionOptions& options_;
+  const dist::Distribution& where_;
   CorrectionResult& result_;
   IdVector<CellId, double> volumes_;
-  IdVector<CellId, int> claimed_;  ///< last round that selected a ball holding the cell
   std::unordered_map<NodeId, int> slot_;
   std::vector<NodeState> states_;
 };
@@ -207,37 +334,66 @@ class Corrector {
 
 template <class M>
 CorrectionResult correct_assignment(const M& mesh, const Fractions& fractions,
-                                    CellMaterials initial, const CorrectionOptions& options) {
+                                    CellMaterials initial, const CorrectionOptions& options,
+                                    const dist::Distribution& where) {
   validate(mesh, fractions, initial, options);
   Timer total, phase;
   CorrectionResult result;
   result.labels = initial;
-  Corrector<M> corrector(mesh, fractions, options, result);
-  std::vector<NodeId> pending = non_manifold_nodes(mesh, result.labels);
-  result.non_manifold_initial = static_cast<index_t>(pending.size());
+  Corrector<M> corrector(mesh, fractions, options, where, result);
+  const auto owned = [&](std::vector<NodeId> nodes) {
+    nodes.erase(
+        std::remove_if(nodes.begin(), nodes.end(), [&](NodeId n) { return !where.block.owns(n); }),
+        nodes.end());
+    return nodes;
+  };
+  const auto everywhere = [&](const std::vector<NodeId>& nodes) {
+    return dist::sum_in_rank_order(where.comm, static_cast<index_t>(nodes.size()));
+  };
+  std::vector<NodeId> pending = owned(non_manifold_nodes(mesh, result.labels));
+  result.non_manifold_initial = everywhere(pending);
   result.times.emplace_back("scan", phase.seconds());
   phase.restart();
-  while (!pending.empty() && !result.failure) {
+  for (index_t left = result.non_manifold_initial; left > 0 && !result.failure;
+       left = everywhere(pending)) {
     if (options.progress)
-      options.progress("manifold correction",
-                       1.0 - static_cast<double>(pending.size()) /
-                                 std::max<double>(1.0, result.non_manifold_initial));
-    pending = non_manifold_among(mesh, result.labels, corrector.round(std::move(pending)));
+      options.progress(
+          "manifold correction",
+          1.0 - static_cast<double>(left) / std::max<double>(1.0, result.non_manifold_initial));
+    pending = non_manifold_among(mesh, result.labels, corrector.round(pending));
   }
   if (options.progress) options.progress("manifold correction", 1.0);
   result.solved = !result.failure;
   result.times.emplace_back("correct", phase.seconds());
-  for (CellId c : id_range<CellId>(mesh.n_cells()))
-    if (result.labels[c] != initial[c]) ++result.cells_changed;
-  result.cost_initial = assignment_cost(fractions, corrector.volumes(), initial);
-  result.cost_final = assignment_cost(fractions, corrector.volumes(), result.labels);
+  index_t changed = 0;
+  double cost_initial = 0, cost_final = 0;
+  for (index_t i = where.block.owned_cell_first; i < where.block.owned_cell_end; ++i) {
+    const CellId c(i);
+    changed += result.labels[c] != initial[c] ? 1 : 0;
+    cost_initial += cell_cost(fractions, corrector.volumes(), c, initial[c]);
+    cost_final += cell_cost(fractions, corrector.volumes(), c, result.labels[c]);
+  }
+  result.cells_changed = dist::sum_in_rank_order(where.comm, changed);
+  result.cost_initial = dist::sum_in_rank_order(where.comm, cost_initial);
+  result.cost_final = dist::sum_in_rank_order(where.comm, cost_final);
   result.times.emplace_back("total", total.seconds());
   return result;
+}
+
+template <class M>
+CorrectionResult correct_assignment(const M& mesh, const Fractions& fractions,
+                                    CellMaterials initial, const CorrectionOptions& options) {
+  return correct_assignment(mesh, fractions, std::move(initial), options,
+                            dist::Distribution::whole(mesh));
 }
 
 template CorrectionResult correct_assignment(const QuadMesh&, const Fractions&, CellMaterials,
                                              const CorrectionOptions&);
 template CorrectionResult correct_assignment(const HexMesh&, const Fractions&, CellMaterials,
                                              const CorrectionOptions&);
+template CorrectionResult correct_assignment(const QuadMesh&, const Fractions&, CellMaterials,
+                                             const CorrectionOptions&, const dist::Distribution&);
+template CorrectionResult correct_assignment(const HexMesh&, const Fractions&, CellMaterials,
+                                             const CorrectionOptions&, const dist::Distribution&);
 
 }  // namespace hexadapt::assign

@@ -9,7 +9,7 @@
 namespace hexadapt::assign {
 
 template <class M>
-IdVector<CellId, double> cell_volumes(const M& mesh) {
+IdVector<CellId, double> cell_volumes(const M& mesh, const dist::Communicator& comm) {
   IdVector<CellId, double> v(static_cast<std::size_t>(mesh.n_cells()), 0.0);
   parallel_for(mesh.n_cells(), [&](std::int64_t i) {
     const CellId c(i);
@@ -19,16 +19,24 @@ IdVector<CellId, double> cell_volumes(const M& mesh) {
   // exactly the smallest: cells of one size in exact arithmetic then weigh the same in any
   // unit and place, so ties between configurations of equal cost do not follow the last bits
   // of the coordinates (a grid moved 1e6 away, or at 1e20, changed two cells of the triple
-  // point before). The costs move by at most 1e-7 of a cell's volume.
-  std::vector<std::pair<double, index_t>> sorted;
-  sorted.reserve(v.size());
-  for (CellId c : id_range<CellId>(mesh.n_cells())) sorted.emplace_back(v[c], c.value());
-  std::sort(sorted.begin(), sorted.end());
+  // point before). The costs move by at most 1e-7 of a cell's volume. The groups are those of
+  // the distinct volumes of every rank, so a cell weighs the same whatever the ranks hold.
+  const auto distinct = [](std::vector<double> x) {
+    std::sort(x.begin(), x.end());
+    x.erase(std::unique(x.begin(), x.end()), x.end());
+    return x;
+  };
+  const std::vector<double> values =
+      distinct(dist::all_gather_values(comm, distinct({v.begin(), v.end()})));
+  std::vector<double> anchors(values.size());
   double anchor = -1;
-  for (const auto& [x, i] : sorted) {
-    if (anchor < 0 || x > anchor * (1 + 1e-7)) anchor = x;
-    v[CellId(i)] = anchor;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (anchor < 0 || values[i] > anchor * (1 + 1e-7)) anchor = values[i];
+    anchors[i] = anchor;
   }
+  for (double& x : v)
+    x = anchors[static_cast<std::size_t>(std::lower_bound(values.begin(), values.end(), x) -
+                                         values.begin())];
   return v;
 }
 
@@ -40,7 +48,7 @@ double assignment_cost(const Fractions& fractions, const IdVector<CellId, double
   return sum;
 }
 
-template IdVector<CellId, double> cell_volumes(const QuadMesh&);
-template IdVector<CellId, double> cell_volumes(const HexMesh&);
+template IdVector<CellId, double> cell_volumes(const QuadMesh&, const dist::Communicator&);
+template IdVector<CellId, double> cell_volumes(const HexMesh&, const dist::Communicator&);
 
 }  // namespace hexadapt::assign

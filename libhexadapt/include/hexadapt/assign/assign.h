@@ -42,6 +42,15 @@ struct AssignResult {
 template <class M>
 AssignResult assign_materials(const M& mesh, const Fractions& fractions,
                               const AssignOptions& options = {});
+/// The same on one rank's block of a distributed mesh, every rank calling it with its block
+/// (correction.h): the labels of the owned cells and every figure are those of one rank
+/// holding the whole mesh, the volumes and costs summed per rank, then in rank order. Small
+/// pieces and kept materials need the whole mesh: on more than one rank they throw
+/// OptionError.
+template <class M>
+AssignResult assign_materials(const M& mesh, const Fractions& fractions,
+                              const AssignOptions& options, const dist::Distribution& where);
+
 /// The same on a grid read by io::to_assigned_grid (its material, if any, is not read):
 /// put the result's correction.labels in grid.material to pass the grid on.
 AssignResult assign_materials(const AssignedGrid& grid, const AssignOptions& options = {});

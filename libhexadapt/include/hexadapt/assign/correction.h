@@ -29,6 +29,7 @@
 #include "hexadapt/core/ids.h"
 #include "hexadapt/core/log.h"
 #include "hexadapt/core/timer.h"
+#include "hexadapt/dist/block.h"
 #include "hexadapt/mesh/fractions.h"
 
 namespace hexadapt::assign {
@@ -73,5 +74,17 @@ struct CorrectionResult {
 template <class M>
 CorrectionResult correct_assignment(const M& mesh, const Fractions& fractions,
                                     CellMaterials initial, const CorrectionOptions& options = {});
+
+/// The same on one rank's block of a distributed mesh (dist/block.h), every rank calling it
+/// with its own block, fractions and initial labels of the cells it holds. The block must
+/// hold two layers of cells around its owned nodes (their balls and their neighbours'). Each
+/// round gathers the pending nodes on every rank and selects them in the same global order,
+/// so the labels of the owned cells, and the statistics, are those of one rank holding the
+/// whole mesh; the failure names the global node id. The costs are summed per rank, then
+/// in rank order.
+template <class M>
+CorrectionResult correct_assignment(const M& mesh, const Fractions& fractions,
+                                    CellMaterials initial, const CorrectionOptions& options,
+                                    const dist::Distribution& where);
 
 }  // namespace hexadapt::assign

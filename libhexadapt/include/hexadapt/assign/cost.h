@@ -4,13 +4,16 @@
 #pragma once
 
 #include "hexadapt/core/ids.h"
+#include "hexadapt/dist/communicator.h"
 #include "hexadapt/mesh/fractions.h"
 
 namespace hexadapt::assign {
 
-/// |cell_volume| of every cell (parallel).
+/// |cell_volume| of every cell (parallel), volumes within 1e-7 of each other made equal
+/// (cost.cpp). On a block of a distributed mesh, every rank calls it with its block.
 template <class M>
-IdVector<CellId, double> cell_volumes(const M& mesh);
+IdVector<CellId, double> cell_volumes(const M& mesh,
+                                      const dist::Communicator& comm = dist::serial());
 
 inline double cell_cost(const Fractions& fractions, const IdVector<CellId, double>& volumes,
                         CellId c, int m) {

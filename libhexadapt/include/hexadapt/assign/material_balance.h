@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "hexadapt/dist/block.h"
 #include "hexadapt/mesh/fractions.h"
 
 namespace hexadapt::assign {
@@ -23,5 +24,11 @@ struct MaterialBalance {
 template <class M>
 std::vector<MaterialBalance> material_balance(const M& mesh, const Fractions& fractions,
                                               const CellMaterials& labels);
+
+/// The same over the cells one rank owns, summed per rank, then in rank order.
+template <class M>
+std::vector<MaterialBalance> material_balance(const M& mesh, const Fractions& fractions,
+                                              const CellMaterials& labels,
+                                              const dist::Distribution& where);
 
 }  // namespace hexadapt::assign

@@ -1,0 +1,63 @@
+// The part of a mesh one rank holds, and which of it the rank owns.
+//
+// A Block is a contiguous range of the global mesh's cells, in the global order, and the
+// contiguous range of its nodes, so local id + offset is the global id. That is what a
+// structured grid cut into slabs across its last axis gives (cell (i, j, k) is
+// i + nx (j + ny k)), and the whole mesh is the one-rank case. The rank owns a sub-range of
+// each: the cells and nodes it decides for; the others are ghosts, held to see around the
+// owned ones and owned by another rank.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "hexadapt/core/ids.h"
+#include "hexadapt/dist/communicator.h"
+
+namespace hexadapt::dist {
+
+struct Block {
+  std::int64_t cell_offset = 0;  ///< global id of local cell 0
+  std::int64_t node_offset = 0;  ///< global id of local node 0
+  index_t held_cells = 0, held_nodes = 0;
+  index_t owned_cell_first = 0, owned_cell_end = 0;  ///< local ids of the owned cells
+  index_t owned_node_first = 0, owned_node_end = 0;  ///< local ids of the owned nodes
+
+  /// The whole mesh, owned by its one rank.
+  static Block whole(index_t n_cells, index_t n_nodes);
+
+  std::int64_t global(CellId c) const { return cell_offset + c.value(); }
+  std::int64_t global(NodeId n) const { return node_offset + n.value(); }
+  /// The local id of global cell g, or an invalid id when this block does not hold it.
+  CellId local_cell(std::int64_t g) const;
+  bool owns(CellId c) const { return c.value() >= owned_cell_first && c.value() < owned_cell_end; }
+  bool owns(NodeId n) const { return n.value() >= owned_node_first && n.value() < owned_node_end; }
+};
+
+/// Where a stage runs: the ranks, and the block of the mesh this rank holds.
+struct Distribution {
+  const Communicator& comm;
+  Block block;
+  /// The whole mesh on one rank.
+  template <class M>
+  static Distribution whole(const M& mesh) {
+    return {serial(), Block::whole(mesh.n_cells(), mesh.n_nodes())};
+  }
+};
+
+/// A structured grid's slab: `cells` per axis (the unused axis 1 in 2D), cut across its last
+/// axis (z in 3D, y in 2D) into `size` slabs of nearly equal layer counts.
+struct Slab {
+  Block block;
+  std::array<int, 3> held{};  ///< cells per axis of the part held (owned and ghost layers)
+  int first_layer = 0;        ///< global index of the first layer held, along the cut axis
+};
+
+/// Rank `rank`'s slab of `size`, holding `ghost_layers` layers of cells beyond its own on each
+/// side (fewer at the grid's ends). It owns its layers of cells and the node layers below
+/// them; the last rank also owns the last node layer. Throws OptionError when a rank would
+/// own no layer (more ranks than layers) or the grid is empty.
+Slab structured_slab(const std::array<int, 3>& cells, int dim, int rank, int size,
+                     int ghost_layers);
+
+}  // namespace hexadapt::dist

@@ -1,0 +1,118 @@
+// The ranks a computation is spread over, as the stages see them: a rank number, a count and
+// one collective, the gather of every rank's bytes on every rank. The stages are written
+// against this interface only; SerialCommunicator is the one-rank case every serial call
+// uses, and MpiCommunicator (dist/mpi_communicator.h, in the separate hexadapt::mpi
+// library) spreads them over MPI processes.
+//
+// Collectives are called by every rank in the same order. Results are ordered by rank, so a
+// computation that combines them in that order gives the same bits on every rank.
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace hexadapt::dist {
+
+class Communicator {
+ public:
+  virtual ~Communicator() = default;
+  virtual int rank() const = 0;
+  virtual int size() const = 0;
+  /// Every rank's `mine`, indexed by rank, on every rank.
+  virtual std::vector<std::vector<std::uint8_t>> all_gather(
+      const std::vector<std::uint8_t>& mine) const = 0;
+  /// Bytes this rank has sent so far.
+  virtual std::uint64_t bytes_sent() const = 0;
+};
+
+/// One rank: the gather returns `mine`.
+class SerialCommunicator final : public Communicator {
+ public:
+  int rank() const override { return 0; }
+  int size() const override { return 1; }
+  std::vector<std::vector<std::uint8_t>> all_gather(
+      const std::vector<std::uint8_t>& mine) const override {
+    return {mine};
+  }
+  std::uint64_t bytes_sent() const override { return 0; }
+};
+
+/// A shared one-rank communicator.
+const Communicator& serial();
+
+/// Plain values written one after another into bytes, and read back in the same order.
+class Buffer {
+ public:
+  Buffer() = default;
+  explicit Buffer(std::vector<std::uint8_t> bytes) : bytes_(std::move(bytes)) {}
+
+  template <class T>
+  void put(const T& v) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    const auto at = bytes_.size();
+    bytes_.resize(at + sizeof(T));
+    std::memcpy(bytes_.data() + at, &v, sizeof(T));
+  }
+  template <class T>
+  void put_vector(const std::vector<T>& v) {
+    put(static_cast<std::uint64_t>(v.size()));
+    for (const T& x : v) put(x);
+  }
+
+  bool done() const { return read_ == bytes_.size(); }
+  /// Throws InternalError when the bytes run out (a rank sent something else).
+  template <class T>
+  T get() {
+    static_assert(std::is_trivially_copyable_v<T>);
+    check(sizeof(T));
+    T v;
+    std::memcpy(&v, bytes_.data() + read_, sizeof(T));
+    read_ += sizeof(T);
+    return v;
+  }
+  template <class T>
+  std::vector<T> get_vector() {
+    const auto n = get<std::uint64_t>();
+    check(n * sizeof(T));
+    std::vector<T> v;
+    v.reserve(n);
+    for (std::uint64_t i = 0; i < n; ++i) v.push_back(get<T>());
+    return v;
+  }
+
+  const std::vector<std::uint8_t>& bytes() const { return bytes_; }
+
+ private:
+  void check(std::uint64_t n) const;
+  std::vector<std::uint8_t> bytes_;
+  std::size_t read_ = 0;
+};
+
+/// Every rank's buffer, in rank order.
+std::vector<Buffer> all_gather(const Communicator& comm, const Buffer& mine);
+
+/// Every rank's values concatenated in rank order.
+template <class T>
+std::vector<T> all_gather_values(const Communicator& comm, const std::vector<T>& mine) {
+  Buffer b;
+  b.put_vector(mine);
+  std::vector<T> out;
+  for (Buffer& r : all_gather(comm, b)) {
+    const std::vector<T> part = r.get_vector<T>();
+    out.insert(out.end(), part.begin(), part.end());
+  }
+  return out;
+}
+
+/// The sum of every rank's value, added in rank order (the same bits on every rank).
+template <class T>
+T sum_in_rank_order(const Communicator& comm, T mine) {
+  T sum{};
+  for (const T& v : all_gather_values(comm, std::vector<T>{mine})) sum += v;
+  return sum;
+}
+
+}  // namespace hexadapt::dist

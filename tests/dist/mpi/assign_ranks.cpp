@@ -1,0 +1,145 @@
+// The assignment spread over the ranks of an MPI job (run under mpirun -np N): every rank
+// assigns its slab of a grid, and the owned labels gathered in rank order, the statistics and
+// the failure must be those of one rank assigning the whole grid.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "../../assign/assign_test_cases.h"
+#include "hexadapt/assign/assign.h"
+#include "hexadapt/dist/mpi_communicator.h"
+#include "slab_case.h"
+
+namespace hexadapt {
+namespace {
+
+const dist::Communicator& world() {
+  static const dist::MpiCommunicator comm;
+  return comm;
+}
+
+/// A grid of `cells` with its nodes moved at random (cells of many volumes), the same on
+/// every rank.
+template <class M>
+M jittered_grid(const std::array<int, 3>& cells, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> shift(-0.15, 0.15);
+  std::vector<Vec3> points;
+  const int nz = M::dim == 3 ? cells[2] : 0;
+  for (int k = 0; k <= nz; ++k)
+    for (int j = 0; j <= cells[1]; ++j)
+      for (int i = 0; i <= cells[0]; ++i) {
+        Vec3 p(i + shift(rng), j + shift(rng), M::dim == 3 ? k + shift(rng) : 0.0);
+        points.push_back(p);
+      }
+  if constexpr (M::dim == 3)
+    return make_hex_grid(cells[0], cells[1], cells[2], std::move(points));
+  else
+    return make_quad_grid(cells[0], cells[1], std::move(points));
+}
+
+template <class M>
+void expect_same_as_one_rank(const M& whole, const Fractions& fractions,
+                             const std::array<int, 3>& cells,
+                             const assign::AssignOptions& options) {
+  const assign::AssignResult one = assign::assign_materials(whole, fractions, options);
+  const dist::Slab slab = dist::structured_slab(cells, M::dim, world().rank(), world().size(), 2);
+  const auto [mesh, part] = test::held_part(whole, fractions, cells, slab);
+  const dist::Distribution where{world(), slab.block};
+  const assign::AssignResult r = assign::assign_materials(mesh, part, options, where);
+
+  std::vector<int> owned;
+  for (index_t c = slab.block.owned_cell_first; c < slab.block.owned_cell_end; ++c)
+    owned.push_back(r.correction.labels[CellId(c)]);
+  const std::vector<int> gathered = dist::all_gather_values(world(), owned);
+  ASSERT_EQ(gathered.size(), static_cast<std::size_t>(whole.n_cells()));
+  index_t differ = 0;
+  for (CellId c : id_range<CellId>(whole.n_cells()))
+    differ += gathered[c.idx()] != one.correction.labels[c] ? 1 : 0;
+  EXPECT_EQ(differ, 0) << "cells assigned otherwise than on one rank";
+
+  const assign::CorrectionResult &a = r.correction, &b = one.correction;
+  EXPECT_EQ(a.solved, b.solved);
+  EXPECT_EQ(a.non_manifold_initial, b.non_manifold_initial);
+  EXPECT_EQ(a.rounds, b.rounds);
+  EXPECT_EQ(a.node_solves, b.node_solves);
+  EXPECT_EQ(a.nodes_treated, b.nodes_treated);
+  EXPECT_EQ(a.max_visits, b.max_visits);
+  EXPECT_EQ(a.cells_changed, b.cells_changed);
+  EXPECT_EQ(a.leaves, b.leaves);
+  EXPECT_EQ(a.truncated_enumerations, b.truncated_enumerations);
+  EXPECT_NEAR(a.cost_initial, b.cost_initial, 1e-12 * b.cost_initial);
+  EXPECT_NEAR(a.cost_final, b.cost_final, 1e-12 * b.cost_final);
+  ASSERT_EQ(a.failure.has_value(), b.failure.has_value());
+  if (a.failure) {
+    EXPECT_EQ(a.failure->node, b.failure->node);
+    EXPECT_EQ(a.failure->position, b.failure->position);
+    EXPECT_EQ(a.failure->materials, b.failure->materials);
+    EXPECT_EQ(a.failure->stored, b.failure->stored);
+  }
+  ASSERT_EQ(r.balance.size(), one.balance.size());
+  for (std::size_t m = 0; m < r.balance.size(); ++m) {
+    EXPECT_EQ(r.balance[m].assigned_cells, one.balance[m].assigned_cells);
+    EXPECT_NEAR(r.balance[m].input_volume, one.balance[m].input_volume,
+                1e-12 * one.balance[m].input_volume);
+  }
+}
+
+TEST(AssignOnRanks, NoisyHexFractionsAsOnOneRank) {
+  const std::array<int, 3> cells{9, 8, 12};
+  const auto mesh = jittered_grid<HexMesh>(cells, 3);
+  const Fractions f = test::random_fractions(mesh.n_cells(), 3, 3, 11);
+  const assign::AssignResult one = assign::assign_materials(mesh, f);
+  ASSERT_GT(one.correction.non_manifold_initial, 50);  // many nodes, many rounds
+  ASSERT_GT(one.correction.rounds, 3);
+  expect_same_as_one_rank(mesh, f, cells, {});
+}
+
+TEST(AssignOnRanks, BallsInAHexGridAsOnOneRank) {
+  const std::array<int, 3> cells{14, 13, 15};
+  const HexMesh mesh = make_hex_grid(cells[0], cells[1], cells[2]);
+  const Fractions f = test::ball_fractions(
+      mesh, {{Vec3(5.3, 6.1, 6.7), 4.2}, {Vec3(9.1, 6.4, 8.2), 3.3}, {Vec3(7.0, 7.0, 1.5), 3.0}});
+  expect_same_as_one_rank(mesh, f, cells, {});
+}
+
+TEST(AssignOnRanks, NoisyQuadFractionsAsOnOneRank) {
+  const std::array<int, 3> cells{23, 17, 1};
+  const auto mesh = jittered_grid<QuadMesh>(cells, 5);
+  const Fractions f = test::random_fractions(mesh.n_cells(), 4, 3, 2);
+  expect_same_as_one_rank(mesh, f, cells, {});
+}
+
+TEST(AssignOnRanks, AFailureIsTheOneOfOneRank) {
+  const std::array<int, 3> cells{9, 8, 12};
+  const auto mesh = jittered_grid<HexMesh>(cells, 4);
+  const Fractions f = test::random_fractions(mesh.n_cells(), 4, 4, 5);
+  assign::AssignOptions options;
+  options.correction.keep = 1;
+  options.correction.spare_neighbours = false;
+  ASSERT_TRUE(assign::assign_materials(mesh, f, options).correction.failure.has_value());
+  expect_same_as_one_rank(mesh, f, cells, options);
+}
+
+TEST(AssignOnRanks, WholeMeshStepsAreRefused) {
+  const std::array<int, 3> cells{4, 4, 6};
+  const HexMesh mesh = make_hex_grid(cells[0], cells[1], cells[2]);
+  const Fractions f = test::random_fractions(mesh.n_cells(), 2, 2, 1);
+  const dist::Slab slab = dist::structured_slab(cells, 3, world().rank(), world().size(), 2);
+  const auto [part_mesh, part] = test::held_part(mesh, f, cells, slab);
+  assign::AssignOptions options;
+  options.min_island = 3;
+  const dist::Distribution where{world(), slab.block};
+  if (world().size() > 1) {
+    EXPECT_THROW(assign::assign_materials(part_mesh, part, options, where), OptionError);
+  }
+}
+
+}  // namespace
+}  // namespace hexadapt
+
+int main(int argc, char** argv) {
+  hexadapt::dist::MpiSession session(argc, argv);
+  ::testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}
