@@ -13,6 +13,7 @@
 #include "hexadapt/io/mesh_file.h"
 #include "hexadapt/mesh/cell_complex.h"
 #include "input_record.h"
+#include "rank_files.h"
 
 namespace hexadapt {
 namespace {
@@ -24,6 +25,7 @@ struct Options {
   cli::InputOptions in;
   assign::AssignOptions assign;
   bool paper_order = false;
+  bool gather = false;
 };
 
 void add_options(CLI::App& app, Options& o) {
@@ -59,6 +61,9 @@ void add_options(CLI::App& app, Options& o) {
                "neighbouring nodes manifold)");
   app.add_option("--partial", o.partial,
                  "When the correction fails, write the assignment reached so far here");
+  app.add_flag("--gather", o.gather,
+               "Under mpirun on several ranks: write one file of the whole grid (any format) "
+               "instead of a .vtu piece per rank and the .pvtu naming them");
 }
 
 /// The input data plus the assigned grid's arrays (io::put_assignment), the majority
@@ -188,26 +193,8 @@ std::string failure_message(const assign::CorrectionFailure& f, const Fractions&
   return s.str();
 }
 
-int run_assign(const CLI::App& app, Options& o) {
-  cli::check_files({{"input", o.input}},
-                   {{"-o", o.common.output}, {"--partial", o.partial}, {"--json", o.common.json}});
-  o.assign.correction.spare_neighbours = !o.paper_order;
-  o.assign.correction.progress = cli::terminal_progress(o.common);
-  PhaseTimes times;
-  Timer t;
-  io::MeshData data = io::read_mesh(o.input, o.in.read_options());
-  cli::check_memory("assigning " + std::to_string(data.n_cells()) + " cells",
-                    static_cast<double>(data.n_cells()) * cli::assign_bytes_per_cell,
-                    o.common.memory_limit());
-  times.emplace_back("read", t.seconds());
-  t.restart();
-  io::FractionReport fr;
-  AssignedGrid grid = io::to_assigned_grid(data, o.in.grid(io::MaterialSource::none), o.input, &fr);
-  const Fractions& fractions = grid.fractions;
-  if (o.in.fractions.labels.empty()) log_info(fractions_message(fr));
-  times.emplace_back("fractions", t.seconds());
-  const assign::AssignResult r = assign::assign_materials(grid, o.assign);
-  for (const auto& p : r.times) times.push_back(p);
+// The logs of an assignment, on every run.
+void log_result(const assign::AssignResult& r, const Options& o, const Fractions& fractions) {
   log_info("non-manifold nodes at first: " + std::to_string(r.correction.non_manifold_initial) +
            ", cells changed: " + std::to_string(r.correction.cells_changed));
   if (o.assign.min_island > 1) log_islands(r, o.assign.min_island);
@@ -216,20 +203,17 @@ int run_assign(const CLI::App& app, Options& o) {
              "', nowhere the majority, kept in the " + std::to_string(k.cells) +
              " cells where it is most present");
   warn_vanished(r.balance, fractions);
-  t.restart();
-  const std::string out = r.correction.solved ? o.common.output : o.partial;
-  grid.material = r.correction.labels;
-  if (!out.empty())
-    io::write_mesh(output_data(std::move(data), grid, r.majority, app, cli::input_record(o.in, fr)),
-                   out, o.common.write_options());
-  times.emplace_back("write", t.seconds());
+}
 
+// The report, the failure message and the exit code.
+int finish(const CLI::App& app, const Options& o, const assign::AssignResult& r,
+           const io::FractionReport& fr, const Fractions& fractions, int dimension,
+           std::int64_t cells, const std::string& out, PhaseTimes times) {
   cli::Json report = cli::report_header(app);
   report["input"] = o.input;
   report["output"] = out;
-  report["dimension"] =
-      std::visit([](const auto& m) { return std::decay_t<decltype(m)>::dim; }, grid.mesh);
-  report["cells"] = fractions.n_cells();
+  report["dimension"] = dimension;
+  report["cells"] = cells;
   report["materials"] = fractions.names();
   report["options"] = {{"keep", o.assign.correction.keep},
                        {"min_island", o.assign.min_island},
@@ -260,6 +244,101 @@ int run_assign(const CLI::App& app, Options& o) {
   return cli::ok;
 }
 
+int run_assign(const CLI::App& app, Options& o) {
+  cli::check_files({{"input", o.input}},
+                   {{"-o", o.common.output}, {"--partial", o.partial}, {"--json", o.common.json}});
+  PhaseTimes times;
+  Timer t;
+  io::MeshData data = io::read_mesh(o.input, o.in.read_options());
+  cli::check_memory("assigning " + std::to_string(data.n_cells()) + " cells",
+                    static_cast<double>(data.n_cells()) * cli::assign_bytes_per_cell,
+                    o.common.memory_limit());
+  times.emplace_back("read", t.seconds());
+  t.restart();
+  io::FractionReport fr;
+  AssignedGrid grid = io::to_assigned_grid(data, o.in.grid(io::MaterialSource::none), o.input, &fr);
+  const Fractions& fractions = grid.fractions;
+  if (o.in.fractions.labels.empty()) log_info(fractions_message(fr));
+  times.emplace_back("fractions", t.seconds());
+  const assign::AssignResult r = assign::assign_materials(grid, o.assign);
+  for (const auto& p : r.times) times.push_back(p);
+  log_result(r, o, fractions);
+  t.restart();
+  const std::string out = r.correction.solved ? o.common.output : o.partial;
+  grid.material = r.correction.labels;
+  if (!out.empty())
+    io::write_mesh(output_data(std::move(data), grid, r.majority, app, cli::input_record(o.in, fr)),
+                   out, o.common.write_options());
+  times.emplace_back("write", t.seconds());
+  const int dimension =
+      std::visit([](const auto& m) { return std::decay_t<decltype(m)>::dim; }, grid.mesh);
+  return finish(app, o, r, fr, fractions, dimension, fractions.n_cells(), out, times);
+}
+
+// The fraction report of the whole grid from every rank's report of the cells it owns.
+io::FractionReport whole_report(const dist::Communicator& comm, io::FractionReport fr) {
+  fr.clipped_values = dist::sum_in_rank_order(comm, fr.clipped_values);
+  fr.zeroed_values = dist::sum_in_rank_order(comm, fr.zeroed_values);
+  fr.rescaled_cells = dist::sum_in_rank_order(comm, fr.rescaled_cells);
+  const std::vector<double> errors = dist::all_gather_values(comm, std::vector{fr.max_sum_error});
+  fr.max_sum_error = *std::max_element(errors.begin(), errors.end());
+  return fr;
+}
+
+// On the ranks of an MPI job: each reads its slab (two ghost layers: the correction looks
+// two cells around the nodes it owns) and writes the cells it owns.
+int run_assign_on_ranks(const CLI::App& app, Options& o, const dist::Communicator& comm) {
+  cli::on_every_rank(comm, app, [&] {
+    cli::check_files(
+        {{"input", o.input}},
+        {{"-o", o.common.output}, {"--partial", o.partial}, {"--json", o.common.json}});
+    cli::check_rank_output("-o", o.common.output, o.gather);
+    cli::check_rank_output("--partial", o.partial, o.gather);
+    if (o.assign.min_island > 1 || o.assign.keep_materials)
+      throw OptionError(
+          "--min-island and --keep-materials need the whole grid: run them on "
+          "one process");
+  });
+  PhaseTimes times;
+  Timer t;
+  const cli::RankInput in = cli::read_on_ranks(comm, app, o.input, o.in.read_options(), 2);
+  cli::on_every_rank(comm, app, [&] {
+    cli::check_memory("assigning " + std::to_string(in.data.n_cells()) + " cells on this rank",
+                      static_cast<double>(in.data.n_cells()) * cli::assign_bytes_per_cell,
+                      o.common.memory_limit());
+  });
+  times.emplace_back("read", t.seconds());
+  t.restart();
+  io::FractionReport fr;
+  AssignedGrid grid;
+  cli::on_every_rank(comm, app, [&] {
+    grid = io::to_assigned_grid(in.data, o.in.grid(io::MaterialSource::none), o.input, &fr,
+                                &in.slab.block);
+  });
+  fr = whole_report(comm, fr);
+  const Fractions& fractions = grid.fractions;
+  log_info(fractions_message(fr));
+  times.emplace_back("fractions", t.seconds());
+  const dist::Distribution where{comm, in.slab.block};
+  const assign::AssignResult r = std::visit(
+      [&](const auto& mesh) { return assign::assign_materials(mesh, fractions, o.assign, where); },
+      grid.mesh);
+  for (const auto& p : r.times) times.push_back(p);
+  log_result(r, o, fractions);
+  t.restart();
+  const std::string out = r.correction.solved ? o.common.output : o.partial;
+  grid.material = r.correction.labels;
+  if (!out.empty())
+    cli::write_on_ranks(comm, app,
+                        output_data(in.data, grid, r.majority, app, cli::input_record(o.in, fr)),
+                        in, out, o.gather, o.common.write_options());
+  times.emplace_back("write", t.seconds());
+  std::int64_t cells = 1;
+  for (int a = 0; a < in.shape.dim; ++a) cells *= in.shape.cells[static_cast<std::size_t>(a)];
+  if (comm.rank() != 0) o.common.json.clear();  // rank 0 writes the report
+  return finish(app, o, r, fr, fractions, in.shape.dim, cells, out, times);
+}
+
 }  // namespace
 }  // namespace hexadapt
 
@@ -268,6 +347,12 @@ int main(int argc, char** argv) {
                "hexadapt-assign");
   hexadapt::Options options;
   hexadapt::add_options(app, options);
-  return hexadapt::cli::run(app, argc, argv, options.common,
-                            [&] { return hexadapt::run_assign(app, options); });
+  return hexadapt::cli::run_on_ranks(
+      app, argc, argv, options.common, [&](const hexadapt::dist::Communicator& comm) {
+        options.assign.correction.spare_neighbours = !options.paper_order;
+        if (comm.rank() == 0)
+          options.assign.correction.progress = hexadapt::cli::terminal_progress(options.common);
+        return comm.size() > 1 ? hexadapt::run_assign_on_ranks(app, options, comm)
+                               : hexadapt::run_assign(app, options);
+      });
 }

@@ -1,18 +1,20 @@
 #include "cli.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <map>
+#include <memory>
 
-#include <unistd.h>
-
-#include "hexadapt/io/fractions_reader.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/core/parallel.h"
 #include "hexadapt/io/atomic_file.h"
+#include "hexadapt/io/fractions_reader.h"
 #include "hexadapt/io/temp_files.h"
+#include "ranks.h"
 
 namespace hexadapt::cli {
 
@@ -33,12 +35,12 @@ CLI::Validator number_check(bool (*ok)(double), const std::string& requirement,
 }
 
 // A tolerance or threshold: a finite number >= 0.
-const CLI::Validator finite_non_negative = number_check(
-    [](double v) { return std::isfinite(v) && v >= 0; }, "expected a finite number >= 0",
-    "NUMBER>=0");
+const CLI::Validator finite_non_negative =
+    number_check([](double v) { return std::isfinite(v) && v >= 0; },
+                 "expected a finite number >= 0", "NUMBER>=0");
 
-const CLI::Validator finite_number = number_check([](double v) { return std::isfinite(v); },
-                                                  "expected a finite number", "NUMBER");
+const CLI::Validator finite_number =
+    number_check([](double v) { return std::isfinite(v); }, "expected a finite number", "NUMBER");
 
 // --label-names: VALUE=NAME entries, VALUE an integer.
 std::map<std::int64_t, std::string> parse_label_names(const std::vector<std::string>& entries) {
@@ -58,10 +60,10 @@ std::map<std::int64_t, std::string> parse_label_names(const std::vector<std::str
 }
 }  // namespace
 
-const CLI::Validator positive = number_check([](double v) { return v > 0; }, "must be > 0",
-                                             "POSITIVE");
-const CLI::Validator non_negative = number_check([](double v) { return v >= 0; }, "must be >= 0",
-                                                 "NONNEGATIVE");
+const CLI::Validator positive =
+    number_check([](double v) { return v > 0; }, "must be > 0", "POSITIVE");
+const CLI::Validator non_negative =
+    number_check([](double v) { return v >= 0; }, "must be >= 0", "NONNEGATIVE");
 
 void add_common_options(CLI::App& app, CommonOptions& options, bool with_output) {
   app.set_version_flag("--version", std::string("hexadapt ") + HEXADAPT_VERSION,
@@ -164,8 +166,8 @@ const std::map<std::string, std::string, std::less<>> flag_names = {
     {"void_material", "void"}, {"move.steps", "steps"}, {"move.drag", "drag"}};
 
 std::string flag_of(const CLI::App& app, std::string_view field) {
-  if (field.empty() || field.find_first_not_of("abcdefghijklmnopqrstuvwxyz_.0123456789") !=
-                           std::string_view::npos)
+  if (field.empty() ||
+      field.find_first_not_of("abcdefghijklmnopqrstuvwxyz_.0123456789") != std::string_view::npos)
     return {};
   const auto named = flag_names.find(field);
   std::string flag = "--" + (named != flag_names.end() ? named->second : std::string(field));
@@ -191,8 +193,41 @@ std::string with_flags(const CLI::App& app, std::string_view text) {
   return out;
 }
 
-int run(CLI::App& app, int argc, char** argv, CommonOptions& options,
-        const std::function<int()>& body) {
+namespace {
+
+// The exit code of an exception a run ended with, and the line it prints.
+std::pair<int, std::string> describe(const CLI::App& app, const std::exception_ptr& error) {
+  const std::string tool = app.get_name();
+  try {
+    std::rethrow_exception(error);
+  } catch (const RankError& e) {
+    return {e.code(), e.what()};
+  } catch (const OptionError& e) {
+    return {usage, tool + ": error: " + with_flags(app, e.what())};
+  } catch (const InputError& e) {
+    return {bad_input, tool + ": error: " + with_flags(app, e.what())};
+  } catch (const MeshError& e) {
+    return {bad_input, tool + ": error: invalid mesh: " + with_flags(app, e.what())};
+  } catch (const IoError& e) {
+    return {bad_input, tool + ": error: " + with_flags(app, e.what())};
+  } catch (const ResourceError& e) {
+    return {out_of_memory, tool + ": error: " + with_flags(app, e.what())};
+  } catch (const std::bad_alloc&) {
+    const double estimate = last_memory_estimate();
+    return {out_of_memory,
+            tool + ": error: out of memory" +
+                (estimate > 0 ? " (the estimate for this run was about " + size_text(estimate) + ")"
+                              : std::string()) +
+                ": give the tool more memory (ulimit -v, a larger machine) or a smaller "
+                "input; --max-memory stops a run whose estimate is too large before it starts"};
+  } catch (const std::exception& e) {
+    return {internal, tool + ": internal error: " + e.what()};
+  }
+}
+
+int run_body(CLI::App& app, int argc, char** argv, CommonOptions& options, const Ranks& ranks,
+             const std::function<int(const dist::Communicator&)>& body) {
+  const dist::Communicator& comm = ranks.comm();
   g_args.assign(argv, argv + argc);
   try {
     app.parse(argc, argv);
@@ -201,6 +236,7 @@ int run(CLI::App& app, int argc, char** argv, CommonOptions& options,
     return code == 0 ? ok : usage;
   }
   const std::string tool = app.get_name();
+  // Every rank logs the same lines: rank 0 prints them.
   set_log_sink(
       [tool, &app](LogLevel level, std::string_view message) {
         const char* tag = level >= LogLevel::error     ? "error: "
@@ -208,46 +244,81 @@ int run(CLI::App& app, int argc, char** argv, CommonOptions& options,
                                                        : "";
         std::cerr << tool << ": " << tag << with_flags(app, message) << '\n';
       },
-      options.quiet ? LogLevel::error
-                    : options.verbose >= 2 ? LogLevel::debug
-                    : options.verbose == 1 ? LogLevel::info
-                                           : LogLevel::warning);
+      comm.rank() > 0        ? LogLevel::off
+      : options.quiet        ? LogLevel::error
+      : options.verbose >= 2 ? LogLevel::debug
+      : options.verbose == 1 ? LogLevel::info
+                             : LogLevel::warning);
   io::remove_temp_files_on_signals();
   try {
     set_threads(options.threads);
     (void)options.memory_limit();  // a bad --max-memory is a usage error before any work
     io::OutputBatch outputs;
-    const int code = body();
+    const int code = body(comm);
     outputs.commit();
     return code;
-  } catch (const OptionError& e) {
-    std::cerr << tool << ": error: " << with_flags(app, e.what()) << '\n';
-    return usage;
-  } catch (const InputError& e) {
-    std::cerr << tool << ": error: " << with_flags(app, e.what()) << '\n';
-    return bad_input;
-  } catch (const MeshError& e) {
-    std::cerr << tool << ": error: invalid mesh: " << with_flags(app, e.what()) << '\n';
-    return bad_input;
-  } catch (const IoError& e) {
-    std::cerr << tool << ": error: " << with_flags(app, e.what()) << '\n';
-    return bad_input;
-  } catch (const ResourceError& e) {
-    std::cerr << tool << ": error: " << with_flags(app, e.what()) << '\n';
-    return out_of_memory;
-  } catch (const std::bad_alloc&) {
-    const double estimate = last_memory_estimate();
-    std::cerr << tool << ": error: out of memory"
-              << (estimate > 0 ? " (the estimate for this run was about " +
-                                     size_text(estimate) + ")"
-                               : std::string())
-              << ": give the tool more memory (ulimit -v, a larger machine) or a smaller "
-                 "input; --max-memory stops a run whose estimate is too large before it starts\n";
-    return out_of_memory;
-  } catch (const std::exception& e) {
-    std::cerr << tool << ": internal error: " << e.what() << '\n';
-    return internal;
+  } catch (const RankError& e) {
+    if (comm.rank() == 0) std::cerr << e.what() << '\n';
+    return e.code();
+  } catch (...) {
+    const auto [code, line] = describe(app, std::current_exception());
+    if (comm.size() > 1) {
+      std::cerr << "rank " << comm.rank() << ": " << line << '\n';
+      comm.abort(code);
+    }
+    std::cerr << line << '\n';
+    return code;
   }
+}
+
+// Starts the ranks, then runs the tool on them.
+int start(CLI::App& app, int argc, char** argv, CommonOptions& options,
+          const std::function<int(const dist::Communicator&)>& body) {
+  std::unique_ptr<Ranks> ranks;
+  try {
+    ranks = std::make_unique<Ranks>(argc, argv);
+  } catch (const std::exception& e) {
+    std::cerr << app.get_name() << ": error: " << e.what() << '\n';
+    return usage;
+  }
+  return run_body(app, argc, argv, options, *ranks, body);
+}
+
+}  // namespace
+
+void on_every_rank(const dist::Communicator& comm, const CLI::App& app,
+                   const std::function<void()>& f) {
+  if (comm.size() == 1) return f();
+  dist::Buffer mine;
+  try {
+    f();
+    mine.put(ok);
+  } catch (...) {
+    const auto [code, line] = describe(app, std::current_exception());
+    mine.put(code);
+    mine.put_vector(std::vector<char>(line.begin(), line.end()));
+  }
+  for (dist::Buffer& b : dist::all_gather(comm, mine)) {
+    const int code = b.get<int>();
+    if (code == ok) continue;
+    const std::vector<char> line = b.get_vector<char>();
+    throw RankError(code, std::string(line.begin(), line.end()));
+  }
+}
+
+int run(CLI::App& app, int argc, char** argv, CommonOptions& options,
+        const std::function<int()>& body) {
+  return start(app, argc, argv, options, [&](const dist::Communicator& comm) {
+    if (comm.size() > 1)
+      throw RankError(usage, app.get_name() + ": error: runs on one process, not on the " +
+                                 std::to_string(comm.size()) + " of this MPI job");
+    return body();
+  });
+}
+
+int run_on_ranks(CLI::App& app, int argc, char** argv, CommonOptions& options,
+                 const std::function<int(const dist::Communicator&)>& body) {
+  return start(app, argc, argv, options, body);
 }
 
 Progress terminal_progress(const CommonOptions& options) {
@@ -255,8 +326,8 @@ Progress terminal_progress(const CommonOptions& options) {
   return [](std::string_view phase, double fraction) {
     constexpr int width = 30;
     const int filled = static_cast<int>(fraction * width + 0.5);
-    std::fprintf(stderr, "\r%-24.*s [%.*s%*s] %3d%%", static_cast<int>(phase.size()),
-                 phase.data(), filled, "##############################", width - filled, "",
+    std::fprintf(stderr, "\r%-24.*s [%.*s%*s] %3d%%", static_cast<int>(phase.size()), phase.data(),
+                 filled, "##############################", width - filled, "",
                  static_cast<int>(fraction * 100 + 0.5));
     if (fraction >= 1.0) std::fputc('\n', stderr);
     std::fflush(stderr);

@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -13,6 +14,7 @@
 #include "file_checks.h"
 #include "hexadapt/core/log.h"
 #include "hexadapt/core/timer.h"
+#include "hexadapt/dist/communicator.h"
 #include "hexadapt/io/assigned_grid_file.h"
 #include "hexadapt/io/fractions_reader.h"
 #include "hexadapt/io/mesh_file.h"
@@ -81,8 +83,31 @@ std::string with_flags(const CLI::App& app, std::string_view text);
 /// `body` returns the exit code. The files `body` writes form one io::OutputBatch: they appear
 /// when `body` returns, and none does when it throws or a signal (SIGTERM, SIGINT, SIGHUP)
 /// ends the run.
+/// The tool runs on one process: started as several (mpirun -np 2), it stops with a usage
+/// error.
 int run(CLI::App& app, int argc, char** argv, CommonOptions& options,
         const std::function<int()>& body);
+/// The same for a tool that runs on the ranks of an MPI job (ranks.h): `body` gets them. On
+/// more than one rank, only rank 0 logs and prints errors; an error that on_every_rank did
+/// not make common to every rank ends the job (Communicator::abort) with its exit code.
+int run_on_ranks(CLI::App& app, int argc, char** argv, CommonOptions& options,
+                 const std::function<int(const dist::Communicator&)>& body);
+
+/// An error every rank of a run agreed on: its exit code and the line printed for it.
+class RankError : public std::runtime_error {
+ public:
+  RankError(int code, const std::string& line) : std::runtime_error(line), code_(code) {}
+  int code() const { return code_; }
+
+ private:
+  int code_;
+};
+
+/// Runs `f` on every rank (collectively); when it throws on some, every rank throws the
+/// RankError of the lowest such rank, so that all stop together with one message. On one
+/// rank, f's exception passes unchanged.
+void on_every_rank(const dist::Communicator& comm, const CLI::App& app,
+                   const std::function<void()>& f);
 
 /// A progress callback that draws a bar on stderr when it is a terminal and -q is off;
 /// nullptr otherwise.

@@ -366,16 +366,16 @@ CorrectionResult correct_assignment(const M& mesh, const Fractions& fractions,
   result.solved = !result.failure;
   result.times.emplace_back("correct", phase.seconds());
   index_t changed = 0;
-  double cost_initial = 0, cost_final = 0;
+  ExactSum cost_initial, cost_final;
   for (index_t i = where.block.owned_cell_first; i < where.block.owned_cell_end; ++i) {
     const CellId c(i);
     changed += result.labels[c] != initial[c] ? 1 : 0;
-    cost_initial += cell_cost(fractions, corrector.volumes(), c, initial[c]);
-    cost_final += cell_cost(fractions, corrector.volumes(), c, result.labels[c]);
+    cost_initial.add(cell_cost(fractions, corrector.volumes(), c, initial[c]));
+    cost_final.add(cell_cost(fractions, corrector.volumes(), c, result.labels[c]));
   }
   result.cells_changed = dist::sum_in_rank_order(where.comm, changed);
-  result.cost_initial = dist::sum_in_rank_order(where.comm, cost_initial);
-  result.cost_final = dist::sum_in_rank_order(where.comm, cost_final);
+  result.cost_initial = dist::exact_sum(where.comm, cost_initial);
+  result.cost_final = dist::exact_sum(where.comm, cost_final);
   result.times.emplace_back("total", total.seconds());
   return result;
 }

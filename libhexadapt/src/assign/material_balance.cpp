@@ -10,23 +10,24 @@ template <class M>
 std::vector<MaterialBalance> material_balance(const M& mesh, const Fractions& fractions,
                                               const CellMaterials& labels,
                                               const dist::Distribution& where) {
-  std::vector<MaterialBalance> out(static_cast<std::size_t>(fractions.n_materials()));
-  double domain = 0;
-  // serial: the same sums at any thread count
+  const auto n = static_cast<std::size_t>(fractions.n_materials());
+  std::vector<MaterialBalance> out(n);
+  // Exact sums: the same figures at any thread or rank count.
+  ExactSum domain_sum;
+  std::vector<ExactSum> input(n), assigned(n);
   for (CellId c : IdRange<CellId>(where.block.owned_cell_first, where.block.owned_cell_end)) {
     const double v = std::abs(mesh.cell_volume(c));
-    domain += v;
-    for (int m = 0; m < fractions.n_materials(); ++m)
-      out[static_cast<std::size_t>(m)].input_volume += fractions(c, m) * v;
-    MaterialBalance& a = out[static_cast<std::size_t>(labels[c])];
-    a.assigned_volume += v;
-    ++a.assigned_cells;
+    domain_sum.add(v);
+    for (std::size_t m = 0; m < n; ++m) input[m].add(fractions(c, static_cast<int>(m)) * v);
+    const auto m = static_cast<std::size_t>(labels[c]);
+    assigned[m].add(v);
+    ++out[m].assigned_cells;
   }
-  domain = dist::sum_in_rank_order(where.comm, domain);
-  for (MaterialBalance& b : out) {
-    b.input_volume = dist::sum_in_rank_order(where.comm, b.input_volume);
-    b.assigned_volume = dist::sum_in_rank_order(where.comm, b.assigned_volume);
-    b.assigned_cells = dist::sum_in_rank_order(where.comm, b.assigned_cells);
+  const double domain = dist::exact_sum(where.comm, domain_sum);
+  for (std::size_t m = 0; m < n; ++m) {
+    out[m].input_volume = dist::exact_sum(where.comm, input[m]);
+    out[m].assigned_volume = dist::exact_sum(where.comm, assigned[m]);
+    out[m].assigned_cells = dist::sum_in_rank_order(where.comm, out[m].assigned_cells);
   }
   for (MaterialBalance& b : out) b.input_share = domain > 0 ? b.input_volume / domain : 0;
   return out;

@@ -1,5 +1,7 @@
 #include "hexadapt/dist/communicator.h"
 
+#include <cstdlib>
+
 #include "hexadapt/core/error.h"
 
 namespace hexadapt::dist {
@@ -7,6 +9,10 @@ namespace hexadapt::dist {
 const Communicator& serial() {
   static const SerialCommunicator one;
   return one;
+}
+
+void SerialCommunicator::abort(int code) const {
+  std::exit(code);
 }
 
 void Buffer::check(std::uint64_t n) const {
@@ -19,6 +25,25 @@ void Buffer::check(std::uint64_t n) const {
 std::vector<Buffer> all_gather(const Communicator& comm, const Buffer& mine) {
   std::vector<Buffer> out;
   for (auto& bytes : comm.all_gather(mine.bytes())) out.emplace_back(std::move(bytes));
+  return out;
+}
+
+double exact_sum(const Communicator& comm, const ExactSum& mine) {
+  if (comm.size() == 1) return mine.value();
+  Buffer b;
+  b.put(mine.canonical());
+  b.put(mine.non_finite());
+  ExactSum total;
+  for (Buffer& r : all_gather(comm, b)) {
+    const auto digits = r.get<std::array<std::int64_t, ExactSum::digits>>();
+    total.add(ExactSum::from(digits, r.get<double>()));
+  }
+  return total.value();
+}
+
+std::vector<Buffer> gather(const Communicator& comm, const Buffer& mine, int root) {
+  std::vector<Buffer> out;
+  for (auto& bytes : comm.gather(mine.bytes(), root)) out.emplace_back(std::move(bytes));
   return out;
 }
 

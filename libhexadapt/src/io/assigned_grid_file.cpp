@@ -35,9 +35,10 @@ void replace_metadata(MeshData& data, const std::string& key, std::string value)
 }  // namespace
 
 AssignedGrid to_assigned_grid(const MeshData& data, const AssignedGridOptions& options,
-                              const std::string& file, FractionReport* report) {
+                              const std::string& file, FractionReport* report,
+                              const dist::Block* block) {
   AssignedGrid grid;
-  grid.fractions = extract_fractions(data, options.fractions, report, file);
+  grid.fractions = extract_fractions(data, options.fractions, report, file, block);
   grid.material = materials_of(data, grid.fractions, options, file);
   grid.mesh = to_mesh(data, file);
   return grid;

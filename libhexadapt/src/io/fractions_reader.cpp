@@ -33,8 +33,9 @@ std::vector<std::string> requested_arrays(const MeshData& data,
     if (!data.find_cell_array(n)) {
       std::string known;
       for (const auto& a : data.cell_data) known += (known.empty() ? "'" : ", '") + a.name + "'";
-      throw InputError(file, "", "no cell array named '" + n + "' (the cell arrays: " +
-                                     (known.empty() ? "none" : known) + ")");
+      throw InputError(file, "",
+                       "no cell array named '" + n +
+                           "' (the cell arrays: " + (known.empty() ? "none" : known) + ")");
     }
   return out;
 }
@@ -58,8 +59,9 @@ Selection fraction_arrays(const MeshData& data, const FractionOptions& options,
         names.push_back(a.name.substr(3));
       }
     if (s.arrays.empty())
-      throw InputError(file, "", "no cell array named vf_<material>; name the fraction "
-                                 "arrays explicitly");
+      throw InputError(file, "",
+                       "no cell array named vf_<material>; name the fraction "
+                       "arrays explicitly");
   } else {
     for (const auto& n : requested_arrays(data, options.arrays, file)) {
       s.arrays.push_back(data.find_cell_array(n));
@@ -68,9 +70,9 @@ Selection fraction_arrays(const MeshData& data, const FractionOptions& options,
   }
   for (const auto* a : s.arrays)
     if (a->n_components != 1)
-      throw InputError(file, "", "fraction array '" + a->name + "' has " +
-                                     std::to_string(a->n_components) +
-                                     " components, expected 1");
+      throw InputError(file, "",
+                       "fraction array '" + a->name + "' has " + std::to_string(a->n_components) +
+                           " components, expected 1");
   for (std::size_t k = 0; k < s.arrays.size(); ++k) s.material.push_back(static_cast<int>(k));
   if (options.void_material.empty()) return s;
   const auto named = std::find(names.begin(), names.end(), options.void_material);
@@ -85,7 +87,10 @@ Selection fraction_arrays(const MeshData& data, const FractionOptions& options,
   return s;
 }
 
-std::string cell_where(CellId c) { return "cell " + std::to_string(c.value()); }
+// A cell named by its id in the whole grid: `first` is the global id of the data's cell 0.
+std::string cell_where(CellId c, std::int64_t first) {
+  return "cell " + std::to_string(first + c.value());
+}
 
 StoredPrecision stored_precision(const Selection& s) {
   for (const auto* a : s.arrays)
@@ -94,8 +99,8 @@ StoredPrecision stored_precision(const Selection& s) {
 }
 
 // Reads cell c's values into f, validated and clipped into [0, 1]; returns their sum.
-double read_cell(const Selection& s, CellId c, const FractionOptions& options, Fractions& f,
-                 FractionReport& rep, const std::string& file) {
+double read_cell(const Selection& s, CellId c, std::int64_t first, const FractionOptions& options,
+                 Fractions& f, FractionReport& rep, const std::string& file) {
   double sum = 0;
   for (std::size_t m = 0; m < s.arrays.size(); ++m) {
     double v = s.arrays[m]->values[c.idx()];
@@ -103,7 +108,7 @@ double read_cell(const Selection& s, CellId c, const FractionOptions& options, F
       std::ostringstream msg;
       msg << "fraction " << s.arrays[m]->name << " = " << v << " is outside [0, 1] (tolerance "
           << options.value_tolerance << ")";
-      throw InputError(file, cell_where(c), msg.str());
+      throw InputError(file, cell_where(c, first), msg.str());
     }
     if (v < 0 || v > 1) {
       v = std::clamp(v, 0.0, 1.0);
@@ -134,8 +139,8 @@ double accepting(double x) {
 // The error for cell c, whose sum is outside the tolerance: the sum, by how much, the
 // tolerance and where it came from, and the --sum-tolerance that would accept this cell and
 // every cell of the file. A sum below 1 can also take a void material; one above 1 cannot.
-[[noreturn]] void throw_sum_error(const Selection& s, index_t n_cells, CellId c, double sum,
-                                  const FractionReport& rep, const std::string& file) {
+[[noreturn]] void throw_sum_error(const Selection& s, index_t n_cells, CellId c, std::int64_t first,
+                                  double sum, const FractionReport& rep, const std::string& file) {
   double largest = 0;
   for (CellId k : id_range<CellId>(n_cells)) largest = std::max(largest, sum_error(s, k));
   const double err = std::abs(sum - 1);
@@ -149,11 +154,12 @@ double accepting(double x) {
   if (sum < 1) msg << "name a void material ({void_material} NAME) to receive the remainder, or ";
   msg << "{sum_tolerance} " << accepting(err) << " would rescale this cell";
   if (largest > err) msg << ", {sum_tolerance} " << accepting(largest) << " every cell";
-  throw InputError(file, cell_where(c), msg.str());
+  throw InputError(file, cell_where(c, first), msg.str());
 }
 
 // Sets the traces of cell c to 0 and rescales it to sum 1.
-void clean_cell(CellId c, Fractions& f, FractionReport& rep, const std::string& file) {
+void clean_cell(CellId c, std::int64_t first, Fractions& f, FractionReport& rep,
+                const std::string& file) {
   double kept = 0;
   for (int m = 0; m < f.n_materials(); ++m) {
     if (f(c, m) > 0 && f(c, m) < rep.tolerances.zero_below) {
@@ -162,7 +168,7 @@ void clean_cell(CellId c, Fractions& f, FractionReport& rep, const std::string& 
     }
     kept += f(c, m);
   }
-  if (kept <= 0) throw InputError(file, cell_where(c), "every fraction is a trace or zero");
+  if (kept <= 0) throw InputError(file, cell_where(c, first), "every fraction is a trace or zero");
   if (std::abs(kept - 1) > 1e-12) {
     ++rep.rescaled_cells;
     for (int m = 0; m < f.n_materials(); ++m) f(c, m) /= kept;
@@ -172,8 +178,13 @@ void clean_cell(CellId c, Fractions& f, FractionReport& rep, const std::string& 
 }  // namespace
 
 Fractions extract_fractions(const MeshData& data, const FractionOptions& options,
-                            FractionReport* report, const std::string& file) {
+                            FractionReport* report, const std::string& file,
+                            const dist::Block* block) {
   FractionReport rep;
+  if (block && !options.labels.empty())
+    throw OptionError(
+        "a label map gives one material per value found in the whole grid: it cannot be read "
+        "one block at a time (run on one rank, or give fraction arrays)");
   if (!options.labels.empty()) {
     rep.tolerances =
         decide_tolerances(options.sum_tolerance, options.zero_below, StoredPrecision::float64, 1);
@@ -187,16 +198,20 @@ Fractions extract_fractions(const MeshData& data, const FractionOptions& options
   rep.tolerances = decide_tolerances(options.sum_tolerance, options.zero_below, rep.precision,
                                      static_cast<int>(selected.arrays.size()));
   const double tolerance = rep.tolerances.sum_tolerance;
+  const std::int64_t first = block ? block->cell_offset : 0;
+  FractionReport ghosts = rep;  // what the cells another rank owns would add
   for (CellId c : id_range<CellId>(data.n_cells())) {
+    FractionReport& counted = block && !block->owns(c) ? ghosts : rep;
     // Validate and clip, check the sum on the values as given, then drop traces and rescale.
-    double sum = read_cell(selected, c, options, f, rep, file);
+    double sum = read_cell(selected, c, first, options, f, counted, file);
     if (selected.void_material >= 0 && sum <= 1 + tolerance) {
       f(c, selected.void_material) = std::max(0.0, 1 - sum);
       sum += f(c, selected.void_material);
     }
-    rep.max_sum_error = std::max(rep.max_sum_error, std::abs(sum - 1));
-    if (std::abs(sum - 1) > tolerance) throw_sum_error(selected, data.n_cells(), c, sum, rep, file);
-    clean_cell(c, f, rep, file);
+    counted.max_sum_error = std::max(counted.max_sum_error, std::abs(sum - 1));
+    if (std::abs(sum - 1) > tolerance)
+      throw_sum_error(selected, data.n_cells(), c, first, sum, counted, file);
+    clean_cell(c, first, f, counted, file);
   }
   if (report) *report = rep;
   return f;

@@ -15,6 +15,8 @@
 #include "hexadapt/io/vtk_collection.h"
 #include "hexadapt/io/vtk_legacy.h"
 #include "hexadapt/io/vtk_xml.h"
+#include "vtk_collection.h"
+#include "vtk_xml_document.h"
 
 namespace hexadapt::io {
 
@@ -57,7 +59,9 @@ std::string read_whole_file(const std::string& path) {
   return content;
 }
 
-bool is_exodus(const std::string& ext) { return ext == ".exo" || ext == ".e" || ext == ".g"; }
+bool is_exodus(const std::string& ext) {
+  return ext == ".exo" || ext == ".e" || ext == ".g";
+}
 
 }  // namespace
 
@@ -72,7 +76,11 @@ ExodusSets parse_exodus_sets(const std::string& text) {
 
 MeshData read_mesh(const std::string& path, const ReadOptions& options) {
   const std::string ext = extension_of(path);
-  if (is_exodus(ext)) return read_exodus(path, options);
+  if (is_exodus(ext)) {
+    MeshData data = read_exodus(path, options);
+    if (options.layers) keep_layers(data, *options.layers, path);
+    return data;
+  }
   const bool xml = ext == ".vtu" || ext == ".vti" || ext == ".vtr" || ext == ".vts";
   const bool collection = ext == ".pvtu" || ext == ".pvts" || ext == ".pvtr" || ext == ".pvti" ||
                           ext == ".vtm" || ext == ".pvd";
@@ -80,11 +88,35 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
     throw OptionError(path + ": unknown mesh file extension " + quote_token(ext) +
                       " (supported for reading: .vtk .vtu .vti .vtr .vts .pvtu .pvts .pvtr "
                       ".pvti .vtm .pvd .txt .exo .e .g)");
+  const bool structured_collection = ext == ".pvts" || ext == ".pvtr" || ext == ".pvti";
+  if (options.layers && collection && !structured_collection)
+    throw OptionError(path +
+                      ": a window of layers needs a structured grid (.vti .vtr .vts, their "
+                      "parallel forms .pvti .pvtr .pvts, or a structured .vtk)");
   const std::string content = read_whole_file(path);
-  if (ext == ".vtk") return read_vtk_legacy(content, path, options);
-  if (ext == ".txt") return read_text_case(content, path);
   if (collection) return read_vtk_collection(content, path, options, read_whole_file);
-  return read_vtk_xml(content, path, options);
+  MeshData data = ext == ".vtk"   ? read_vtk_legacy(content, path, options)
+                  : ext == ".txt" ? read_text_case(content, path)
+                                  : read_vtk_xml(content, path, options);
+  if (options.layers) keep_layers(data, *options.layers, path);
+  return data;
+}
+
+StructuredShape structured_shape(const std::string& path, const ReadOptions& options) {
+  const std::string ext = extension_of(path);
+  if (ext == ".pvts" || ext == ".pvtr" || ext == ".pvti") {
+    detail::VtkXmlDocument doc;
+    detail::load_vtk_xml(doc, read_whole_file(path), path);
+    return detail::parallel_structured_shape(doc);
+  }
+  ReadOptions whole = options;
+  whole.layers.reset();
+  const MeshData data = read_mesh(path, whole);
+  if (data.dim == 0 || data.structured_cells[0] == 0)
+    throw InputError(path, "",
+                     "not a structured grid (.vti .vtr .vts, their parallel forms "
+                     ".pvti .pvtr .pvts, or a structured .vtk)");
+  return {data.dim, data.structured_cells};
 }
 
 void write_mesh(const MeshData& data, const std::string& path, const WriteOptions& options) {

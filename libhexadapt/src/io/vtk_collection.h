@@ -55,8 +55,12 @@ bool is_ghost_cell(const DataArray* ghost, std::size_t c);
 /// and the vtkGhostType arrays; returns how many cells were removed.
 index_t drop_ghost_cells(MeshData& data);
 
-/// .pvts .pvtr .pvti: the pieces tiled into their WholeExtent.
+/// .pvts .pvtr .pvti: the pieces tiled into their WholeExtent, or into the window of
+/// ctx.options.layers (the pieces outside it not read).
 MeshData read_parallel_structured(const VtkXmlDocument& doc, const CollectionContext& ctx);
+
+/// .pvts .pvtr .pvti: the shape of the grid, from the WholeExtent alone.
+StructuredShape parallel_structured_shape(const VtkXmlDocument& doc);
 
 /// .pvd: the DataSet elements of the time step the options choose.
 std::vector<pugi::xml_node> select_time_step(const VtkXmlDocument& doc, const ReadOptions& options);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "hexadapt/core/error.h"
 #include "vtk_cells.h"
@@ -116,22 +117,23 @@ class Tiler {
   void add(const Piece& p, double tolerance, const std::string& file) {
     const Lattice l = lattice_of(p.extent);
     for_each(l.points, [&](std::size_t local, const std::array<std::size_t, 3>& ijk) {
-      const std::size_t g = global(ijk, p.extent, lattice_.points);
+      const std::optional<std::size_t> g = global(ijk, p.extent, lattice_.points);
+      if (!g) return;
       const Vec3& x = p.data.points[local];
-      if (point_set_[g] && (points_[g] - x).norm() > tolerance)
+      if (point_set_[*g] && (points_[*g] - x).norm() > tolerance)
         throw InputError(file, quote_token(p.file),
                          "point " + std::to_string(local) +
                              " is not where the other pieces put the same grid point");
-      points_[g] = x;
-      point_set_[g] = 1;
-      for (DataArray& a : data_.point_data) copy(a, *p.data.find_point_array(a.name), local, g);
+      points_[*g] = x;
+      point_set_[*g] = 1;
+      for (DataArray& a : data_.point_data) copy(a, *p.data.find_point_array(a.name), local, *g);
     });
     const DataArray* ghost = p.data.find_cell_array(ghost_array);
     for_each(l.cells, [&](std::size_t local, const std::array<std::size_t, 3>& ijk) {
-      const std::size_t g = global(ijk, p.extent, lattice_.cells);
-      if (cell_set_[g] || is_ghost_cell(ghost, local)) return;
-      cell_set_[g] = 1;
-      for (DataArray& a : data_.cell_data) copy(a, *p.data.find_cell_array(a.name), local, g);
+      const std::optional<std::size_t> g = global(ijk, p.extent, lattice_.cells);
+      if (!g || cell_set_[*g] || is_ghost_cell(ghost, local)) return;
+      cell_set_[*g] = 1;
+      for (DataArray& a : data_.cell_data) copy(a, *p.data.find_cell_array(a.name), local, *g);
     });
   }
 
@@ -167,12 +169,16 @@ class Tiler {
         for (std::size_t i = 0; i < n[0]; ++i) f(local++, std::array<std::size_t, 3>{i, j, k});
   }
 
-  // The index in the whole grid of local (i, j, k) of a piece with extent e.
-  std::size_t global(const std::array<std::size_t, 3>& ijk, const Extent& e,
-                     const std::array<std::size_t, 3>& n) const {
+  // The index in the tiled extent of local (i, j, k) of a piece with extent e; none when it
+  // lies outside (a window of layers tiles part of the whole extent).
+  std::optional<std::size_t> global(const std::array<std::size_t, 3>& ijk, const Extent& e,
+                                    const std::array<std::size_t, 3>& n) const {
     std::array<std::size_t, 3> g{};
-    for (std::size_t a = 0; a < 3; ++a)
-      g[a] = ijk[a] + static_cast<std::size_t>(e[2 * a] - whole_[2 * a]);
+    for (std::size_t a = 0; a < 3; ++a) {
+      const std::int64_t at = static_cast<std::int64_t>(ijk[a]) + e[2 * a] - whole_[2 * a];
+      if (at < 0 || at >= static_cast<std::int64_t>(n[a])) return std::nullopt;
+      g[a] = static_cast<std::size_t>(at);
+    }
     return g[0] + n[0] * (g[1] + n[1] * g[2]);
   }
 
@@ -184,15 +190,11 @@ class Tiler {
 };
 
 void check_piece(const VtkXmlDocument& doc, const pugi::xml_node& e, const Piece& p,
-                 const Extent& announced, const Extent& whole, const Piece& first) {
+                 const Extent& announced, const Piece& first) {
   if (p.extent != announced)
     throw InputError(doc.file, place(e),
                      "Extent " + extent_text(announced) + " but the piece " + quote_token(p.file) +
                          " has " + extent_text(p.extent));
-  if (!inside(p.extent, whole))
-    throw InputError(
-        doc.file, place(e),
-        "Extent " + extent_text(p.extent) + " is not inside the WholeExtent " + extent_text(whole));
   for (const auto& [mine, theirs] : {std::pair{&p.data.cell_data, &first.data.cell_data},
                                      std::pair{&p.data.point_data, &first.data.point_data}})
     for (const DataArray& a : *theirs) {
@@ -214,7 +216,59 @@ double agreement_tolerance(const std::vector<Piece>& pieces, double weld_toleran
   return std::max(weld_tolerance, 1e-12) * std::max(size, 1e-300);
 }
 
+// The file axis a window of layers cuts: the last with more than one point.
+std::size_t cut_axis(const Extent& whole) {
+  std::size_t axis = 0;
+  for (std::size_t a = 0; a < 3; ++a)
+    if (whole[2 * a + 1] > whole[2 * a]) axis = a;
+  return axis;
+}
+
+// The part of `whole` that the cell layers [first, end) of its cut axis span.
+Extent window_of(const VtkXmlDocument& doc, const Extent& whole, const std::array<int, 2>& layers) {
+  const std::size_t a = cut_axis(whole);
+  const std::int64_t n = whole[2 * a + 1] - whole[2 * a];
+  const auto [first, end] = layers;
+  if (first < 0 || end <= first || end > n)
+    throw InputError(doc.file, "WholeExtent " + extent_text(whole),
+                     "cell layers " + std::to_string(first) + " to " + std::to_string(end) +
+                         " are not inside the grid's " + std::to_string(n) + " layers");
+  Extent w = whole;
+  w[2 * a] = whole[2 * a] + first;
+  w[2 * a + 1] = whole[2 * a] + end;
+  return w;
+}
+
+// The cells of e within w (both point extents).
+std::size_t cells_within(const Extent& e, const Extent& w) {
+  std::size_t n = 1;
+  for (std::size_t a = 0; a < 3; ++a) {
+    const std::int64_t lo = std::max(e[2 * a], w[2 * a]), hi = std::min(e[2 * a + 1], w[2 * a + 1]);
+    if (w[2 * a + 1] == w[2 * a]) continue;  // a flat axis
+    if (hi <= lo) return 0;
+    n *= static_cast<std::size_t>(hi - lo);
+  }
+  return n;
+}
+
 }  // namespace
+
+StructuredShape parallel_structured_shape(const VtkXmlDocument& doc) {
+  const pugi::xml_node dataset = doc.root.child(doc.type.c_str());
+  if (!dataset) throw InputError(doc.file, place(doc.root), "no <" + doc.type + "> element");
+  const Extent whole = extent_attribute(doc, dataset, "WholeExtent");
+  check_whole(doc, dataset, whole);
+  // As fill_structured makes the grid: one flat axis makes it 2D, in the other two axes.
+  std::vector<int> cells;
+  for (std::size_t a = 0; a < 3; ++a)
+    if (whole[2 * a + 1] > whole[2 * a])
+      cells.push_back(static_cast<int>(whole[2 * a + 1] - whole[2 * a]));
+  if (cells.size() < 2)
+    throw InputError(doc.file, place(dataset),
+                     "a structured data set with a single row of points has no quads or hexes");
+  cells.resize(3, 0);
+  return {cells[2] > 0 ? 3 : 2, {cells[0], cells[1], cells[2]}};
+}
 
 MeshData read_parallel_structured(const VtkXmlDocument& doc, const CollectionContext& ctx) {
   const pugi::xml_node dataset = doc.root.child(doc.type.c_str());
@@ -222,23 +276,31 @@ MeshData read_parallel_structured(const VtkXmlDocument& doc, const CollectionCon
   const std::string type = doc.type.substr(1);  // PRectilinearGrid -> RectilinearGrid
   const Extent whole = extent_attribute(doc, dataset, "WholeExtent");
   check_whole(doc, dataset, whole);
+  // With a window of layers, the pieces without a cell in it are not read.
+  const Extent tiled = ctx.options.layers ? window_of(doc, whole, *ctx.options.layers) : whole;
   std::vector<Piece> pieces;
   std::size_t piece_cells = 0;
   for (const pugi::xml_node e : dataset.children("Piece")) {
     const Extent announced = extent_attribute(doc, e, "Extent");
     if (empty(announced)) continue;
+    if (!inside(announced, whole))
+      throw InputError(doc.file, place(e),
+                       "Extent " + extent_text(announced) + " is not inside the WholeExtent " +
+                           extent_text(whole));
+    if (cells_within(announced, tiled) == 0) continue;
     pieces.push_back(read_piece(doc, e, type, ctx));
-    check_piece(doc, e, pieces.back(), announced, whole, pieces.front());
-    piece_cells += lattice_of(announced).n_cells();
+    check_piece(doc, e, pieces.back(), announced, pieces.front());
+    piece_cells += cells_within(announced, tiled);
   }
   if (pieces.empty()) throw InputError(doc.file, place(dataset), "no piece with cells");
   // Pieces inside the whole extent that hold fewer cells than it cannot tile it.
-  const Lattice l = lattice_of(whole);
+  const Lattice l = lattice_of(tiled);
   if (piece_cells < l.n_cells())
     throw InputError(doc.file, place(dataset),
-                     "WholeExtent " + extent_text(whole) + " has " + std::to_string(l.n_cells()) +
+                     (ctx.options.layers ? "the window of layers read, extent " : "WholeExtent ") +
+                         extent_text(tiled) + " has " + std::to_string(l.n_cells()) +
                          " cells but the pieces hold only " + std::to_string(piece_cells));
-  Tiler tiler(whole, pieces.front().data);
+  Tiler tiler(tiled, pieces.front().data);
   const double tolerance = agreement_tolerance(pieces, ctx.options.weld_tolerance);
   for (const Piece& p : pieces) tiler.add(p, tolerance, doc.file);
   tiler.check_covered(doc.file);

@@ -262,4 +262,42 @@ void write_vts(const MeshData& data, const std::string& path, const WriteOptions
   f.write(path);
 }
 
+void write_pvtu(const MeshData& layout, const std::vector<std::string>& pieces,
+                const std::string& path) {
+  check_writable(layout, path);
+  pugi::xml_document doc;
+  auto decl = doc.append_child(pugi::node_declaration);
+  decl.append_attribute("version") = "1.0";
+  pugi::xml_node root = doc.append_child("VTKFile");
+  root.append_attribute("type") = "PUnstructuredGrid";
+  root.append_attribute("version") = "1.0";
+  root.append_attribute("byte_order") =
+      detail::native_little_endian() ? "LittleEndian" : "BigEndian";
+  root.append_attribute("header_type") = "UInt64";
+  if (!layout.metadata.empty())
+    doc.insert_child_before(pugi::node_comment, root)
+        .set_value(detail::metadata_comment(layout.metadata).c_str());
+  pugi::xml_node grid = root.append_child("PUnstructuredGrid");
+  grid.append_attribute("GhostLevel") = 0;
+  const auto declare = [](pugi::xml_node parent, const char* name, ScalarType type, int comps) {
+    pugi::xml_node e = parent.append_child("PDataArray");
+    e.append_attribute("type") = detail::vtk_name(type);
+    e.append_attribute("Name") = name;
+    e.append_attribute("NumberOfComponents") = comps;
+  };
+  pugi::xml_node pd = grid.append_child("PPointData");
+  for (const DataArray& a : layout.point_data) declare(pd, a.name.c_str(), a.type, a.n_components);
+  pugi::xml_node cd = grid.append_child("PCellData");
+  for (const DataArray& a : layout.cell_data) declare(cd, a.name.c_str(), a.type, a.n_components);
+  declare(grid.append_child("PPoints"), "Points", ScalarType::float64, 3);
+  for (const std::string& piece : pieces)
+    grid.append_child("Piece").append_attribute("Source") = piece.c_str();
+  std::ostringstream xml;
+  doc.save(xml, "  ", pugi::format_indent, pugi::encoding_utf8);
+  const std::string text = xml.str();
+  AtomicFile file(path);
+  file.stream().write(text.data(), static_cast<std::streamsize>(text.size()));
+  file.commit();
+}
+
 }  // namespace hexadapt::io

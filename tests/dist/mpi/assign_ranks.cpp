@@ -68,8 +68,8 @@ void expect_same_as_one_rank(const M& whole, const Fractions& fractions,
   EXPECT_EQ(a.cells_changed, b.cells_changed);
   EXPECT_EQ(a.leaves, b.leaves);
   EXPECT_EQ(a.truncated_enumerations, b.truncated_enumerations);
-  EXPECT_NEAR(a.cost_initial, b.cost_initial, 1e-12 * b.cost_initial);
-  EXPECT_NEAR(a.cost_final, b.cost_final, 1e-12 * b.cost_final);
+  EXPECT_EQ(a.cost_initial, b.cost_initial);  // exact sums: the same bits
+  EXPECT_EQ(a.cost_final, b.cost_final);
   ASSERT_EQ(a.failure.has_value(), b.failure.has_value());
   if (a.failure) {
     EXPECT_EQ(a.failure->node, b.failure->node);
@@ -80,8 +80,9 @@ void expect_same_as_one_rank(const M& whole, const Fractions& fractions,
   ASSERT_EQ(r.balance.size(), one.balance.size());
   for (std::size_t m = 0; m < r.balance.size(); ++m) {
     EXPECT_EQ(r.balance[m].assigned_cells, one.balance[m].assigned_cells);
-    EXPECT_NEAR(r.balance[m].input_volume, one.balance[m].input_volume,
-                1e-12 * one.balance[m].input_volume);
+    EXPECT_EQ(r.balance[m].input_volume, one.balance[m].input_volume);
+    EXPECT_EQ(r.balance[m].assigned_volume, one.balance[m].assigned_volume);
+    EXPECT_EQ(r.balance[m].input_share, one.balance[m].input_share);
   }
 }
 

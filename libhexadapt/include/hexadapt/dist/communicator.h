@@ -14,6 +14,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "hexadapt/core/exact_sum.h"
+
 namespace hexadapt::dist {
 
 class Communicator {
@@ -24,8 +26,14 @@ class Communicator {
   /// Every rank's `mine`, indexed by rank, on every rank.
   virtual std::vector<std::vector<std::uint8_t>> all_gather(
       const std::vector<std::uint8_t>& mine) const = 0;
+  /// On rank `root`, every rank's `mine`, indexed by rank; on the others, nothing.
+  virtual std::vector<std::vector<std::uint8_t>> gather(const std::vector<std::uint8_t>& mine,
+                                                        int root) const = 0;
   /// Bytes this rank has sent so far.
   virtual std::uint64_t bytes_sent() const = 0;
+  /// Ends every rank of the job with exit code `code`: what a rank does when it fails where
+  /// the others cannot know it (they would wait for it in the next collective).
+  [[noreturn]] virtual void abort(int code) const = 0;
 };
 
 /// One rank: the gather returns `mine`.
@@ -37,7 +45,12 @@ class SerialCommunicator final : public Communicator {
       const std::vector<std::uint8_t>& mine) const override {
     return {mine};
   }
+  std::vector<std::vector<std::uint8_t>> gather(const std::vector<std::uint8_t>& mine,
+                                                int) const override {
+    return {mine};
+  }
   std::uint64_t bytes_sent() const override { return 0; }
+  [[noreturn]] void abort(int code) const override;
 };
 
 /// A shared one-rank communicator.
@@ -93,6 +106,8 @@ class Buffer {
 
 /// Every rank's buffer, in rank order.
 std::vector<Buffer> all_gather(const Communicator& comm, const Buffer& mine);
+/// On rank `root`, every rank's buffer in rank order; on the others, none.
+std::vector<Buffer> gather(const Communicator& comm, const Buffer& mine, int root);
 
 /// Every rank's values concatenated in rank order.
 template <class T>
@@ -106,6 +121,10 @@ std::vector<T> all_gather_values(const Communicator& comm, const std::vector<T>&
   }
   return out;
 }
+
+/// The exact sum of every rank's accumulator, as a double: the same bits on every rank and
+/// for any split of the values over the ranks.
+double exact_sum(const Communicator& comm, const ExactSum& mine);
 
 /// The sum of every rank's value, added in rank order (the same bits on every rank).
 template <class T>

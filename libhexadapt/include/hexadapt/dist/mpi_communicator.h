@@ -24,7 +24,10 @@ class MpiCommunicator final : public Communicator {
   int size() const override { return size_; }
   std::vector<std::vector<std::uint8_t>> all_gather(
       const std::vector<std::uint8_t>& mine) const override;
+  std::vector<std::vector<std::uint8_t>> gather(const std::vector<std::uint8_t>& mine,
+                                                int root) const override;
   std::uint64_t bytes_sent() const override { return sent_; }
+  [[noreturn]] void abort(int code) const override;
 
  private:
   int rank_ = 0, size_ = 1;

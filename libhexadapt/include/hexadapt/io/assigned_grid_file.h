@@ -31,8 +31,10 @@ struct AssignedGridOptions {
 /// The assigned grid `data` holds (read from `file`, which errors name): its mesh, its
 /// fractions (extract_fractions, which fills `report`) and each cell's material from
 /// options.material. Throws InputError as extract_fractions, to_mesh and read_material_array.
+/// `block`: the data is one rank's block of a distributed grid (extract_fractions).
 AssignedGrid to_assigned_grid(const MeshData& data, const AssignedGridOptions& options,
-                              const std::string& file, FractionReport* report = nullptr);
+                              const std::string& file, FractionReport* report = nullptr,
+                              const dist::Block* block = nullptr);
 
 /// Writes the fractions (vf_<name>), the material (when assigned) and the names of `grid`
 /// into `data`, which holds its mesh: the arrays replace those of the same names.

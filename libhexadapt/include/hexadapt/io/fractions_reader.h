@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "hexadapt/dist/block.h"
 #include "hexadapt/io/mesh_data.h"
 #include "hexadapt/mesh/fraction_tolerances.h"
 #include "hexadapt/mesh/fractions.h"
@@ -53,10 +54,10 @@ struct FractionOptions {
 };
 
 struct FractionReport {
-  index_t clipped_values = 0;    ///< values moved into [0, 1]
-  index_t zeroed_values = 0;     ///< traces set to 0
-  index_t rescaled_cells = 0;    ///< cells whose sum was not 1 (to 1e-12) before rescaling
-  double max_sum_error = 0;      ///< largest |sum - 1| seen before repair
+  index_t clipped_values = 0;  ///< values moved into [0, 1]
+  index_t zeroed_values = 0;   ///< traces set to 0
+  index_t rescaled_cells = 0;  ///< cells whose sum was not 1 (to 1e-12) before rescaling
+  double max_sum_error = 0;    ///< largest |sum - 1| seen before repair
   /// float32 when at least one array read was stored as float32 (a recomputed void
   /// material's array is not read); float64 for label maps.
   StoredPrecision precision = StoredPrecision::float64;
@@ -67,8 +68,12 @@ struct FractionReport {
 /// Reads the fraction arrays of `data` (file name `file` only for error messages), or the
 /// label map when options.labels is set. A sum outside the tolerance is an InputError naming
 /// the cell, its sum and the --sum-tolerance that would accept it and every cell of the file.
+/// When `block` is given, `data` is one rank's block of a distributed grid (dist/block.h):
+/// the report counts the cells it owns only, errors name cells by their global id, and a
+/// label map is an OptionError (its materials are the values of the whole grid).
 Fractions extract_fractions(const MeshData& data, const FractionOptions& options,
-                            FractionReport* report = nullptr, const std::string& file = {});
+                            FractionReport* report = nullptr, const std::string& file = {},
+                            const dist::Block* block = nullptr);
 
 /// The materials of a label map: options.labels names an integer cell array (any numeric
 /// type, values exact integers); one material per distinct value in increasing order, named

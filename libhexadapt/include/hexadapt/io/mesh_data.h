@@ -75,6 +75,12 @@ struct MeshData {
   void check_array_sizes(const std::string& path) const;
 };
 
+/// Cuts a structured grid's data (points, cells, arrays) to the cell layers [first, end) of
+/// its last axis (z in 3D, y in 2D) and the node layers around them (ReadOptions::layers);
+/// `file` names it in errors. Throws OptionError when the data is not a structured grid and
+/// InputError when the layers are not inside it.
+void keep_layers(MeshData& data, const std::array<int, 2>& layers, const std::string& file);
+
 /// Builds the kernel for the data's dimension. Throws MeshError (bad topology) or
 /// InputError (no cells). Node and cell ids are those of the data.
 AnyMesh to_mesh(const MeshData& data);

@@ -14,6 +14,7 @@
 // write never leaves a half file and never clobbers an input.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -27,12 +28,24 @@ namespace hexadapt::io {
 enum class Plane { automatic, xy, yz, xz };
 
 struct ReadOptions {
-  Plane plane = Plane::automatic;  ///< which coordinate plane 2D cells live in
+  Plane plane = Plane::automatic;   ///< which coordinate plane 2D cells live in
   std::optional<std::size_t> step;  ///< 0-based time step to read (time series)
-  std::optional<double> time;  ///< time value to read
+  std::optional<double> time;       ///< time value to read
   /// Pieces of a parallel file: points of different pieces closer than this times the
   /// shortest cell edge at them are one point.
   double weld_tolerance = 1e-6;
+  /// Only the cell layers [first, end) of a structured grid across its last axis (z in 3D,
+  /// the plane's second axis in 2D), with the node layers around them: what one rank of a
+  /// distributed run holds. The pieces of a .pvti/.pvtr/.pvts outside them are not read; a
+  /// single file is read whole, then cut. Other files are an OptionError.
+  std::optional<std::array<int, 2>> layers;
+};
+
+/// A structured grid's dimension and cells per axis in the kernel's order ({nx, ny, 0} in
+/// 2D, its plane mapped to xy).
+struct StructuredShape {
+  int dim = 0;
+  std::array<int, 3> cells{0, 0, 0};
 };
 
 /// Which side sets and node sets an Exodus II file gets: the faces of the domain boundary
@@ -40,8 +53,8 @@ struct ReadOptions {
 enum class ExodusSets { none, boundary, interfaces, all };
 
 struct WriteOptions {
-  bool compress = true;              ///< zlib-compress .vtu data blocks
-  std::size_t compress_above = 1 << 16;  ///< bytes: smaller arrays are written raw
+  bool compress = true;                      ///< zlib-compress .vtu data blocks
+  std::size_t compress_above = 1 << 16;      ///< bytes: smaller arrays are written raw
   ExodusSets exodus_sets = ExodusSets::all;  ///< side and node sets of .exo/.e/.g files
   /// .vtu/.vts: String field-data arrays, which ParaView shows but meshio 5 refuses (it
   /// cannot read such a file): `material_names` and the exact `hexadapt_command`.
@@ -55,5 +68,9 @@ ExodusSets parse_exodus_sets(const std::string& text);
 MeshData read_mesh(const std::string& path, const ReadOptions& options = {});
 /// Throws IoError, or OptionError for an unknown extension.
 void write_mesh(const MeshData& data, const std::string& path, const WriteOptions& options = {});
+
+/// The shape of the structured grid in `path`: a .pvti/.pvtr/.pvts is read to its header
+/// only, another file whole. Throws InputError when the file holds no structured grid.
+StructuredShape structured_shape(const std::string& path, const ReadOptions& options = {});
 
 }  // namespace hexadapt::io

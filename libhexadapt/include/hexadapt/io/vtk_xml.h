@@ -10,6 +10,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "hexadapt/io/mesh_data.h"
 #include "hexadapt/io/mesh_file.h"
@@ -70,5 +71,12 @@ void write_vtu(const MeshData& data, const std::string& path, const WriteOptions
 /// exactly those of that block (a structured source). Throws OptionError when the data is
 /// not structured, IoError on write failure.
 void write_vts(const MeshData& data, const std::string& path, const WriteOptions& options = {});
+
+/// Writes the parallel file (.pvtu) that names `pieces` (.vtu files, relative to its folder)
+/// as one unstructured grid, declaring the point and cell arrays of `layout` (one piece's
+/// data: its arrays' names, types and components, and the metadata). Atomic. Throws
+/// OptionError (no cells in layout), IoError.
+void write_pvtu(const MeshData& layout, const std::vector<std::string>& pieces,
+                const std::string& path);
 
 }  // namespace hexadapt::io

@@ -1,0 +1,131 @@
+#include "rank_files.h"
+
+#include <algorithm>
+
+#include "hexadapt/core/error.h"
+#include "hexadapt/io/vtk_xml.h"
+#include "hexadapt/mesh/structured.h"
+
+namespace hexadapt::cli {
+
+namespace {
+
+bool ends_with(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+std::string piece_path(const std::string& pvtu, int rank) {
+  return pvtu.substr(0, pvtu.size() - 5) + "_" + std::to_string(rank) + ".vtu";
+}
+
+std::string base_name(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+/// The cell layers of the held data this rank owns, relative to the held ones.
+std::array<int, 2> owned_layers(const dist::Slab& slab, int dim) {
+  const dist::Block& b = slab.block;
+  const auto per_layer =
+      static_cast<index_t>(b.held_cells / slab.held[static_cast<std::size_t>(dim - 1)]);
+  return {b.owned_cell_first / per_layer, b.owned_cell_end / per_layer};
+}
+
+void put_array(dist::Buffer& b, const io::DataArray& a) {
+  b.put_vector(a.values);
+}
+
+/// Rank 0's whole grid from every rank's owned piece (node layers shared by two pieces come
+/// from the lower one), with rank 0's metadata and array names and types.
+io::MeshData gathered(const dist::Communicator& comm, const io::MeshData& piece,
+                      const RankInput& input) {
+  const int dim = input.shape.dim;
+  const std::array<int, 3>& cells = input.shape.cells;
+  std::size_t points_per_layer = 1;
+  for (std::size_t a = 0; a + 1 < static_cast<std::size_t>(dim); ++a)
+    points_per_layer *= static_cast<std::size_t>(cells[a]) + 1;
+  const bool last = comm.rank() + 1 == comm.size();
+  // This rank's node layers but the top one, which the rank above sends (the last rank sends
+  // it too).
+  const std::size_t n_points = last ? piece.points.size() : piece.points.size() - points_per_layer;
+  dist::Buffer mine;
+  std::vector<double> xyz;
+  for (std::size_t i = 0; i < n_points; ++i)
+    xyz.insert(xyz.end(), piece.points[i].data(), piece.points[i].data() + 3);
+  mine.put_vector(xyz);
+  for (const io::DataArray& a : piece.cell_data) put_array(mine, a);
+  for (const io::DataArray& a : piece.point_data) {
+    io::DataArray head = a;
+    head.values.resize(n_points * static_cast<std::size_t>(a.n_components));
+    put_array(mine, head);
+  }
+  std::vector<dist::Buffer> all = dist::gather(comm, mine, 0);
+  io::MeshData whole;
+  if (comm.rank() != 0) return whole;
+  whole.dim = dim;
+  whole.metadata = piece.metadata;
+  whole.structured_cells = cells;
+  whole.cell_data = piece.cell_data;
+  whole.point_data = piece.point_data;
+  for (io::DataArray& a : whole.cell_data) a.values.clear();
+  for (io::DataArray& a : whole.point_data) a.values.clear();
+  for (dist::Buffer& b : all) {
+    const std::vector<double> p = b.get_vector<double>();
+    for (std::size_t i = 0; i + 2 < p.size(); i += 3)
+      whole.points.emplace_back(p[i], p[i + 1], p[i + 2]);
+    for (io::DataArray& a : whole.cell_data) {
+      const std::vector<double> v = b.get_vector<double>();
+      a.values.insert(a.values.end(), v.begin(), v.end());
+    }
+    for (io::DataArray& a : whole.point_data) {
+      const std::vector<double> v = b.get_vector<double>();
+      a.values.insert(a.values.end(), v.begin(), v.end());
+    }
+  }
+  append_structured_cells(cells[0], cells[1], dim == 3 ? cells[2] : 0, whole.cells);
+  return whole;
+}
+
+}  // namespace
+
+RankInput read_on_ranks(const dist::Communicator& comm, const CLI::App& app,
+                        const std::string& path, io::ReadOptions options, int ghost_layers) {
+  RankInput in;
+  on_every_rank(comm, app, [&] {
+    in.shape = io::structured_shape(path, options);
+    in.slab =
+        dist::structured_slab(in.shape.cells, in.shape.dim, comm.rank(), comm.size(), ghost_layers);
+  });
+  const auto axis = static_cast<std::size_t>(in.shape.dim - 1);
+  options.layers = {in.slab.first_layer, in.slab.first_layer + in.slab.held[axis]};
+  on_every_rank(comm, app, [&] { in.data = io::read_mesh(path, options); });
+  return in;
+}
+
+void check_rank_output(const std::string& flag, const std::string& path, bool gather) {
+  if (!gather && !path.empty() && !ends_with(path, ".pvtu"))
+    throw OptionError(flag + " " + path +
+                      ": on several ranks the output is one .vtu piece per rank and the .pvtu "
+                      "that names them: give a .pvtu, or --gather for one file of the whole grid");
+}
+
+void write_on_ranks(const dist::Communicator& comm, const CLI::App& app, io::MeshData held,
+                    const RankInput& input, const std::string& path, bool gather,
+                    const io::WriteOptions& options) {
+  io::keep_layers(held, owned_layers(input.slab, input.shape.dim), path);
+  if (gather) {
+    io::MeshData whole = gathered(comm, held, input);
+    on_every_rank(comm, app, [&] {
+      if (comm.rank() == 0) io::write_mesh(whole, path, options);
+    });
+    return;
+  }
+  std::vector<std::string> pieces;
+  for (int r = 0; r < comm.size(); ++r) pieces.push_back(base_name(piece_path(path, r)));
+  on_every_rank(comm, app, [&] {
+    io::write_vtu(held, piece_path(path, comm.rank()), options);
+    if (comm.rank() == 0) io::write_pvtu(held, pieces, path);
+  });
+}
+
+}  // namespace hexadapt::cli

@@ -1,0 +1,33 @@
+// The processes a tool runs on: the ranks of the MPI job that started it (mpirun, srun), or
+// this process alone. MPI is started only when a launcher started the process, so a tool run
+// by hand never touches it.
+#pragma once
+
+#include <memory>
+
+#include "hexadapt/dist/communicator.h"
+
+namespace hexadapt::cli {
+
+class Ranks {
+ public:
+  /// Starts MPI when the tools were built with it and an MPI launcher started this process.
+  /// Throws OptionError when a launcher started several processes of tools built without
+  /// MPI (each would write the same files).
+  Ranks(int& argc, char**& argv);
+  ~Ranks();
+  Ranks(const Ranks&) = delete;
+  Ranks& operator=(const Ranks&) = delete;
+
+  const dist::Communicator& comm() const;
+
+ private:
+  struct Mpi;
+  std::unique_ptr<Mpi> mpi_;
+};
+
+/// The number of processes the MPI launcher that started this one says the job has; 1 when
+/// no launcher did.
+int launched_ranks();
+
+}  // namespace hexadapt::cli
