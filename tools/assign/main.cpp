@@ -208,7 +208,8 @@ void log_result(const assign::AssignResult& r, const Options& o, const Fractions
 // The report, the failure message and the exit code.
 int finish(const CLI::App& app, const Options& o, const assign::AssignResult& r,
            const io::FractionReport& fr, const Fractions& fractions, int dimension,
-           std::int64_t cells, const std::string& out, PhaseTimes times) {
+           std::int64_t cells, const std::string& out, PhaseTimes times,
+           const dist::Communicator& comm = dist::serial()) {
   cli::Json report = cli::report_header(app);
   report["input"] = o.input;
   report["output"] = out;
@@ -235,6 +236,10 @@ int finish(const CLI::App& app, const Options& o, const assign::AssignResult& r,
     report["assign"]["failure"] = failure_json(*r.correction.failure, fractions);
   report["exit_code"] = r.correction.failure ? cli::target_missed : cli::ok;
   report["times"] = cli::phase_times_json(times);
+  if (comm.size() > 1)
+    report["ranks"] = {{"count", comm.size()},
+                       {"bytes_sent", dist::all_gather_values(
+                                          comm, std::vector<std::uint64_t>{comm.bytes_sent()})}};
   cli::write_report(o.common, report);
   if (r.correction.failure) {
     log(LogLevel::error,
@@ -336,7 +341,7 @@ int run_assign_on_ranks(const CLI::App& app, Options& o, const dist::Communicato
   std::int64_t cells = 1;
   for (int a = 0; a < in.shape.dim; ++a) cells *= in.shape.cells[static_cast<std::size_t>(a)];
   if (comm.rank() != 0) o.common.json.clear();  // rank 0 writes the report
-  return finish(app, o, r, fr, fractions, in.shape.dim, cells, out, times);
+  return finish(app, o, r, fr, fractions, in.shape.dim, cells, out, times, comm);
 }
 
 }  // namespace

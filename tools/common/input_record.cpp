@@ -3,16 +3,16 @@
 #include <array>
 #include <utility>
 
-#include "hexadapt/io/fractions_reader.h"
 #include "hexadapt/core/error.h"
+#include "hexadapt/io/fractions_reader.h"
 
 namespace hexadapt::cli {
 
 namespace {
 
-const char* reading_flags[] = {"--fractions", "--void", "--value-tolerance", "--sum-tolerance",
-                             "--zero-below", "--labels", "--label-names", "--plane",
-                             "--step",       "--time"};
+const char* reading_flags[] = {"--fractions",  "--void",   "--value-tolerance", "--sum-tolerance",
+                               "--zero-below", "--labels", "--label-names",     "--plane",
+                               "--step",       "--time"};
 
 Json label_names_json(const std::map<std::int64_t, std::string>& names) {
   Json j = Json::object();

@@ -5,14 +5,13 @@
 // the rest need not be repeated at every stage.
 #pragma once
 
+#include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
 
-#include <CLI/CLI.hpp>
-
 #include "cli.h"
-#include "hexadapt/io/mesh_data.h"
 #include "hexadapt/io/fractions_reader.h"
+#include "hexadapt/io/mesh_data.h"
 
 namespace hexadapt::cli {
 

@@ -29,18 +29,19 @@ double parse_memory_size(const std::string& text) {
   }
   const std::string unit = text.substr(used);
   const double scale = unit.empty() || unit == "B" ? 1
-                       : unit == "K"              ? 1e3
-                       : unit == "M"              ? 1e6
-                       : unit == "G"              ? 1e9
-                       : unit == "T"              ? 1e12
-                                                  : -1;
+                       : unit == "K"               ? 1e3
+                       : unit == "M"               ? 1e6
+                       : unit == "G"               ? 1e9
+                       : unit == "T"               ? 1e12
+                                                   : -1;
   if (scale < 0 || !(v > 0) || !std::isfinite(v)) throw OptionError(bad);
   return v * scale;
 }
 
 double physical_memory() {
   const long pages = ::sysconf(_SC_PHYS_PAGES), size = ::sysconf(_SC_PAGESIZE);
-  double bytes = pages > 0 && size > 0 ? static_cast<double>(pages) * static_cast<double>(size) : 0.0;
+  double bytes =
+      pages > 0 && size > 0 ? static_cast<double>(pages) * static_cast<double>(size) : 0.0;
   rlimit limit{};
   if (::getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
     const auto as = static_cast<double>(limit.rlim_cur);
@@ -56,7 +57,9 @@ void check_memory(const std::string& what, double bytes, double limit) {
                         size_text(limit));
 }
 
-double last_memory_estimate() { return g_last_estimate; }
+double last_memory_estimate() {
+  return g_last_estimate;
+}
 
 std::string size_text(double bytes) {
   if (bytes < 1e6) return std::to_string(std::llround(bytes / 1e3)) + " kB";
@@ -64,7 +67,5 @@ std::string size_text(double bytes) {
   return std::to_string(std::llround(bytes / 1e8) / 10) + "." +
          std::to_string(std::llround(bytes / 1e8) % 10) + " GB";
 }
-
-
 
 }  // namespace hexadapt::cli

@@ -18,8 +18,8 @@ const DataArray* find(const Array& arrays, const std::string& name) {
 void set(std::vector<DataArray>& arrays, DataArray a, std::size_t n_tuples, const char* kind) {
   if (a.n_components < 1 || a.values.size() != n_tuples * static_cast<std::size_t>(a.n_components))
     throw Error(std::string(kind) + " array " + quote_token(a.name) + " has " +
-                std::to_string(a.values.size()) + " values, expected " +
-                std::to_string(n_tuples) + " x " + std::to_string(a.n_components));
+                std::to_string(a.values.size()) + " values, expected " + std::to_string(n_tuples) +
+                " x " + std::to_string(a.n_components));
   for (auto& old : arrays)
     if (old.name == a.name) {
       old = std::move(a);
@@ -56,9 +56,9 @@ void MeshData::check_array_sizes(const std::string& path) const {
   for (const auto* group : {&point_data, &cell_data})
     for (const DataArray& a : *group)
       if (a.n_components < 1 ||
-          a.values.size() != static_cast<std::size_t>(a.n_components) *
-                                 (group == &point_data ? points.size()
-                                                       : static_cast<std::size_t>(n_cells())))
+          a.values.size() !=
+              static_cast<std::size_t>(a.n_components) *
+                  (group == &point_data ? points.size() : static_cast<std::size_t>(n_cells())))
         throw OptionError(path + ": array '" + a.name + "' does not match the mesh size");
 }
 
@@ -92,8 +92,12 @@ AnyMesh to_mesh(const MeshData& data, const std::string& file) {
   }
 }
 
-MeshData from_mesh(const QuadMesh& mesh) { return from_kernel(mesh); }
-MeshData from_mesh(const HexMesh& mesh) { return from_kernel(mesh); }
+MeshData from_mesh(const QuadMesh& mesh) {
+  return from_kernel(mesh);
+}
+MeshData from_mesh(const HexMesh& mesh) {
+  return from_kernel(mesh);
+}
 MeshData from_mesh(const AnyMesh& mesh) {
   return std::visit([](const auto& m) { return from_kernel(m); }, mesh);
 }

@@ -25,9 +25,12 @@ Plane plane_of(int flat_axis) {
 
 std::array<int, 2> plane_axes(Plane p) {
   switch (p) {
-    case Plane::yz: return {1, 2};
-    case Plane::xz: return {0, 2};
-    default: return {0, 1};
+    case Plane::yz:
+      return {1, 2};
+    case Plane::xz:
+      return {0, 2};
+    default:
+      return {0, 1};
   }
 }
 
@@ -58,18 +61,21 @@ void check_finite(const std::vector<Vec3>& points, const std::string& file) {
 void fill_structured(MeshData& data, std::array<std::int64_t, 3> dims, std::vector<Vec3> points,
                      const ReadOptions& options, const std::string& file) {
   for (std::int64_t d : dims)
-    if (d < 1) throw InputError(file, "DIMENSIONS", "a structured data set needs >= 1 point per axis");
+    if (d < 1)
+      throw InputError(file, "DIMENSIONS", "a structured data set needs >= 1 point per axis");
   const std::int64_t n = dims[0] * dims[1] * dims[2];
   if (n > std::numeric_limits<index_t>::max())
     throw InputError(file, "DIMENSIONS", "too many points for 32-bit ids");
   if (static_cast<std::int64_t>(points.size()) != n)
-    throw InputError(file, "points", "expected " + std::to_string(n) + " points, found " +
-                                         std::to_string(points.size()));
+    throw InputError(
+        file, "points",
+        "expected " + std::to_string(n) + " points, found " + std::to_string(points.size()));
   check_finite(points, file);
   const int flat = static_cast<int>(std::count(dims.begin(), dims.end(), 1));
   if (flat >= 2)
-    throw InputError(file, "DIMENSIONS", "a structured data set with a single row of points has "
-                                         "no quads or hexes");
+    throw InputError(file, "DIMENSIONS",
+                     "a structured data set with a single row of points has "
+                     "no quads or hexes");
   data.points = std::move(points);
   if (flat == 0) {
     data.dim = 3;
@@ -82,9 +88,9 @@ void fill_structured(MeshData& data, std::array<std::int64_t, 3> dims, std::vect
   const int flat_axis = static_cast<int>(std::find(dims.begin(), dims.end(), 1) - dims.begin());
   const Plane given = options.plane == Plane::automatic ? plane_of(flat_axis) : options.plane;
   if (given != plane_of(flat_axis))
-    throw InputError(file, "DIMENSIONS", "the data set is flat along axis " +
-                                             std::to_string(flat_axis) +
-                                             ", not in the requested plane");
+    throw InputError(file, "DIMENSIONS",
+                     "the data set is flat along axis " + std::to_string(flat_axis) +
+                         ", not in the requested plane");
   const auto ax = plane_axes(given);
   if (ax[0] != 0 || ax[1] != 1)
     log_info(file + ": 2D data set in a coordinate plane other than xy: mapped to xy");
@@ -102,32 +108,47 @@ void append_vtk_cell(MeshData& data, int type, const std::int64_t* ids, std::siz
   int dim;
   std::size_t expected;
   switch (type) {
-    case vtk_pixel: case vtk_quad: dim = 2; expected = 4; break;
-    case vtk_voxel: case vtk_hexahedron: dim = 3; expected = 8; break;
+    case vtk_pixel:
+    case vtk_quad:
+      dim = 2;
+      expected = 4;
+      break;
+    case vtk_voxel:
+    case vtk_hexahedron:
+      dim = 3;
+      expected = 8;
+      break;
     default:
-      throw InputError(file, where, "unsupported VTK cell type " + std::to_string(type) +
-                                        " (only quads, pixels, hexahedra and voxels)");
+      throw InputError(file, where,
+                       "unsupported VTK cell type " + std::to_string(type) +
+                           " (only quads, pixels, hexahedra and voxels)");
   }
   if (n_ids != expected)
-    throw InputError(file, where, "cell type " + std::to_string(type) + " has " +
-                                      std::to_string(n_ids) + " nodes, expected " +
-                                      std::to_string(expected));
+    throw InputError(file, where,
+                     "cell type " + std::to_string(type) + " has " + std::to_string(n_ids) +
+                         " nodes, expected " + std::to_string(expected));
   if (data.dim != 0 && data.dim != dim)
     throw InputError(file, where, "mixes 2D and 3D cells: a mesh holds quads or hexes, not both");
   data.dim = dim;
   for (std::size_t k = 0; k < n_ids; ++k)
     if (ids[k] < 0 || ids[k] >= static_cast<std::int64_t>(data.points.size()))
-      throw InputError(file, where, "node id " + std::to_string(ids[k]) + " out of range [0, " +
-                                        std::to_string(data.points.size()) + ")");
+      throw InputError(file, where,
+                       "node id " + std::to_string(ids[k]) + " out of range [0, " +
+                           std::to_string(data.points.size()) + ")");
   auto id = [&](int k) { return NodeId(ids[k]); };
   switch (type) {
-    case vtk_pixel: data.cells.insert(data.cells.end(), {id(0), id(1), id(3), id(2)}); break;
-    case vtk_quad: data.cells.insert(data.cells.end(), {id(0), id(1), id(2), id(3)}); break;
+    case vtk_pixel:
+      data.cells.insert(data.cells.end(), {id(0), id(1), id(3), id(2)});
+      break;
+    case vtk_quad:
+      data.cells.insert(data.cells.end(), {id(0), id(1), id(2), id(3)});
+      break;
     case vtk_voxel:
       for (int k = 0; k < 8; ++k) data.cells.push_back(id(k));
       break;
     default:
-      for (int b = 0; b < 8; ++b) data.cells.push_back(id(ref_hex::vtk_of_binary[static_cast<std::size_t>(b)]));
+      for (int b = 0; b < 8; ++b)
+        data.cells.push_back(id(ref_hex::vtk_of_binary[static_cast<std::size_t>(b)]));
   }
 }
 
@@ -158,9 +179,10 @@ void finish_unstructured(MeshData& data, const ReadOptions& options, const std::
   double extent = 0;
   for (const Vec3& p : data.points) extent = std::max(extent, p.cwiseAbs().maxCoeff());
   if (hi - lo > 1e-9 * std::max(1.0, extent))
-    throw InputError(file, "points", "quads are not in one coordinate plane (the third "
-                                     "coordinate varies by " + std::to_string(hi - lo) +
-                                     "); give the plane explicitly");
+    throw InputError(file, "points",
+                     "quads are not in one coordinate plane (the third "
+                     "coordinate varies by " +
+                         std::to_string(hi - lo) + "); give the plane explicitly");
   map_plane(data.points, ax[0], ax[1]);
   const std::size_t n = static_cast<std::size_t>(data.n_cells());
   std::size_t clockwise = 0;

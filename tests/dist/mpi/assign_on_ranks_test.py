@@ -1,0 +1,162 @@
+#!/usr/bin/python3
+"""hexadapt-assign under mpirun on 2 and 3 ranks, on parallel files VTK wrote: the gathered
+file is the bytes of the run on one process and the report its figures; the .pvtu of pieces
+reads in VTK as the same cells and materials; an error in one rank's layers stops every rank
+with one message and no output.
+
+usage: assign_on_ranks_test.py TOOLS_DIR WORK_DIR MPIEXEC
+"""
+import filecmp
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+import vtk
+from vtk.util import numpy_support as ns
+
+TOOLS, WORK, MPIEXEC = sys.argv[1], sys.argv[2], sys.argv[3]
+ASSIGN = os.path.join(TOOLS, "hexadapt-assign")
+shutil.rmtree(WORK, ignore_errors=True)
+os.makedirs(WORK)
+failures = []
+
+
+def check(ok, message):
+    if not ok:
+        failures.append(message)
+        print("FAIL:", message)
+
+
+def path(*names):
+    return os.path.join(WORK, *names)
+
+
+def run(folder, ranks, *args):
+    """hexadapt-assign ARGS in WORK/folder, on `ranks` MPI ranks (0: without mpirun)."""
+    os.makedirs(path(folder), exist_ok=True)
+    command = [ASSIGN, *args]
+    if ranks:
+        command = [MPIEXEC, "-np", str(ranks), "--oversubscribe", *command]
+    r = subprocess.run(command, cwd=path(folder), capture_output=True, text=True)
+    return r.returncode, r.stderr
+
+
+def grid(n, flat=False):
+    """A rectilinear grid of n cells per axis (nz = 0: 2D) with three materials."""
+    axes = [np.linspace(0, 1, k + 1) ** 1.1 * k for k in n[:2]]
+    axes.append(np.array([0.0]) if flat else np.linspace(0, n[2], n[2] + 1))
+    g = vtk.vtkRectilinearGrid()
+    g.SetDimensions(*[len(a) for a in axes])
+    for setter, a in zip((g.SetXCoordinates, g.SetYCoordinates, g.SetZCoordinates), axes):
+        setter(ns.numpy_to_vtk(a, deep=1))
+    centres = vtk.vtkCellCenters()
+    centres.SetInputData(g)
+    centres.Update()
+    c = ns.vtk_to_numpy(centres.GetOutput().GetPoints().GetData())
+    r = np.linalg.norm(c - [n[0] / 2, n[1] / 2, 0 if flat else n[2] / 2], axis=1)
+    # A rough ball: its majority cells pinch at nodes, which the correction must mend,
+    # across the ranks' borders too.
+    r += np.random.default_rng(7).uniform(-1.5, 1.5, len(r)) * (2.5 if flat else 1)
+    ball = np.clip(4.3 - r, 0, 1)
+    slab = np.clip(2.6 - c[:, 1], 0, 1) * (1 - ball)
+    for name, v in (("vf_ball", ball), ("vf_slab", slab), ("vf_matrix", 1 - ball - slab)):
+        a = ns.numpy_to_vtk(v, deep=1)
+        a.SetName(name)
+        g.GetCellData().AddArray(a)
+    return g
+
+
+def write_pieces(g, name, pieces, ghost=0):
+    w = vtk.vtkXMLPRectilinearGridWriter()
+    w.SetFileName(path(name))
+    w.SetInputData(g)
+    w.SetNumberOfPieces(pieces)
+    w.SetStartPiece(0)
+    w.SetEndPiece(pieces - 1)
+    w.SetGhostLevel(ghost)
+    w.Write()
+
+
+def report(folder):
+    with open(path(folder, "out.json")) as f:
+        r = json.load(f)
+    r.pop("times")
+    r.pop("ranks", None)  # the ranks and the bytes they sent
+    return r
+
+
+def by_centre(data):
+    centres = vtk.vtkCellCenters()
+    centres.SetInputData(data)
+    centres.Update()
+    c = ns.vtk_to_numpy(centres.GetOutput().GetPoints().GetData())
+    m = ns.vtk_to_numpy(data.GetCellData().GetArray("material"))
+    return {tuple(np.round(p, 6)): x for p, x in zip(c, m)}
+
+
+def read(name, reader):
+    r = reader()
+    r.SetFileName(path(name))
+    r.Update()
+    return r.GetOutput()
+
+
+write_pieces(grid((13, 11, 17)), "hex.pvtr", 4)
+write_pieces(grid((13, 11, 17)), "ghost.pvtr", 5, ghost=1)
+write_pieces(grid((19, 15, 0), flat=True), "quad.pvtr", 3)
+
+for case in ("hex", "ghost", "quad"):
+    code, err = run(case + "_serial", 0, "../%s.pvtr" % case, "-o", "out.vtu", "--gather",
+                    "--json", "out.json")
+    check(code == 0, "%s: the serial run exits %d: %s" % (case, code, err))
+    serial = by_centre(read(case + "_serial/out.vtu", vtk.vtkXMLUnstructuredGridReader))
+    mended = report(case + "_serial")["assign"]["node_solves"]
+    check(mended > 10, "%s: only %d nodes mended, too few to test the ranks" % (case, mended))
+    for ranks in (2, 3):
+        folder = "%s_%d" % (case, ranks)
+        code, err = run(folder, ranks, "../%s.pvtr" % case, "-o", "out.vtu", "--gather", "--json",
+                        "out.json")
+        check(code == 0, "%s on %d ranks exits %d: %s" % (case, ranks, code, err))
+        check(filecmp.cmp(path(case + "_serial", "out.vtu"), path(folder, "out.vtu"), shallow=False),
+              "%s on %d ranks: the gathered file differs from the serial one" % (case, ranks))
+        check(report(case + "_serial") == report(folder),
+              "%s on %d ranks: the report differs from the serial one" % (case, ranks))
+        code, err = run(folder, ranks, "../%s.pvtr" % case, "-o", "pieces.pvtu")
+        check(code == 0, "%s on %d ranks, pieces: exit %d: %s" % (case, ranks, code, err))
+        check(sorted(f for f in os.listdir(path(folder)) if f.startswith("pieces")) ==
+              ["pieces.pvtu"] + ["pieces_%d.vtu" % r for r in range(ranks)],
+              "%s on %d ranks: not one piece per rank" % (case, ranks))
+        pieces = by_centre(read(folder + "/pieces.pvtu", vtk.vtkXMLPUnstructuredGridReader))
+        check(pieces == serial,
+              "%s on %d ranks: VTK reads other cells or materials in the .pvtu (%d cells, %d "
+              "serial)" % (case, ranks, len(pieces), len(serial)))
+
+# A sum far from 1 in a cell of the last layers: every rank stops, one message names the
+# cell by its id in the whole grid, nothing is written.
+bad = grid((13, 11, 17))
+matrix = bad.GetCellData().GetArray("vf_matrix")
+cell = 13 * 11 * 15 + 40
+matrix.SetValue(cell, matrix.GetValue(cell) + 0.3)
+write_pieces(bad, "bad.pvtr", 4)
+code, err = run("bad", 3, "../bad.pvtr", "-o", "out.pvtu")
+check(code == 2, "a bad sum on 3 ranks exits %d, not 2: %s" % (code, err))
+check(err.count("error") == 1 and "cell %d" % cell in err,
+      "a bad sum on 3 ranks: not one message naming cell %d: %r" % (cell, err))
+check(not os.listdir(path("bad")), "a bad sum on 3 ranks left files: %s" % os.listdir(path("bad")))
+
+code, err = run("usage", 2, "../hex.pvtr", "-o", "out.vtu")
+check(code == 1 and ".pvtu" in err and "--gather" in err and err.count("error") == 1,
+      "a .vtu without --gather on 2 ranks: exit %d, %r" % (code, err))
+code, err = run("usage", 2, "../hex.pvtr", "-o", "out.pvtu", "--min-island", "3")
+check(code == 1 and "--min-island" in err, "--min-island on 2 ranks: exit %d, %r" % (code, err))
+os.remove(path("hex_2.vtr") if os.path.exists(path("hex_2.vtr")) else path("hex", "hex_2.vtr"))
+code, err = run("usage", 3, "../hex.pvtr", "-o", "out.pvtu")
+check(code == 2 and "hex_2.vtr" in err and err.count("error") == 1,
+      "a missing piece on 3 ranks: exit %d, %r" % (code, err))
+check(not [f for f in os.listdir(path("usage")) if f.startswith("out")], "outputs left behind")
+
+print("%d failure(s)" % len(failures))
+sys.exit(1 if failures else 0)
