@@ -306,7 +306,7 @@ int run_assign_on_ranks(const CLI::App& app, Options& o, const dist::Communicato
   });
   PhaseTimes times;
   Timer t;
-  const cli::RankInput in = cli::read_on_ranks(comm, app, o.input, o.in.read_options(), 2);
+  cli::RankInput in = cli::read_on_ranks(comm, app, o.input, o.in.read_options(), 2);
   cli::on_every_rank(comm, app, [&] {
     cli::check_memory("assigning " + std::to_string(in.data.n_cells()) + " cells on this rank",
                       static_cast<double>(in.data.n_cells()) * cli::assign_bytes_per_cell,
@@ -335,7 +335,8 @@ int run_assign_on_ranks(const CLI::App& app, Options& o, const dist::Communicato
   grid.material = r.correction.labels;
   if (!out.empty())
     cli::write_on_ranks(comm, app,
-                        output_data(in.data, grid, r.majority, app, cli::input_record(o.in, fr)),
+                        output_data(std::move(in.data), grid, r.majority, app,
+                                    cli::input_record(o.in, fr)),
                         in, out, o.gather, o.common.write_options());
   times.emplace_back("write", t.seconds());
   std::int64_t cells = 1;
