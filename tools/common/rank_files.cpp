@@ -31,10 +31,6 @@ std::array<int, 2> owned_layers(const dist::Slab& slab, int dim) {
   return {b.owned_cell_first / per_layer, b.owned_cell_end / per_layer};
 }
 
-void put_array(dist::Buffer& b, const io::DataArray& a) {
-  b.put_vector(a.values);
-}
-
 /// Rank 0's whole grid from every rank's owned piece (node layers shared by two pieces come
 /// from the lower one), with rank 0's metadata and array names and types.
 io::MeshData gathered(const dist::Communicator& comm, const io::MeshData& piece,
@@ -53,12 +49,12 @@ io::MeshData gathered(const dist::Communicator& comm, const io::MeshData& piece,
   for (std::size_t i = 0; i < n_points; ++i)
     xyz.insert(xyz.end(), piece.points[i].data(), piece.points[i].data() + 3);
   mine.put_vector(xyz);
-  for (const io::DataArray& a : piece.cell_data) put_array(mine, a);
-  for (const io::DataArray& a : piece.point_data) {
-    io::DataArray head = a;
-    head.values.resize(n_points * static_cast<std::size_t>(a.n_components));
-    put_array(mine, head);
-  }
+  for (const io::DataArray& a : piece.cell_data) mine.put_vector(a.values);
+  for (const io::DataArray& a : piece.point_data)
+    mine.put_vector(std::vector<double>(
+        a.values.begin(),
+        a.values.begin() +
+            static_cast<std::ptrdiff_t>(n_points * static_cast<std::size_t>(a.n_components))));
   std::vector<dist::Buffer> all = dist::gather(comm, mine, 0);
   io::MeshData whole;
   if (comm.rank() != 0) return whole;

@@ -156,7 +156,7 @@ class Corrector {
       const bool free = std::none_of(p.cells.begin(), p.cells.end(),
                                      [&](std::int64_t c) { return claimed.count(c) > 0; });
       if (free) claimed.insert(p.cells.begin(), p.cells.end());
-      const NodeId n = local_node(p.node);
+      const NodeId n = where_.block.local_node(p.node);
       if (n.valid() && where_.block.owns(n)) {
         if (free) {
           selected.push_back(n);
@@ -173,11 +173,6 @@ class Corrector {
   }
 
  private:
-  NodeId local_node(std::int64_t g) const {
-    const std::int64_t l = g - where_.block.node_offset;
-    return l >= 0 && l < mesh_.n_nodes() ? NodeId(static_cast<index_t>(l)) : NodeId();
-  }
-
   /// Every rank's pending nodes, in position order.
   std::vector<Pending> gather_pending(const std::vector<NodeId>& pending) const {
     dist::Buffer mine;

@@ -19,6 +19,11 @@ CellId Block::local_cell(std::int64_t g) const {
   return l >= 0 && l < held_cells ? CellId(static_cast<index_t>(l)) : CellId();
 }
 
+NodeId Block::local_node(std::int64_t g) const {
+  const std::int64_t l = g - node_offset;
+  return l >= 0 && l < held_nodes ? NodeId(static_cast<index_t>(l)) : NodeId();
+}
+
 Slab structured_slab(const std::array<int, 3>& cells, int dim, int rank, int size,
                      int ghost_layers) {
   const auto axis = static_cast<std::size_t>(dim - 1);

@@ -30,6 +30,8 @@ struct Block {
   std::int64_t global(NodeId n) const { return node_offset + n.value(); }
   /// The local id of global cell g, or an invalid id when this block does not hold it.
   CellId local_cell(std::int64_t g) const;
+  /// The local id of global node g, or an invalid id when this block does not hold it.
+  NodeId local_node(std::int64_t g) const;
   bool owns(CellId c) const { return c.value() >= owned_cell_first && c.value() < owned_cell_end; }
   bool owns(NodeId n) const { return n.value() >= owned_node_first && n.value() < owned_node_end; }
 };
