@@ -11,6 +11,7 @@
 #include "adapt/generated_case.h"
 #include "hexadapt/adapt/targets.h"
 #include "hexadapt/mesh/mesh_check.h"
+#include "hexadapt/mesh/structured.h"
 
 namespace hexadapt {
 namespace {
@@ -74,15 +75,17 @@ TEST(InterfacePillow, CarvesWhereCellsFailOrKeepsThemForTheMovesToMend) {
   });
 }
 
-// The drop touching the pool (balldrop at 16^3, t = 1): the air, pillowed first, keeps
-// failing cells. Each material counts those of its own layer and ring, not those of a layer
-// kept failing before it (the pool and the drop used to report the air's).
+// The drop touching the pool (balldrop at 16^3, t = 1): the air, pillowed first with its
+// sheets between the drop and the pool, keeps failing cells. Each material counts those of
+// its own layer and ring, not those of a layer kept failing before it (the pool and the drop
+// used to report the air's).
 TEST(InterfacePillow, EachMaterialCountsItsOwnFailingCells) {
   on_case({"balldrop", {16, 16, 16}, 1.0},
           [](const HexMesh& grid, const IdVector<CellId, int>& m, int n_materials,
              const IdVector<NodeId, char>& fixed, const SizeCriterion& size) {
             InterfacePillowOptions o;
             o.keep_failing = true;
+            o.sheet_layers = true;
             const auto kept = pillow_interfaces(grid, m, n_materials, fixed, size, o);
             const SizeCriterion kept_size = size.remapped(kept.cell_origin.raw());
             std::vector<index_t> own(static_cast<std::size_t>(n_materials), 0);
@@ -93,6 +96,63 @@ TEST(InterfacePillow, EachMaterialCountsItsOwnFailingCells) {
             for (const InterfacePillowAttempt& a : kept.attempts)
               EXPECT_EQ(a.failing, own[static_cast<std::size_t>(a.material)]) << a.material;
           });
+}
+
+// The same case with the sheets left out: the air's cells one cell thick between the drop
+// and the pool get no layer, and no layer cell fails any more.
+TEST(InterfacePillow, LeavesSheetsBetweenTwoMaterialsOut) {
+  on_case({"balldrop", {16, 16, 16}, 1.0}, [](const HexMesh& grid, const IdVector<CellId, int>& m,
+                                              int n_materials, const IdVector<NodeId, char>& fixed,
+                                              const SizeCriterion& size) {
+    InterfacePillowOptions o;
+    o.keep_failing = true;
+    const auto r = pillow_interfaces(grid, m, n_materials, fixed, size, o);
+    index_t sheets = 0, failing = 0;
+    for (const InterfacePillowAttempt& a : r.attempts) {
+      EXPECT_TRUE(a.kept) << a.material;
+      EXPECT_EQ(a.left_out, a.sheet_cells) << a.material;
+      sheets += a.sheet_cells;
+      failing += a.failing;
+    }
+    EXPECT_GT(sheets, 0);
+    EXPECT_EQ(failing, 0);
+    EXPECT_EQ(failing_cells(r.mesh, size.remapped(r.cell_origin.raw()), default_threshold), 0);
+  });
+}
+
+// Which cells are sheets: one cell thick across two facing faces, between two materials that
+// differ from each other. Material 1 in the middle layer of a 4 x 3 x 5 grid is one between
+// 0 and 2 (every cell of it is left out); between 0 and 0 it is not (none is); in 2D the same
+// holds for a row of quads.
+TEST(InterfacePillow, SheetsAreOneCellBetweenTwoOtherMaterials) {
+  const IdVector<NodeId, char> none3(static_cast<std::size_t>(make_hex_grid(4, 3, 5).n_nodes()), 0);
+  for (const int above : {2, 0}) {
+    const HexMesh grid = make_hex_grid(4, 3, 5);
+    IdVector<CellId, int> material(static_cast<std::size_t>(grid.n_cells()), 0);
+    for (CellId c : id_range<CellId>(grid.n_cells())) {
+      const int k = static_cast<int>(c.value()) / 12;
+      material[c] = k == 2 ? 1 : (k > 2 ? above : 0);
+    }
+    const auto r = pillow_interfaces(grid, material, 3, none3, size_criterion(grid, 0.1));
+    EXPECT_EQ(r.attempts[1].sheet_cells, above == 2 ? 12 : 0) << above;
+    EXPECT_EQ(r.attempts[0].sheet_cells + r.attempts[2].sheet_cells, 0);
+    EXPECT_TRUE(check_mesh(r.mesh).ok());
+  }
+  const QuadMesh quads = make_quad_grid(4, 5);
+  IdVector<CellId, int> material(static_cast<std::size_t>(quads.n_cells()), 0);
+  for (CellId c : id_range<CellId>(quads.n_cells())) {
+    const int j = static_cast<int>(c.value()) / 4;
+    material[c] = j == 2 ? 1 : (j > 2 ? 2 : 0);
+  }
+  const IdVector<NodeId, char> none2(static_cast<std::size_t>(quads.n_nodes()), 0);
+  const auto r = pillow_interfaces(quads, material, 3, none2, size_criterion(quads, 0.1));
+  EXPECT_EQ(r.attempts[1].sheet_cells, 4);
+  InterfacePillowOptions o;
+  o.sheet_layers = true;
+  EXPECT_EQ(pillow_interfaces(quads, material, 3, none2, size_criterion(quads, 0.1), o)
+                .attempts[1]
+                .sheet_cells,
+            0);
 }
 
 TEST(InterfacePillow, LeavesTheRegionsOutAroundTheCellsGiven) {

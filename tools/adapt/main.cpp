@@ -108,6 +108,7 @@ Json result_json(const AdaptResult<M>& r, index_t input_cells, double threshold)
                        {"rounds", a.rounds},
                        {"kept", a.kept},
                        {"left_out", a.left_out},
+                       {"sheet_cells", a.sheet_cells},
                        {"layer_cells", a.layer_cells},
                        {"failing", a.failing}});
   j["interface_pillows"] = pillows;
@@ -379,6 +380,9 @@ int main(int argc, char** argv) {
                  "around a cell that fails the criteria, before the next attempt")
       ->check(cli::non_negative)
       ->capture_default_str();
+  app.add_flag("--sheet-layers,!--no-sheet-layers", args.options.interface_pillow.sheet_layers,
+               "guaranteed: also pillow the cells one cell thick between two other materials, "
+               "which are otherwise left out of their material's layer (default off)");
   app.add_option("--mend-rounds", args.options.mend_rounds,
                  "guaranteed, first layer: runs that keep each material's layer with its failing "
                  "cells for the moves to mend, leaving it out around what stayed failing; then "

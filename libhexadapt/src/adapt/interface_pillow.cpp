@@ -133,6 +133,34 @@ std::vector<CellId> edge_touching(const M& mesh, const IdVector<CellId, char>& s
   return out;
 }
 
+// The local face across the cell from lf: binary hex order pairs faces 2a, 2a + 1 (ref_hex);
+// a quad's edges go round, so edge lf faces edge lf + 2.
+template <class M>
+int facing_face(int lf) {
+  if constexpr (M::dim == 3) return lf ^ 1;
+  return (lf + 2) % 4;
+}
+
+// Cells of the mesh one cell thick between two other materials: across some pair of facing
+// faces, both neighbours are of materials that differ from the cell's and from each other.
+// A layer on both of its interfaces would put three cells across a sheet thinner than one,
+// around the wedge where the three materials meet. Increasing.
+template <class M>
+std::vector<CellId> separating_sheets(const M& mesh, const CellMaterials& material) {
+  std::vector<CellId> out;
+  for (CellId c : id_range<CellId>(mesh.n_cells()))
+    for (int lf = 0; lf < M::faces_per_cell / 2; ++lf) {
+      const int first = M::dim == 3 ? 2 * lf : lf;
+      const CellId a = mesh.neighbour(c, first), b = mesh.neighbour(c, facing_face<M>(first));
+      if (a.valid() && b.valid() && material[a] != material[c] && material[b] != material[c] &&
+          material[a] != material[b]) {
+        out.push_back(c);
+        break;
+      }
+    }
+  return out;
+}
+
 }  // namespace
 
 template <class M>
@@ -151,6 +179,8 @@ InterfacePillowResult<M> pillow_interfaces(const M& mesh, const CellMaterials& m
   for (CellId c : id_range<CellId>(mesh.n_cells())) r.cell_origin.push_back(c);
   IdVector<NodeId, char> still(fixed);
   SizeCriterion current = size.remapped(r.cell_origin.raw());
+  const std::vector<CellId> sheets =
+      options.sheet_layers ? std::vector<CellId>{} : separating_sheets(mesh, material);
   for (int m = 0; m < n_materials; ++m) {
     InterfacePillowAttempt log;
     log.material = m;
@@ -160,6 +190,12 @@ InterfacePillowResult<M> pillow_interfaces(const M& mesh, const CellMaterials& m
     for (CellId c : left_out_around)
       if (material[c] == m) around.push_back(c);
     log.left_out = carve(mesh, around, options.carve, set);
+    for (CellId c : sheets)
+      if (material[c] == m && set[c]) {
+        set[c] = 0;
+        ++log.left_out;
+        ++log.sheet_cells;
+      }
     while (log.rounds < options.rounds && std::find(set.begin(), set.end(), 1) != set.end()) {
       ++log.rounds;
       std::optional<Attempt<M>> tried;

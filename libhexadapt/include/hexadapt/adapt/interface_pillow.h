@@ -16,6 +16,12 @@
 // (pillow.h), the cells around such edges are carved out the same way. Nodes with a target
 // never move here; the cells outside a kept layer and its ring are the input's.
 //
+// A cell one cell thick between two other materials (across two facing faces), as in the wedge
+// of air where a drop meets a pool, is left out of its material's layer from the start: with
+// a layer on both of its interfaces, three cells would lie across a sheet thinner than one,
+// and the nodes there could reach neither interface within the threshold and the size
+// criterion (`sheet_layers` pillows them too).
+//
 // With `keep_failing`, a layer is kept at its first pillowing even where cells fail: on the
 // staircase a layer cell at a concave corner is sheared, and the moves that bring the
 // interface nodes onto their smooth surface often mend it (the controlled move makes no
@@ -38,6 +44,9 @@ struct InterfacePillowOptions {
   int rounds = 4;             ///< pillowing attempts per material
   int carve = 0;              ///< vertex distance of the cells left out around a failing cell
   bool keep_failing = false;  ///< keep a layer at its first pillowing, failing cells and all
+  /// Pillow the cells one cell thick between two other materials too (off: they are left out
+  /// of their material's layer from the start).
+  bool sheet_layers = false;
 };
 
 /// What happened to one material.
@@ -46,6 +55,7 @@ struct InterfacePillowAttempt {
   int rounds = 0;           ///< pillowings tried
   bool kept = false;        ///< its layer is in the mesh
   index_t left_out = 0;     ///< cells of the region carved out of the pillowed set
+  index_t sheet_cells = 0;  ///< of those, cells one cell thick between two other materials
   index_t layer_cells = 0;  ///< cells of the kept layer
   index_t failing = 0;      ///< cells of the kept layer and its ring below a criterion
 };
