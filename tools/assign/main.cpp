@@ -14,6 +14,7 @@
 #include "hexadapt/mesh/cell_complex.h"
 #include "input_record.h"
 #include "rank_files.h"
+#include "ranks.h"
 
 namespace hexadapt {
 namespace {
@@ -237,9 +238,12 @@ int finish(const CLI::App& app, const Options& o, const assign::AssignResult& r,
   report["exit_code"] = r.correction.failure ? cli::target_missed : cli::ok;
   report["times"] = cli::phase_times_json(times);
   if (comm.size() > 1)
-    report["ranks"] = {{"count", comm.size()},
-                       {"bytes_sent", dist::all_gather_values(
-                                          comm, std::vector<std::uint64_t>{comm.bytes_sent()})}};
+    report["ranks"] = {
+        {"count", comm.size()},
+        {"bytes_sent",
+         dist::all_gather_values(comm, std::vector<std::uint64_t>{comm.bytes_sent()})},
+        {"peak_memory",
+         dist::all_gather_values(comm, std::vector<std::uint64_t>{cli::peak_resident_bytes()})}};
   cli::write_report(o.common, report);
   if (r.correction.failure) {
     log(LogLevel::error,

@@ -3,6 +3,7 @@
 // by hand never touches it.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 
 #include "hexadapt/dist/communicator.h"
@@ -29,5 +30,8 @@ class Ranks {
 /// The number of processes the MPI launcher that started this one says the job has; 1 when
 /// no launcher did.
 int launched_ranks();
+
+/// The largest resident memory this process has held so far, in bytes (getrusage).
+std::uint64_t peak_resident_bytes();
 
 }  // namespace hexadapt::cli

@@ -80,11 +80,18 @@ def write_pieces(g, name, pieces, ghost=0):
     w.Write()
 
 
-def report(folder):
+def report(folder, ranks=None):
+    """The report without what depends on the ranks (checked here when ranks is given)."""
     with open(path(folder, "out.json")) as f:
         r = json.load(f)
     r.pop("times")
-    r.pop("ranks", None)  # the ranks and the bytes they sent
+    on = r.pop("ranks", None)  # the ranks, the bytes they sent and the memory they held
+    if ranks:
+        check(on["count"] == ranks and len(on["bytes_sent"]) == ranks
+              and len(on["peak_memory"]) == ranks,
+              "%s: the report's ranks are %r" % (folder, on))
+        check(all(2 ** 20 < m < 2 ** 32 for m in on["peak_memory"]),
+              "%s: peak memory per rank %r" % (folder, on["peak_memory"]))
     return r
 
 
@@ -122,7 +129,7 @@ for case in ("hex", "ghost", "quad"):
         check(code == 0, "%s on %d ranks exits %d: %s" % (case, ranks, code, err))
         check(filecmp.cmp(path(case + "_serial", "out.vtu"), path(folder, "out.vtu"), shallow=False),
               "%s on %d ranks: the gathered file differs from the serial one" % (case, ranks))
-        check(report(case + "_serial") == report(folder),
+        check(report(case + "_serial") == report(folder, ranks),
               "%s on %d ranks: the report differs from the serial one" % (case, ranks))
         code, err = run(folder, ranks, "../%s.pvtr" % case, "-o", "pieces.pvtu")
         check(code == 0, "%s on %d ranks, pieces: exit %d: %s" % (case, ranks, code, err))
