@@ -48,6 +48,27 @@ TEST(MeshFile, WritesAndReadsEachWritableFormat) {
   }
 }
 
+// A .pvtu on one process: the piece <name>_0.vtu and the file naming it, read back whole.
+TEST(MeshFile, WritesAPvtuOfOnePiece) {
+  const MeshData d = small_hexes();
+  const std::string path = temp_path("one.pvtu");
+  write_mesh(d, path);
+  const std::string piece = temp_path("one_0.vtu");
+  std::ifstream text(path);
+  std::ostringstream xml;
+  xml << text.rdbuf();
+  EXPECT_NE(xml.str().find("Source=\"hexadapt_mf_one_0.vtu\""), std::string::npos) << xml.str();
+  for (const std::string& p : {path, piece}) {
+    const MeshData r = read_mesh(p);
+    EXPECT_EQ(ids(r), ids(d)) << p;
+    EXPECT_EQ(r.points, d.points) << p;
+    ASSERT_NE(r.find_cell_array("vf_a"), nullptr) << p;
+    EXPECT_EQ(r.find_cell_array("vf_a")->values, d.find_cell_array("vf_a")->values) << p;
+  }
+  std::remove(path.c_str());
+  std::remove(piece.c_str());
+}
+
 // A file larger than one read chunk, from disk (size known) and from a pipe (size unknown).
 TEST(MeshFile, ReadsLargeFilesAndPipes) {
   const MeshData d = from_mesh(make_hex_grid(16, 16, 16));
@@ -85,7 +106,7 @@ TEST(MeshFile, UnknownExtensionsListTheSupportedOnes) {
     write_mesh(small_hexes(), temp_path("out.obj"));
     FAIL() << "no error";
   } catch (const OptionError& e) {
-    EXPECT_NE(std::string(e.what()).find(".vtu .vts .vtk"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(".vtu .vts .pvtu .vtk"), std::string::npos) << e.what();
   }
   EXPECT_THROW(read_mesh(temp_path("in.stl")), OptionError);
   EXPECT_THROW(read_mesh(temp_path("no_extension")), OptionError);

@@ -98,6 +98,28 @@ TEST_F(OutputSafety, AnOutputInAMissingDirectoryStopsTheRunBeforeAnyOutput) {
     EXPECT_NE(e.path().extension(), ".tmp") << e.path();
 }
 
+// A mesh output in a format no writer has is a usage error found before the input is read:
+// the input here is not even a mesh file (exit 1, not 2), and nothing is written.
+TEST_F(OutputSafety, AnUnwritableMeshFormatStopsTheRunBeforeReading) {
+  std::ofstream(path("junk.vtu")) << "not a mesh";
+  const std::pair<std::string, std::string> runs[] = {
+      {"generate", "disk --dims 8,8"},
+      {"assign", path("junk.vtu")},
+      {"reconstruct", path("junk.vtu")},
+      {"adapt", path("junk.vtu")}};
+  for (const auto& [tool, args] : runs) {
+    const ToolRun r = run(tool, args + " -o " + path("out.obj") + " --json " + path("r.json"));
+    EXPECT_EQ(r.code, 1) << tool << ": " << r.err;
+    EXPECT_NE(r.err.find("unknown mesh file extension '.obj'"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(path("out.obj"))) << tool;
+    EXPECT_FALSE(fs::exists(path("r.json"))) << tool;
+  }
+  EXPECT_EQ(run("assign", path("junk.vtu") + " -o " + path("a.vtu") + " --partial " +
+                              path("p.stl"))
+                .code,
+            1);
+}
+
 TEST_F(OutputSafety, DirectoriesFifosAndDevicesAsInputsAreBadInput) {
   fs::create_directories(dir_ / "adir");
   ASSERT_EQ(::mkfifo(path("fifo").c_str(), 0600), 0);

@@ -8,6 +8,7 @@
 
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/atomic_file.h"
+#include "hexadapt/io/mesh_file.h"
 
 namespace hexadapt::cli {
 
@@ -109,8 +110,11 @@ void check_files(const std::vector<FileArg>& inputs, const std::vector<FileArg>&
   for (const FileArg& in : inputs)
     if (!in.path.empty()) check_input(in);
   check_clashes(inputs, outputs);
-  for (const FileArg& out : outputs)
-    if (!skipped(out)) check_output(out);
+  for (const FileArg& out : outputs) {
+    if (skipped(out)) continue;
+    if (out.mesh) io::check_mesh_output(out.path);
+    check_output(out);
+  }
 }
 
 }  // namespace hexadapt::cli

@@ -13,12 +13,14 @@ namespace hexadapt::cli {
 struct FileArg {
   std::string option;
   std::string path;
+  bool mesh = false;  ///< an output written by io::write_mesh: its extension must be one it writes
 };
 
 /// Throws OptionError when an output names the same file as an input or another output (same
 /// device and inode when the file exists, same canonical path otherwise), and IoError when an
 /// input is a directory, FIFO, device or socket, or an output's directory is missing or not
-/// writable. Outputs that exist and are not regular files (/dev/null) are written directly
+/// writable, and OptionError when a mesh output's extension is not one io::write_mesh
+/// writes. Outputs that exist and are not regular files (/dev/null) are written directly
 /// and may repeat.
 void check_files(const std::vector<FileArg>& inputs, const std::vector<FileArg>& outputs);
 

@@ -14,10 +14,6 @@ bool ends_with(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
 
-std::string piece_path(const std::string& pvtu, int rank) {
-  return pvtu.substr(0, pvtu.size() - 5) + "_" + std::to_string(rank) + ".vtu";
-}
-
 std::string base_name(const std::string& path) {
   const std::size_t slash = path.find_last_of('/');
   return slash == std::string::npos ? path : path.substr(slash + 1);
@@ -117,9 +113,9 @@ void write_on_ranks(const dist::Communicator& comm, const CLI::App& app, io::Mes
     return;
   }
   std::vector<std::string> pieces;
-  for (int r = 0; r < comm.size(); ++r) pieces.push_back(base_name(piece_path(path, r)));
+  for (int r = 0; r < comm.size(); ++r) pieces.push_back(base_name(io::pvtu_piece_path(path, r)));
   on_every_rank(comm, app, [&] {
-    io::write_vtu(held, piece_path(path, comm.rank()), options);
+    io::write_vtu(held, io::pvtu_piece_path(path, comm.rank()), options);
     if (comm.rank() == 0) io::write_pvtu(held, pieces, path);
   });
 }

@@ -116,7 +116,7 @@ int main(int argc, char** argv) {
     }
     if (o.case_name.empty()) throw hx::OptionError("a case name is required (see --list)");
     if (common.output.empty()) throw hx::OptionError("an output file is required (-o FILE)");
-    hx::cli::check_files({}, {{"-o", common.output}, {"--json", common.json}});
+    hx::cli::check_files({}, {{"-o", common.output, true}, {"--json", common.json}});
     if (!bounds.empty()) o.bounds = parse_bounds(bounds);
     if (time_opt->count() > 0) o.time = time;
     o.progress = hx::cli::terminal_progress(common);

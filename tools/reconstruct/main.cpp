@@ -191,7 +191,7 @@ int main(int argc, char** argv) {
   return cli::run(app, argc, argv, common, [&] {
     lib.mip.seed = lib.annealing.seed;
     cli::check_files({{"input", o.input}},
-                     {{"-o", common.output},
+                     {{"-o", common.output, true},
                       {"--model", o.model.empty() ? "" : model_stem(o.model) + ".vtk"},
                       {"--json", common.json}});
     const Timer read;

@@ -119,14 +119,25 @@ StructuredShape structured_shape(const std::string& path, const ReadOptions& opt
   return {data.dim, data.structured_cells};
 }
 
+void check_mesh_output(const std::string& path) {
+  const std::string ext = extension_of(path);
+  if (ext != ".vtu" && ext != ".vts" && ext != ".pvtu" && ext != ".vtk" && !is_exodus(ext))
+    throw OptionError(path + ": unknown mesh file extension " + quote_token(ext) +
+                      " (supported for writing: .vtu .vts .pvtu .vtk .exo .e .g)");
+}
+
 void write_mesh(const MeshData& data, const std::string& path, const WriteOptions& options) {
+  check_mesh_output(path);
   const std::string ext = extension_of(path);
   if (ext == ".vtu") return write_vtu(data, path, options);
   if (ext == ".vts") return write_vts(data, path, options);
+  if (ext == ".pvtu") {  // one piece: what a job of one rank writes
+    const std::string piece = pvtu_piece_path(path, 0);
+    write_vtu(data, piece, options);
+    return write_pvtu(data, {piece.substr(piece.find_last_of('/') + 1)}, path);
+  }
   if (ext == ".vtk") return write_vtk_legacy(data, path);
-  if (is_exodus(ext)) return write_exodus(data, path, options);
-  throw OptionError(path + ": unknown mesh file extension " + quote_token(ext) +
-                    " (supported for writing: .vtu .vts .vtk .exo .e .g)");
+  return write_exodus(data, path, options);
 }
 
 }  // namespace hexadapt::io

@@ -262,6 +262,10 @@ void write_vts(const MeshData& data, const std::string& path, const WriteOptions
   f.write(path);
 }
 
+std::string pvtu_piece_path(const std::string& pvtu, int piece) {
+  return pvtu.substr(0, pvtu.size() - 5) + "_" + std::to_string(piece) + ".vtu";
+}
+
 void write_pvtu(const MeshData& layout, const std::vector<std::string>& pieces,
                 const std::string& path) {
   check_writable(layout, path);

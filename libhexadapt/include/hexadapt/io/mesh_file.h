@@ -8,7 +8,8 @@
 // elements; element variables become cell arrays; see exodus.h). The step of a time series
 // (.pvd or Exodus) is chosen by ReadOptions::step or ::time.
 // Write: .vtu (appended binary, zlib-compressed when large), .vts (the same, for a grid read
-// from a structured data set: MeshData::structured_cells), legacy .vtk (binary) and
+// from a structured data set: MeshData::structured_cells), .pvtu (one .vtu piece,
+// `<name>_0.vtu`, and the .pvtu naming it: what a job of one rank writes), legacy .vtk (binary) and
 // Exodus II .exo .e .g (one element block per material, side and node sets; see exodus.h).
 // Writes are atomic: a temporary file in the target directory, then a rename, so a failed
 // write never leaves a half file and never clobbers an input.
@@ -66,6 +67,8 @@ ExodusSets parse_exodus_sets(const std::string& text);
 
 /// Throws InputError (malformed content, with file and place), IoError (cannot open/read).
 MeshData read_mesh(const std::string& path, const ReadOptions& options = {});
+/// Throws OptionError when write_mesh does not write files with path's extension.
+void check_mesh_output(const std::string& path);
 /// Throws IoError, or OptionError for an unknown extension.
 void write_mesh(const MeshData& data, const std::string& path, const WriteOptions& options = {});
 

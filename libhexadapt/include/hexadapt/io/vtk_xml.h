@@ -79,4 +79,7 @@ void write_vts(const MeshData& data, const std::string& path, const WriteOptions
 void write_pvtu(const MeshData& layout, const std::vector<std::string>& pieces,
                 const std::string& path);
 
+/// The file of piece `piece` of the .pvtu `pvtu`: `<pvtu without .pvtu>_<piece>.vtu`.
+std::string pvtu_piece_path(const std::string& pvtu, int piece);
+
 }  // namespace hexadapt::io
