@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "hexadapt/core/error.h"
+#include "hexadapt/dist/block.h"
 #include "hexadapt/io/mesh_data.h"
 #include "hexadapt/io/fractions_reader.h"
 #include "hexadapt/mesh/structured.h"
@@ -89,6 +90,27 @@ TEST(FractionArrays, ASumAboveOneDoesNotAdviseAVoidMaterial) {
     const std::string what = e.what();
     EXPECT_EQ(what.find("void"), std::string::npos) << what;
     EXPECT_NE(what.find("{sum_tolerance} 0.011 would rescale this cell"), std::string::npos)
+        << what;
+  }
+}
+
+// On a rank, the tolerance that would accept every cell is known for the cells the rank
+// holds only: the message says which (global ids 40-42 here), and names the failing cell by
+// its global id.
+TEST(FractionArrays, OnARankTheToleranceForEveryCellNamesTheCellsItCovers) {
+  io::MeshData d = io::from_mesh(make_quad_grid(3, 1));
+  d.set_cell_array({"vf_a", 1, io::ScalarType::float64, {0.6, 0.6, 0.6}});
+  d.set_cell_array({"vf_b", 1, io::ScalarType::float64, {0.4, 0.42, 0.45}});
+  dist::Block block = dist::Block::whole(3, d.n_points());
+  block.cell_offset = 40;
+  try {
+    io::extract_fractions(d, io::FractionOptions{}, nullptr, "in.vtu", &block);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("cell 41"), std::string::npos) << what;
+    EXPECT_NE(what.find("{sum_tolerance} 0.051 every cell of cells 40-42 (this rank's part)"),
+              std::string::npos)
         << what;
   }
 }

@@ -138,9 +138,11 @@ double accepting(double x) {
 
 // The error for cell c, whose sum is outside the tolerance: the sum, by how much, the
 // tolerance and where it came from, and the --sum-tolerance that would accept this cell and
-// every cell of the file. A sum below 1 can also take a void material; one above 1 cannot.
+// every cell read (of the file, or with `part` of the cells a rank holds, named by their
+// global ids). A sum below 1 can also take a void material; one above 1 cannot.
 [[noreturn]] void throw_sum_error(const Selection& s, index_t n_cells, CellId c, std::int64_t first,
-                                  double sum, const FractionReport& rep, const std::string& file) {
+                                  bool part, double sum, const FractionReport& rep,
+                                  const std::string& file) {
   double largest = 0;
   for (CellId k : id_range<CellId>(n_cells)) largest = std::max(largest, sum_error(s, k));
   const double err = std::abs(sum - 1);
@@ -153,7 +155,10 @@ double accepting(double x) {
       << "): ";
   if (sum < 1) msg << "name a void material ({void_material} NAME) to receive the remainder, or ";
   msg << "{sum_tolerance} " << accepting(err) << " would rescale this cell";
-  if (largest > err) msg << ", {sum_tolerance} " << accepting(largest) << " every cell";
+  if (largest > err) {
+    msg << ", {sum_tolerance} " << accepting(largest) << " every cell";
+    if (part) msg << " of cells " << first << "-" << first + n_cells - 1 << " (this rank's part)";
+  }
   throw InputError(file, cell_where(c, first), msg.str());
 }
 
@@ -210,7 +215,7 @@ Fractions extract_fractions(const MeshData& data, const FractionOptions& options
     }
     counted.max_sum_error = std::max(counted.max_sum_error, std::abs(sum - 1));
     if (std::abs(sum - 1) > tolerance)
-      throw_sum_error(selected, data.n_cells(), c, first, sum, counted, file);
+      throw_sum_error(selected, data.n_cells(), c, first, block != nullptr, sum, counted, file);
     clean_cell(c, first, f, counted, file);
   }
   if (report) *report = rep;
