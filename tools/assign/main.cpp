@@ -254,8 +254,9 @@ int finish(const CLI::App& app, const Options& o, const assign::AssignResult& r,
 }
 
 int run_assign(const CLI::App& app, Options& o) {
-  cli::check_files({{"input", o.input}},
-                   {{"-o", o.common.output, true}, {"--partial", o.partial, true}, {"--json", o.common.json}});
+  cli::check_files({{"input", o.input}}, {{"-o", o.common.output, true},
+                                          {"--partial", o.partial, true},
+                                          {"--json", o.common.json}});
   PhaseTimes times;
   Timer t;
   io::MeshData data = io::read_mesh(o.input, o.in.read_options());
@@ -300,7 +301,8 @@ int run_assign_on_ranks(const CLI::App& app, Options& o, const dist::Communicato
   cli::on_every_rank(comm, app, [&] {
     cli::check_files(
         {{"input", o.input}},
-        {{"-o", o.common.output, true}, {"--partial", o.partial, true}, {"--json", o.common.json}});
+        {{"-o", o.common.output, true}, {"--partial", o.partial, true},
+         {"--json", o.common.json}});
     cli::check_rank_output("-o", o.common.output, o.gather);
     cli::check_rank_output("--partial", o.partial, o.gather);
     if (o.assign.min_island > 1 || o.assign.keep_materials)

@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -134,7 +135,7 @@ void write_mesh(const MeshData& data, const std::string& path, const WriteOption
   if (ext == ".pvtu") {  // one piece: what a job of one rank writes
     const std::string piece = pvtu_piece_path(path, 0);
     write_vtu(data, piece, options);
-    return write_pvtu(data, {piece.substr(piece.find_last_of('/') + 1)}, path);
+    return write_pvtu(data, {std::filesystem::path(piece).filename().string()}, path);
   }
   if (ext == ".vtk") return write_vtk_legacy(data, path);
   return write_exodus(data, path, options);
