@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "hexadapt/core/error.h"
+#include "hexadapt/dist/block.h"
 #include "hexadapt/io/mesh_data.h"
 #include "hexadapt/io/fractions_reader.h"
 #include "hexadapt/mesh/structured.h"
@@ -37,6 +38,29 @@ TEST(LabelFractions, OneMaterialPerLabelInIncreasingOrder) {
   for (CellId c : id_range<CellId>(f.n_cells())) {
     EXPECT_EQ(f.majority(c), expected[c.idx()]);
     EXPECT_TRUE(f.is_pure(c));
+  }
+}
+
+// One block of a distributed grid: its materials are the labels of the whole grid
+// (label_values), those it does not hold included; errors name cells by their global id.
+TEST(LabelFractions, ABlockTakesTheLabelsOfTheWholeGrid) {
+  const io::MeshData d = labelled({7, 3, 7});
+  dist::Block block = dist::Block::whole(3, d.n_points());
+  block.cell_offset = 100;
+  EXPECT_THROW(io::extract_fractions(d, labels_option(), nullptr, "in.vtu", &block), OptionError);
+  EXPECT_EQ(io::label_values(d, labels_option(), "in.vtu", 100),
+            (std::vector<std::int64_t>{3, 7}));
+  io::FractionOptions o = labels_option();
+  o.label_values = {-2, 3, 7};
+  const Fractions f = io::extract_fractions(d, o, nullptr, "in.vtu", &block);
+  EXPECT_EQ(f.names(), (std::vector<std::string>{"label_-2", "label_3", "label_7"}));
+  EXPECT_EQ(f.majority(CellId(0)), 2);
+  EXPECT_EQ(f.majority(CellId(1)), 1);
+  try {
+    io::label_values(labelled({1, 2.5}), labels_option(), "in.vtu", 100);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("cell 101"), std::string::npos) << e.what();
   }
 }
 

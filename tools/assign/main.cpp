@@ -295,6 +295,19 @@ io::FractionReport whole_report(const dist::Communicator& comm, io::FractionRepo
   return fr;
 }
 
+// The labels of a label map over the whole grid: every rank's, merged, increasing.
+std::vector<std::int64_t> grid_labels(const dist::Communicator& comm, const CLI::App& app,
+                                      const Options& o, const cli::RankInput& in) {
+  std::vector<std::int64_t> mine;
+  cli::on_every_rank(comm, app, [&] {
+    mine = io::label_values(in.data, o.in.fractions, o.input, in.slab.block.cell_offset);
+  });
+  std::vector<std::int64_t> all = dist::all_gather_values(comm, mine);
+  std::sort(all.begin(), all.end());
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  return all;
+}
+
 // On the ranks of an MPI job: each reads its slab (two ghost layers: the correction looks
 // two cells around the nodes it owns) and writes the cells it owns.
 int run_assign_on_ranks(const CLI::App& app, Options& o, const dist::Communicator& comm) {
@@ -322,13 +335,14 @@ int run_assign_on_ranks(const CLI::App& app, Options& o, const dist::Communicato
   t.restart();
   io::FractionReport fr;
   AssignedGrid grid;
+  if (!o.in.fractions.labels.empty()) o.in.fractions.label_values = grid_labels(comm, app, o, in);
   cli::on_every_rank(comm, app, [&] {
     grid = io::to_assigned_grid(in.data, o.in.grid(io::MaterialSource::none), o.input, &fr,
                                 &in.slab.block);
   });
   fr = whole_report(comm, fr);
   const Fractions& fractions = grid.fractions;
-  log_info(fractions_message(fr));
+  if (o.in.fractions.labels.empty()) log_info(fractions_message(fr));
   times.emplace_back("fractions", t.seconds());
   const dist::Distribution where{comm, in.slab.block};
   const assign::AssignResult r = std::visit(

@@ -186,15 +186,15 @@ Fractions extract_fractions(const MeshData& data, const FractionOptions& options
                             FractionReport* report, const std::string& file,
                             const dist::Block* block) {
   FractionReport rep;
-  if (block && !options.labels.empty())
+  if (block && !options.labels.empty() && options.label_values.empty())
     throw OptionError(
-        "a label map gives one material per value found in the whole grid: it cannot be read "
-        "one block at a time (run on one rank, or give fraction arrays)");
+        "a label map gives one material per value found in the whole grid: a block needs the "
+        "labels of every block (label_values)");
   if (!options.labels.empty()) {
     rep.tolerances =
         decide_tolerances(options.sum_tolerance, options.zero_below, StoredPrecision::float64, 1);
     if (report) *report = rep;
-    return fractions_from_labels(data, options, file);
+    return fractions_from_labels(data, options, file, block ? block->cell_offset : 0);
   }
   std::vector<std::string> names;
   const Selection selected = fraction_arrays(data, options, names, file);

@@ -1,5 +1,6 @@
 // Label maps (segmented images, microstructures, what Sculpt reads as material ids): one
 // integer per cell, turned into one material per distinct value with fraction 1 in its cells.
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <sstream>
@@ -14,13 +15,15 @@ namespace {
 // Integers a double holds exactly, so labels survive a Float32/Float64 array.
 constexpr double max_label = 9007199254740992.0;  // 2^53
 
-std::int64_t label_of(const DataArray& a, std::size_t c, const std::string& file) {
+std::int64_t label_of(const DataArray& a, std::size_t c, std::int64_t first,
+                      const std::string& file) {
   const double v = a.values[c];
   if (!(std::abs(v) <= max_label) || v != std::floor(v)) {
     std::ostringstream msg;
     msg << "label array " << quote_token(a.name) << " holds " << v
         << ", not an integer: a label map gives each cell an integer material id";
-    throw InputError(file, "cell " + std::to_string(c), msg.str());
+    throw InputError(file, "cell " + std::to_string(first + static_cast<std::int64_t>(c)),
+                     msg.str());
   }
   return static_cast<std::int64_t>(v);
 }
@@ -39,10 +42,9 @@ std::string name_of(const FractionOptions& o, std::int64_t label) {
   return it != o.label_names.end() ? it->second : "label_" + std::to_string(label);
 }
 
-}  // namespace
-
-Fractions fractions_from_labels(const MeshData& data, const FractionOptions& options,
-                                const std::string& file) {
+// The label array, checked.
+const DataArray& label_array(const MeshData& data, const FractionOptions& options,
+                             const std::string& file) {
   check_options(options);
   const DataArray* a = data.find_cell_array(options.labels);
   if (!a)
@@ -52,28 +54,50 @@ Fractions fractions_from_labels(const MeshData& data, const FractionOptions& opt
     throw InputError(file, "",
                      "label array " + quote_token(a->name) + " has " +
                          std::to_string(a->n_components) + " components, expected 1");
-  const auto n = static_cast<std::size_t>(data.n_cells());
-  std::vector<std::int64_t> labels(n);
+  return *a;
+}
+
+void check_label_count(const DataArray& a, std::size_t n, const FractionOptions& options,
+                       const std::string& file, const std::string& where) {
+  if (n > static_cast<std::size_t>(options.max_labels))
+    throw InputError(file, where,
+                     "label array " + quote_token(a.name) + " holds more than " +
+                         std::to_string(options.max_labels) + " distinct labels");
+}
+
+}  // namespace
+
+std::vector<std::int64_t> label_values(const MeshData& data, const FractionOptions& options,
+                                       const std::string& file, std::int64_t first) {
+  const DataArray& a = label_array(data, options, file);
   std::set<std::int64_t> distinct;
-  for (std::size_t c = 0; c < n; ++c) {
-    labels[c] = label_of(*a, c, file);
-    if (distinct.insert(labels[c]).second &&
-        distinct.size() > static_cast<std::size_t>(options.max_labels))
-      throw InputError(file, "cell " + std::to_string(c),
-                       "label array " + quote_token(a->name) + " holds more than " +
-                           std::to_string(options.max_labels) + " distinct labels");
-  }
+  for (std::size_t c = 0; c < static_cast<std::size_t>(data.n_cells()); ++c)
+    if (distinct.insert(label_of(a, c, first, file)).second)
+      check_label_count(a, distinct.size(), options, file,
+                        "cell " + std::to_string(first + static_cast<std::int64_t>(c)));
+  return {distinct.begin(), distinct.end()};
+}
+
+Fractions fractions_from_labels(const MeshData& data, const FractionOptions& options,
+                                const std::string& file, std::int64_t first) {
+  const DataArray& a = label_array(data, options, file);
+  const std::vector<std::int64_t> values = options.label_values.empty()
+                                               ? label_values(data, options, file, first)
+                                               : options.label_values;
+  check_label_count(a, values.size(), options, file, "");
   std::vector<std::string> names;
-  for (const std::int64_t l : distinct) {
+  for (const std::int64_t l : values) {
     names.push_back(name_of(options, l));
     for (std::size_t k = 0; k + 1 < names.size(); ++k)
       if (names[k] == names.back())
         throw OptionError("two labels are named " + quote_token(names.back()));
   }
   Fractions f(data.n_cells(), names);
-  for (std::size_t c = 0; c < n; ++c) {
-    const auto m = std::distance(distinct.begin(), distinct.find(labels[c]));
-    f(CellId(static_cast<index_t>(c)), static_cast<int>(m)) = 1.0;
+  for (std::size_t c = 0; c < static_cast<std::size_t>(data.n_cells()); ++c) {
+    const auto it = std::lower_bound(values.begin(), values.end(), label_of(a, c, first, file));
+    if (it == values.end() || *it != label_of(a, c, first, file))
+      throw InternalError("a label of the block is not among the grid's labels");
+    f(CellId(static_cast<index_t>(c)), static_cast<int>(it - values.begin())) = 1.0;
   }
   return f;
 }

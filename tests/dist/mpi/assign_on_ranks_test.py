@@ -141,6 +141,39 @@ for case in ("hex", "ghost", "quad"):
               "%s on %d ranks: VTK reads other cells or materials in the .pvtu (%d cells, %d "
               "serial)" % (case, ranks, len(pieces), len(serial)))
 
+# A label map: its materials are the values of the whole grid, one of them (42) only in the
+# last layers, which one rank alone holds; the gathered file is the serial one. A value that
+# is not an integer is named by its cell's id in the whole grid.
+labelled = grid((13, 11, 17))
+ball = ns.vtk_to_numpy(labelled.GetCellData().GetArray("vf_ball"))
+slab = ns.vtk_to_numpy(labelled.GetCellData().GetArray("vf_slab"))
+ids = np.where(ball > 0.5, 3.0, np.where(slab > 0.5, 7.0, 1.0))
+ids[13 * 11 * 16 + 20] = 42
+for name in ("vf_ball", "vf_slab", "vf_matrix"):
+    labelled.GetCellData().RemoveArray(name)
+ids_array = ns.numpy_to_vtk(ids, deep=1)
+ids_array.SetName("ids")
+labelled.GetCellData().AddArray(ids_array)
+write_pieces(labelled, "labels.pvtr", 4)
+code, err = run("labels_serial", 0, "../labels.pvtr", "-o", "out.vtu", "--gather", "--labels",
+                "ids")
+check(code == 0, "labels: the serial run exits %d: %s" % (code, err))
+for ranks in (2, 3):
+    folder = "labels_%d" % ranks
+    code, err = run(folder, ranks, "../labels.pvtr", "-o", "out.vtu", "--gather", "--labels",
+                    "ids")
+    check(code == 0, "labels on %d ranks exits %d: %s" % (ranks, code, err))
+    check(filecmp.cmp(path("labels_serial", "out.vtu"), path(folder, "out.vtu"), shallow=False),
+          "labels on %d ranks: the gathered file differs from the serial one" % ranks)
+ids[13 * 11 * 15 + 5] = 2.5
+ids_array = ns.numpy_to_vtk(ids, deep=1)
+ids_array.SetName("ids")
+labelled.GetCellData().AddArray(ids_array)
+write_pieces(labelled, "badlabels.pvtr", 4)
+code, err = run("badlabels", 3, "../badlabels.pvtr", "-o", "out.pvtu", "--labels", "ids")
+check(code == 2 and err.count("error") == 1 and "cell %d" % (13 * 11 * 15 + 5) in err,
+      "a label 2.5 on 3 ranks: exit %d, %r" % (code, err))
+
 # A sum far from 1 in a cell of the last layers: every rank stops, one message names the
 # cell by its id in the whole grid, nothing is written.
 bad = grid((13, 11, 17))

@@ -51,6 +51,10 @@ struct FractionOptions {
   std::map<std::int64_t, std::string> label_names;
   /// More distinct labels is an error (fractions are dense: cells x materials).
   int max_labels = 1000;
+  /// When the data is one block of a distributed grid: the labels of the whole grid,
+  /// increasing (label_values of every block, merged), which are its materials. Empty: the
+  /// labels the data holds.
+  std::vector<std::int64_t> label_values;
 };
 
 struct FractionReport {
@@ -70,7 +74,8 @@ struct FractionReport {
 /// the cell, its sum and the --sum-tolerance that would accept it and every cell of the file.
 /// When `block` is given, `data` is one rank's block of a distributed grid (dist/block.h):
 /// the report counts the cells it owns only, errors name cells by their global id, and a
-/// label map is an OptionError (its materials are the values of the whole grid).
+/// label map needs options.label_values (its materials are the values of the whole grid; an
+/// OptionError without them).
 Fractions extract_fractions(const MeshData& data, const FractionOptions& options,
                             FractionReport* report = nullptr, const std::string& file = {},
                             const dist::Block* block = nullptr);
@@ -80,7 +85,14 @@ Fractions extract_fractions(const MeshData& data, const FractionOptions& options
 /// by options.label_names or label_<value>. Throws InputError (no such array, several
 /// components, a value that is not an integer, too many labels: naming the file, array and
 /// cell), OptionError (fraction arrays or a void material given too, two labels of one name).
+/// With options.label_values, those are the materials (a block's cells hold some of them);
+/// `first` is the global id of data's first cell, for errors.
 Fractions fractions_from_labels(const MeshData& data, const FractionOptions& options,
-                                const std::string& file = {});
+                                const std::string& file = {}, std::int64_t first = 0);
+
+/// The distinct values of the label map options.labels in data's cells, increasing; errors
+/// as fractions_from_labels', naming cells by `first` + their id.
+std::vector<std::int64_t> label_values(const MeshData& data, const FractionOptions& options,
+                                       const std::string& file = {}, std::int64_t first = 0);
 
 }  // namespace hexadapt::io
