@@ -17,9 +17,13 @@ class MpiSession {
   MpiSession& operator=(const MpiSession&) = delete;
 };
 
+/// The gathers carry any size: they go in rounds of at most `round_bytes` bytes over all
+/// ranks (MPI counts are int), each rank's bytes arriving in order.
 class MpiCommunicator final : public Communicator {
  public:
-  MpiCommunicator();
+  static constexpr std::uint64_t default_round_bytes = std::uint64_t(1) << 28;  // 256 MiB
+
+  explicit MpiCommunicator(std::uint64_t round_bytes = default_round_bytes);
   int rank() const override { return rank_; }
   int size() const override { return size_; }
   std::vector<std::vector<std::uint8_t>> all_gather(
@@ -30,7 +34,11 @@ class MpiCommunicator final : public Communicator {
   [[noreturn]] void abort(int code) const override;
 
  private:
+  std::vector<std::vector<std::uint8_t>> gather_rounds(const std::vector<std::uint8_t>& mine,
+                                                       int root) const;  // root < 0: all
+
   int rank_ = 0, size_ = 1;
+  std::uint64_t round_bytes_;
   mutable std::uint64_t sent_ = 0;
 };
 

@@ -2,8 +2,9 @@
 
 #include <mpi.h>
 
+#include <algorithm>
+#include <climits>
 #include <cstdlib>
-#include <limits>
 #include <string>
 
 #include "hexadapt/core/error.h"
@@ -33,7 +34,9 @@ MpiSession::~MpiSession() {
   MPI_Finalize();
 }
 
-MpiCommunicator::MpiCommunicator() {
+MpiCommunicator::MpiCommunicator(std::uint64_t round_bytes) : round_bytes_(round_bytes) {
+  if (round_bytes_ == 0 || round_bytes_ > static_cast<std::uint64_t>(INT_MAX))
+    throw InternalError("MPI gather rounds of " + std::to_string(round_bytes_) + " bytes");
   check(MPI_Comm_rank(MPI_COMM_WORLD, &rank_), "MPI_Comm_rank");
   check(MPI_Comm_size(MPI_COMM_WORLD, &size_), "MPI_Comm_size");
 }
@@ -43,75 +46,54 @@ void MpiCommunicator::abort(int code) const {
   std::abort();  // MPI_Abort does not return
 }
 
-namespace {
-
-/// Displacements of `counts` bytes laid one after another, within what one MPI call carries.
-std::vector<int> offsets_of(const std::vector<std::uint64_t>& counts) {
-  std::vector<int> offsets(counts.size());
-  std::uint64_t total = 0;
-  for (std::size_t r = 0; r < counts.size(); ++r) {
-    if (total + counts[r] > static_cast<std::uint64_t>(std::numeric_limits<int>::max()))
-      throw InternalError("a gather of " + std::to_string(total + counts[r]) +
-                          " bytes exceeds what one MPI call carries");
-    offsets[r] = static_cast<int>(total);
-    total += counts[r];
-  }
-  return offsets;
-}
-
-std::vector<std::vector<std::uint8_t>> split(const std::vector<std::uint8_t>& all,
-                                             const std::vector<std::uint64_t>& counts,
-                                             const std::vector<int>& offsets) {
-  std::vector<std::vector<std::uint8_t>> out(counts.size());
-  for (std::size_t r = 0; r < counts.size(); ++r)
-    out[r].assign(all.begin() + offsets[r],
-                  all.begin() + offsets[r] + static_cast<std::ptrdiff_t>(counts[r]));
-  return out;
-}
-
-std::vector<int> as_int(const std::vector<std::uint64_t>& counts) {
-  return {counts.begin(), counts.end()};  // offsets_of checked the total
-}
-
-}  // namespace
-
 std::vector<std::vector<std::uint8_t>> MpiCommunicator::all_gather(
     const std::vector<std::uint8_t>& mine) const {
-  std::uint64_t count = mine.size();
-  std::vector<std::uint64_t> counts(static_cast<std::size_t>(size_));
-  check(MPI_Allgather(&count, 1, MPI_UINT64_T, counts.data(), 1, MPI_UINT64_T, MPI_COMM_WORLD),
-        "MPI_Allgather");
-  const std::vector<int> offsets = offsets_of(counts);
-  std::vector<std::uint8_t> all(static_cast<std::size_t>(offsets.back()) + counts.back());
-  check(MPI_Allgatherv(mine.data(), static_cast<int>(count), MPI_BYTE, all.data(),
-                       as_int(counts).data(), offsets.data(), MPI_BYTE, MPI_COMM_WORLD),
-        "MPI_Allgatherv");
-  sent_ += sizeof count + count;
-  return split(all, counts, offsets);
+  return gather_rounds(mine, -1);
 }
 
 std::vector<std::vector<std::uint8_t>> MpiCommunicator::gather(
     const std::vector<std::uint8_t>& mine, int root) const {
+  return gather_rounds(mine, root);
+}
+
+// Every rank learns every rank's byte count; then each round carries up to `share` bytes of
+// each rank's buffer (share x ranks <= round_bytes), until the largest buffer is through.
+std::vector<std::vector<std::uint8_t>> MpiCommunicator::gather_rounds(
+    const std::vector<std::uint8_t>& mine, int root) const {
   std::uint64_t count = mine.size();
   std::vector<std::uint64_t> counts(static_cast<std::size_t>(size_));
-  check(MPI_Gather(&count, 1, MPI_UINT64_T, counts.data(), 1, MPI_UINT64_T, root, MPI_COMM_WORLD),
-        "MPI_Gather");
+  check(MPI_Allgather(&count, 1, MPI_UINT64_T, counts.data(), 1, MPI_UINT64_T, MPI_COMM_WORLD),
+        "MPI_Allgather");
   sent_ += sizeof count + count;
-  if (count > static_cast<std::uint64_t>(std::numeric_limits<int>::max()))
-    throw InternalError("a gather of " + std::to_string(count) +
-                        " bytes exceeds what one MPI call carries");
-  if (rank_ != root) {
-    check(MPI_Gatherv(mine.data(), static_cast<int>(count), MPI_BYTE, nullptr, nullptr, nullptr,
-                      MPI_BYTE, root, MPI_COMM_WORLD),
-          "MPI_Gatherv");
-    return {};
+  const bool receives = root < 0 || rank_ == root;
+  std::vector<std::vector<std::uint8_t>> out(receives ? counts.size() : 0);
+  for (std::size_t r = 0; r < out.size(); ++r) out[r].reserve(counts[r]);
+  const std::uint64_t share = std::max<std::uint64_t>(1, round_bytes_ / counts.size());
+  const std::uint64_t largest = *std::max_element(counts.begin(), counts.end());
+  std::vector<int> part(counts.size()), offsets(counts.size());
+  std::vector<std::uint8_t> round;
+  for (std::uint64_t done = 0; done < largest; done += share) {
+    int total = 0;
+    for (std::size_t r = 0; r < counts.size(); ++r) {
+      part[r] = static_cast<int>(counts[r] > done ? std::min(share, counts[r] - done) : 0);
+      offsets[r] = total;
+      total += part[r];
+    }
+    round.resize(receives ? static_cast<std::size_t>(total) : 0);
+    const auto me = static_cast<std::size_t>(rank_);
+    const std::uint8_t* from = part[me] > 0 ? mine.data() + done : mine.data();
+    if (root < 0)
+      check(MPI_Allgatherv(from, part[me], MPI_BYTE, round.data(), part.data(), offsets.data(),
+                           MPI_BYTE, MPI_COMM_WORLD),
+            "MPI_Allgatherv");
+    else
+      check(MPI_Gatherv(from, part[me], MPI_BYTE, round.data(), part.data(), offsets.data(),
+                        MPI_BYTE, root, MPI_COMM_WORLD),
+            "MPI_Gatherv");
+    for (std::size_t r = 0; r < out.size(); ++r)
+      out[r].insert(out[r].end(), round.begin() + offsets[r], round.begin() + offsets[r] + part[r]);
   }
-  const std::vector<int> offsets = offsets_of(counts);
-  std::vector<std::uint8_t> all(static_cast<std::size_t>(offsets.back()) + counts.back());
-  check(MPI_Gatherv(mine.data(), static_cast<int>(count), MPI_BYTE, all.data(),
-                    as_int(counts).data(), offsets.data(), MPI_BYTE, root, MPI_COMM_WORLD),
-        "MPI_Gatherv");
-  return split(all, counts, offsets);
+  return out;
 }
 
 }  // namespace hexadapt::dist
