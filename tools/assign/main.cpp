@@ -254,9 +254,9 @@ int finish(const CLI::App& app, const Options& o, const assign::AssignResult& r,
 }
 
 int run_assign(const CLI::App& app, Options& o) {
-  cli::check_files({{"input", o.input}}, {{"-o", o.common.output, true},
-                                          {"--partial", o.partial, true},
-                                          {"--json", o.common.json}});
+  cli::check_files(
+      {{"input", o.input}},
+      {{"-o", o.common.output, true}, {"--partial", o.partial, true}, {"--json", o.common.json}});
   PhaseTimes times;
   Timer t;
   io::MeshData data = io::read_mesh(o.input, o.in.read_options());
@@ -314,14 +314,11 @@ int run_assign_on_ranks(const CLI::App& app, Options& o, const dist::Communicato
   cli::on_every_rank(comm, app, [&] {
     cli::check_files(
         {{"input", o.input}},
-        {{"-o", o.common.output, true}, {"--partial", o.partial, true},
-         {"--json", o.common.json}});
+        {{"-o", o.common.output, true}, {"--partial", o.partial, true}, {"--json", o.common.json}});
     cli::check_rank_output("-o", o.common.output, o.gather);
     cli::check_rank_output("--partial", o.partial, o.gather);
-    if (o.assign.min_island > 1 || o.assign.keep_materials)
-      throw OptionError(
-          "--min-island and --keep-materials need the whole grid: run them on "
-          "one process");
+    if (o.assign.min_island > 1)
+      throw OptionError("--min-island needs the whole grid: run it on one process");
   });
   PhaseTimes times;
   Timer t;
@@ -354,10 +351,10 @@ int run_assign_on_ranks(const CLI::App& app, Options& o, const dist::Communicato
   const std::string out = r.correction.solved ? o.common.output : o.partial;
   grid.material = r.correction.labels;
   if (!out.empty())
-    cli::write_on_ranks(comm, app,
-                        output_data(std::move(in.data), grid, r.majority, app,
-                                    cli::input_record(o.in, fr)),
-                        in, out, o.gather, o.common.write_options());
+    cli::write_on_ranks(
+        comm, app,
+        output_data(std::move(in.data), grid, r.majority, app, cli::input_record(o.in, fr)), in,
+        out, o.gather, o.common.write_options());
   times.emplace_back("write", t.seconds());
   std::int64_t cells = 1;
   for (int a = 0; a < in.shape.dim; ++a) cells *= in.shape.cells[static_cast<std::size_t>(a)];

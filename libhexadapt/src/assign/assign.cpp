@@ -34,10 +34,10 @@ UnitFrame far_unit_frame(const M& mesh, const dist::Communicator& comm) {
 template <class M>
 AssignResult assign_materials(const M& mesh, const Fractions& fractions,
                               const AssignOptions& options, const dist::Distribution& where) {
-  if (where.comm.size() > 1 && (options.min_island > 1 || options.keep_materials))
+  if (where.comm.size() > 1 && options.min_island > 1)
     throw OptionError(
-        "small pieces and kept materials are not handled on more than one rank yet: run on one "
-        "rank, or leave min_island and keep_materials off");
+        "small pieces are not handled on more than one rank yet: run on one rank, or leave "
+        "min_island off");
   AssignResult r;
   Timer t;
   r.majority = majority_materials(fractions);
@@ -52,7 +52,7 @@ AssignResult assign_materials(const M& mesh, const Fractions& fractions,
   // UnitFrame, and the costs, volumes too, go back to its units.
   const UnitFrame frame = far_unit_frame(mesh, where.comm);
   auto assign_in_frame = [&](const M& local) {
-    if (options.keep_materials) r.kept = keep_vanished_materials(local, fractions, start);
+    if (options.keep_materials) r.kept = keep_vanished_materials(local, fractions, start, where);
     r.correction = correct_assignment(local, fractions, start, options.correction, where);
     r.balance = material_balance(local, fractions, r.correction.labels, where);
   };

@@ -141,6 +141,32 @@ for case in ("hex", "ghost", "quad"):
               "%s on %d ranks: VTK reads other cells or materials in the .pvtu (%d cells, %d "
               "serial)" % (case, ranks, len(pieces), len(serial)))
 
+# A material nowhere the majority (the slab, at most 0.3 of a cell), kept: the cells it gets
+# are those of the serial run, on 2 and 3 ranks.
+thin = grid((13, 11, 17))
+slab_vf = ns.vtk_to_numpy(thin.GetCellData().GetArray("vf_slab"))
+matrix_vf = ns.vtk_to_numpy(thin.GetCellData().GetArray("vf_matrix"))
+matrix_vf += 0.7 * slab_vf
+slab_vf *= 0.3
+thin.GetCellData().GetArray("vf_slab").Modified()
+thin.GetCellData().GetArray("vf_matrix").Modified()
+write_pieces(thin, "thin.pvtr", 4)
+code, err = run("thin_serial", 0, "../thin.pvtr", "-o", "out.vtu", "--gather", "--keep-materials",
+                "--json", "out.json")
+check(code == 0, "kept material: the serial run exits %d: %s" % (code, err))
+kept = report("thin_serial")["assign"]["kept"]
+check(len(kept) == 1 and kept[0]["name"] == "slab" and kept[0]["cells"] > 10,
+      "kept material: the serial run keeps %r" % kept)
+for ranks in (2, 3):
+    folder = "thin_%d" % ranks
+    code, err = run(folder, ranks, "../thin.pvtr", "-o", "out.vtu", "--gather",
+                    "--keep-materials", "--json", "out.json")
+    check(code == 0, "kept material on %d ranks exits %d: %s" % (ranks, code, err))
+    check(filecmp.cmp(path("thin_serial", "out.vtu"), path(folder, "out.vtu"), shallow=False),
+          "kept material on %d ranks: the gathered file differs from the serial one" % ranks)
+    check(report("thin_serial") == report(folder, ranks),
+          "kept material on %d ranks: the report differs from the serial one" % ranks)
+
 # A label map: its materials are the values of the whole grid, one of them (42) only in the
 # last layers, which one rank alone holds; the gathered file is the serial one. A value that
 # is not an integer is named by its cell's id in the whole grid.

@@ -136,6 +136,31 @@ TEST(AssignOnRanks, NoisyQuadFractionsAsOnOneRank) {
   expect_same_as_one_rank(mesh, f, cells, {});
 }
 
+// A material that is nowhere the majority (at most 0.3 of a cell), kept: its cells are
+// chosen among every rank's, as on one rank.
+TEST(AssignOnRanks, KeptMaterialsAsOnOneRank) {
+  const std::array<int, 3> cells{9, 8, 12};
+  const auto mesh = jittered_grid<HexMesh>(cells, 6);
+  Fractions f = test::random_fractions(mesh.n_cells(), 3, 3, 8);
+  for (CellId c : id_range<CellId>(f.n_cells())) {
+    f(c, 0) += 0.7 * f(c, 2);
+    f(c, 2) *= 0.3;
+  }
+  assign::AssignOptions options;
+  options.keep_materials = true;
+  const assign::AssignResult one = assign::assign_materials(mesh, f, options);
+  ASSERT_EQ(one.kept.size(), 1u);
+  ASSERT_GT(one.kept[0].cells, 20);
+  expect_same_as_one_rank(mesh, f, cells, options);
+  const dist::Slab slab = dist::structured_slab(cells, 3, world().rank(), world().size(), 2);
+  const auto [part_mesh, part] = test::held_part(mesh, f, cells, slab);
+  const assign::AssignResult r =
+      assign::assign_materials(part_mesh, part, options, {world(), slab.block});
+  ASSERT_EQ(r.kept.size(), 1u);
+  EXPECT_EQ(r.kept[0].material, one.kept[0].material);
+  EXPECT_EQ(r.kept[0].cells, one.kept[0].cells);
+}
+
 TEST(AssignOnRanks, AFailureIsTheOneOfOneRank) {
   const std::array<int, 3> cells{9, 8, 12};
   const auto mesh = jittered_grid<HexMesh>(cells, 4);

@@ -9,6 +9,7 @@
 
 #include <vector>
 
+#include "hexadapt/dist/block.h"
 #include "hexadapt/mesh/fractions.h"
 
 namespace hexadapt::assign {
@@ -19,7 +20,14 @@ struct KeptMaterial {
 };
 
 /// Gives each material with volume in `fractions` and no cell in `labels` its cells, in
-/// place; one entry per material kept, in increasing material index.
+/// place; one entry per material kept, in increasing material index. On ranks (`where`),
+/// every rank's candidate cells are gathered and walked in one global order (cells by their
+/// global id), so each rank takes what one process would, ghosts included.
+template <class M>
+std::vector<KeptMaterial> keep_vanished_materials(const M& mesh, const Fractions& fractions,
+                                                  CellMaterials& labels,
+                                                  const dist::Distribution& where);
+/// The whole mesh on one process.
 template <class M>
 std::vector<KeptMaterial> keep_vanished_materials(const M& mesh, const Fractions& fractions,
                                                   CellMaterials& labels);
