@@ -317,8 +317,6 @@ int run_assign_on_ranks(const CLI::App& app, Options& o, const dist::Communicato
         {{"-o", o.common.output, true}, {"--partial", o.partial, true}, {"--json", o.common.json}});
     cli::check_rank_output("-o", o.common.output, o.gather);
     cli::check_rank_output("--partial", o.partial, o.gather);
-    if (o.assign.min_island > 1)
-      throw OptionError("--min-island needs the whole grid: run it on one process");
   });
   PhaseTimes times;
   Timer t;

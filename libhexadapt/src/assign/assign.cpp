@@ -34,10 +34,6 @@ UnitFrame far_unit_frame(const M& mesh, const dist::Communicator& comm) {
 template <class M>
 AssignResult assign_materials(const M& mesh, const Fractions& fractions,
                               const AssignOptions& options, const dist::Distribution& where) {
-  if (where.comm.size() > 1 && options.min_island > 1)
-    throw OptionError(
-        "small pieces are not handled on more than one rank yet: run on one rank, or leave "
-        "min_island off");
   AssignResult r;
   Timer t;
   r.majority = majority_materials(fractions);
@@ -45,7 +41,7 @@ AssignResult assign_materials(const M& mesh, const Fractions& fractions,
   CellMaterials start = r.majority;
   if (options.min_island > 1) {
     t.restart();
-    r.islands = remove_islands(mesh, fractions, start, options.min_island);
+    r.islands = remove_islands(mesh, fractions, start, options.min_island, where);
     r.times.emplace_back("islands", t.seconds());
   }
   // A grid of 1e-300 (or 1e300) has no representable cell volumes: it is assigned in its
@@ -66,7 +62,7 @@ AssignResult assign_materials(const M& mesh, const Fractions& fractions,
     for (double* v : {&b.input_volume, &b.assigned_volume}) *v = frame.to_world(*v, M::dim);
   for (const auto& phase : r.correction.times) r.times.push_back(phase);
   if (options.min_island > 1)
-    r.small_pieces_final = count_small_pieces(mesh, r.correction.labels, options.min_island);
+    r.small_pieces_final = count_small_pieces(mesh, r.correction.labels, options.min_island, where);
   return r;
 }
 

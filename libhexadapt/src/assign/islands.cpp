@@ -1,5 +1,8 @@
 #include "hexadapt/assign/islands.h"
 
+#include <algorithm>
+#include <map>
+#include <unordered_map>
 #include <vector>
 
 #include "hexadapt/mesh/cell_complex.h"
@@ -8,91 +11,206 @@ namespace hexadapt::assign {
 
 namespace {
 
-// The pieces of `labels`: cells joined across faces within one material, numbered by their
-// lowest cell, each piece's cells in increasing order of discovery.
+// The pieces of `labels` over every rank: cells joined across faces within one material, each
+// piece named by its root, the lowest global id among its cells. A rank knows the root of
+// the cells it owns and of the ghost cells across a face from them.
+struct Pieces {
+  std::unordered_map<std::int64_t, std::int64_t> root_of;  ///< global cell id -> root
+  std::map<std::int64_t, std::int64_t> size;               ///< root -> cells
+};
+
+// Roots joined over the ranks: every set is named by its lowest member.
+class Roots {
+ public:
+  std::int64_t find(std::int64_t k) {
+    auto it = parent_.find(k);
+    if (it == parent_.end()) return k;
+    const std::int64_t r = find(it->second);
+    it->second = r;
+    return r;
+  }
+  void join(std::int64_t a, std::int64_t b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+  }
+
+ private:
+  std::unordered_map<std::int64_t, std::int64_t> parent_;
+};
+
 template <class M>
-std::vector<std::vector<CellId>> pieces(const M& mesh, const CellMaterials& labels) {
-  IdVector<CellId, char> seen(static_cast<std::size_t>(mesh.n_cells()), 0);
-  std::vector<std::vector<CellId>> out;
-  for (CellId start : id_range<CellId>(mesh.n_cells())) {
-    if (seen[start]) continue;
-    seen[start] = 1;
+Pieces global_pieces(const M& mesh, const CellMaterials& labels, const dist::Distribution& where) {
+  const dist::Block& b = where.block;
+  // The pieces within the owned cells, each keyed by its lowest cell (the first reached).
+  IdVector<CellId, std::int64_t> key(static_cast<std::size_t>(mesh.n_cells()), -1);
+  std::vector<std::int64_t> keys, sizes, border_cell, border_key, link_key, link_cell;
+  for (index_t s = b.owned_cell_first; s < b.owned_cell_end; ++s) {
+    const CellId start(s);
+    if (key[start] >= 0) continue;
+    key[start] = b.global(start);
     std::vector<CellId> piece{start};
     for (std::size_t k = 0; k < piece.size(); ++k)
       for (int lf = 0; lf < M::faces_per_cell; ++lf) {
         const CellId o = mesh.neighbour(piece[k], lf);
-        if (o.valid() && !seen[o] && labels[o] == labels[start]) {
-          seen[o] = 1;
+        if (o.valid() && b.owns(o) && key[o] < 0 && labels[o] == labels[start]) {
+          key[o] = key[start];
           piece.push_back(o);
         }
       }
-    out.push_back(std::move(piece));
+    keys.push_back(key[start]);
+    sizes.push_back(static_cast<std::int64_t>(piece.size()));
   }
-  return out;
-}
-
-// The material a small piece goes to: among those of its face neighbours outside small
-// pieces, the most present in its cells; -1 when it has no such neighbour.
-template <class M>
-int new_material(const M& mesh, const Fractions& f, const CellMaterials& labels,
-                 const IdVector<CellId, char>& in_small, const std::vector<CellId>& piece) {
-  std::vector<char> around(static_cast<std::size_t>(f.n_materials()), 0);
-  for (CellId c : piece)
+  // Owned cells beside another rank's: where pieces meet across the ranks.
+  for (index_t s = b.owned_cell_first; s < b.owned_cell_end; ++s) {
+    const CellId c(s);
+    bool border = false;
     for (int lf = 0; lf < M::faces_per_cell; ++lf) {
       const CellId o = mesh.neighbour(c, lf);
-      if (o.valid() && !in_small[o]) around[static_cast<std::size_t>(labels[o])] = 1;
+      if (!o.valid() || b.owns(o)) continue;
+      border = true;
+      if (labels[o] != labels[c]) continue;
+      link_key.push_back(key[c]);
+      link_cell.push_back(b.global(o));
     }
-  int best = -1;
-  double best_sum = -1;
-  for (int m = 0; m < f.n_materials(); ++m) {
-    if (!around[static_cast<std::size_t>(m)]) continue;
-    double sum = 0;
-    for (CellId c : piece) sum += f(c, m);
-    if (sum > best_sum) best = m, best_sum = sum;
+    if (border) {
+      border_cell.push_back(b.global(c));
+      border_key.push_back(key[c]);
+    }
   }
-  return best;
+  const auto all = [&](const std::vector<std::int64_t>& v) {
+    return dist::all_gather_values(where.comm, v);
+  };
+  keys = all(keys);
+  sizes = all(sizes);
+  border_cell = all(border_cell);
+  border_key = all(border_key);
+  link_key = all(link_key);
+  link_cell = all(link_cell);
+  std::unordered_map<std::int64_t, std::int64_t> border;
+  for (std::size_t i = 0; i < border_cell.size(); ++i) border[border_cell[i]] = border_key[i];
+  Roots roots;
+  for (std::size_t i = 0; i < link_key.size(); ++i)
+    roots.join(link_key[i], border.at(link_cell[i]));
+  Pieces p;
+  for (std::size_t i = 0; i < keys.size(); ++i) p.size[roots.find(keys[i])] += sizes[i];
+  for (index_t s = b.owned_cell_first; s < b.owned_cell_end; ++s)
+    p.root_of[b.global(CellId(s))] = roots.find(key[CellId(s)]);
+  for (const auto& [cell, k] : border) p.root_of.emplace(cell, roots.find(k));
+  return p;
+}
+
+// Whether held cell c (owned, or a ghost across a face from an owned cell) is in a small piece.
+bool in_small(CellId c, const Pieces& p, const dist::Block& b, index_t min_cells) {
+  return p.size.at(p.root_of.at(b.global(c))) < min_cells;
 }
 
 }  // namespace
 
 template <class M>
 IslandResult remove_islands(const M& mesh, const Fractions& fractions, CellMaterials& labels,
-                            index_t min_cells) {
+                            index_t min_cells, const dist::Distribution& where) {
   IslandResult r;
   if (min_cells <= 1) return r;
+  const dist::Block& b = where.block;
+  const int n = fractions.n_materials();
   for (bool changed = true; changed;) {
     changed = false;
-    const auto all = pieces(mesh, labels);
-    IdVector<CellId, char> in_small(static_cast<std::size_t>(mesh.n_cells()), 0);
-    for (const auto& p : all)
-      if (static_cast<index_t>(p.size()) < min_cells)
-        for (CellId c : p) in_small[c] = 1;
+    const Pieces p = global_pieces(mesh, labels, where);
+    // Every cell of a small piece goes to every rank: its root, id, fractions, and the
+    // materials around it that are not in small pieces.
+    std::vector<std::int64_t> root, cell;
+    std::vector<double> fr;
+    std::vector<char> around;
+    for (index_t s = b.owned_cell_first; s < b.owned_cell_end; ++s) {
+      const CellId c(s);
+      if (!in_small(c, p, b, min_cells)) continue;
+      root.push_back(p.root_of.at(b.global(c)));
+      cell.push_back(b.global(c));
+      for (int m = 0; m < n; ++m) fr.push_back(fractions(c, m));
+      std::vector<char> mine(static_cast<std::size_t>(n), 0);
+      for (int lf = 0; lf < M::faces_per_cell; ++lf) {
+        const CellId o = mesh.neighbour(c, lf);
+        if (o.valid() && !in_small(o, p, b, min_cells))
+          mine[static_cast<std::size_t>(labels[o])] = 1;
+      }
+      around.insert(around.end(), mine.begin(), mine.end());
+    }
+    root = dist::all_gather_values(where.comm, root);
+    cell = dist::all_gather_values(where.comm, cell);
+    fr = dist::all_gather_values(where.comm, fr);
+    around = dist::all_gather_values(where.comm, around);
+    // Per small piece, its cells in increasing id: the materials around it, and the one of
+    // them most present in it (sum of fractions in that order; ties to the lowest index).
+    std::vector<std::size_t> order(cell.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
+      return root[x] < root[y] || (root[x] == root[y] && cell[x] < cell[y]);
+    });
     CellMaterials next = labels;
-    for (const auto& p : all) {
-      if (static_cast<index_t>(p.size()) >= min_cells) continue;
-      const int m = new_material(mesh, fractions, labels, in_small, p);
-      if (m < 0) continue;
-      for (CellId c : p) next[c] = m;
-      ++r.islands;
-      r.cells += static_cast<index_t>(p.size());
-      changed = true;
+    for (std::size_t lo = 0; lo < order.size();) {
+      std::size_t hi = lo;
+      while (hi < order.size() && root[order[hi]] == root[order[lo]]) ++hi;
+      int best = -1;
+      double best_sum = -1;
+      for (int m = 0; m < n; ++m) {
+        const auto k = static_cast<std::size_t>(m);
+        bool near = false;
+        double sum = 0;
+        for (std::size_t i = lo; i < hi; ++i) {
+          near = near || around[order[i] * static_cast<std::size_t>(n) + k];
+          sum += fr[order[i] * static_cast<std::size_t>(n) + k];
+        }
+        if (near && sum > best_sum) best = m, best_sum = sum;
+      }
+      if (best >= 0) {
+        for (std::size_t i = lo; i < hi; ++i) {
+          const CellId held = b.local_cell(cell[order[i]]);
+          if (held.valid()) next[held] = best;
+        }
+        ++r.islands;
+        r.cells += static_cast<index_t>(hi - lo);
+        changed = true;
+      }
+      lo = hi;
     }
     labels = std::move(next);
   }
-  r.left = count_small_pieces(mesh, labels, min_cells);
+  r.left = count_small_pieces(mesh, labels, min_cells, where);
   return r;
 }
 
 template <class M>
-index_t count_small_pieces(const M& mesh, const CellMaterials& labels, index_t min_cells) {
-  index_t n = 0;
-  for (const auto& p : pieces(mesh, labels)) n += static_cast<index_t>(p.size()) < min_cells;
-  return n;
+index_t count_small_pieces(const M& mesh, const CellMaterials& labels, index_t min_cells,
+                           const dist::Distribution& where) {
+  index_t count = 0;
+  for (const auto& [root, size] : global_pieces(mesh, labels, where).size)
+    count += size < min_cells;
+  return count;
 }
 
+template <class M>
+IslandResult remove_islands(const M& mesh, const Fractions& fractions, CellMaterials& labels,
+                            index_t min_cells) {
+  return remove_islands(mesh, fractions, labels, min_cells, dist::Distribution::whole(mesh));
+}
+
+template <class M>
+index_t count_small_pieces(const M& mesh, const CellMaterials& labels, index_t min_cells) {
+  return count_small_pieces(mesh, labels, min_cells, dist::Distribution::whole(mesh));
+}
+
+template IslandResult remove_islands(const QuadMesh&, const Fractions&, CellMaterials&, index_t,
+                                     const dist::Distribution&);
 template IslandResult remove_islands(const QuadMesh&, const Fractions&, CellMaterials&, index_t);
-template IslandResult remove_islands(const HexMesh&, const Fractions&, CellMaterials&, index_t);
+template index_t count_small_pieces(const QuadMesh&, const CellMaterials&, index_t,
+                                    const dist::Distribution&);
 template index_t count_small_pieces(const QuadMesh&, const CellMaterials&, index_t);
+template IslandResult remove_islands(const HexMesh&, const Fractions&, CellMaterials&, index_t,
+                                     const dist::Distribution&);
+template IslandResult remove_islands(const HexMesh&, const Fractions&, CellMaterials&, index_t);
+template index_t count_small_pieces(const HexMesh&, const CellMaterials&, index_t,
+                                    const dist::Distribution&);
 template index_t count_small_pieces(const HexMesh&, const CellMaterials&, index_t);
 
 }  // namespace hexadapt::assign

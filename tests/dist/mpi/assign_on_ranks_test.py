@@ -167,6 +167,22 @@ for ranks in (2, 3):
     check(report("thin_serial") == report(folder, ranks),
           "kept material on %d ranks: the report differs from the serial one" % ranks)
 
+# Small pieces (--min-island) joined across the ranks' borders: the serial file and report.
+code, err = run("islands_serial", 0, "../hex.pvtr", "-o", "out.vtu", "--gather", "--min-island",
+                "8", "--json", "out.json")
+check(code == 0, "--min-island: the serial run exits %d: %s" % (code, err))
+islands = report("islands_serial")["assign"]["islands"]
+check(islands["reassigned"] > 3, "--min-island: the serial run reassigns %r" % islands)
+for ranks in (2, 3):
+    folder = "islands_%d" % ranks
+    code, err = run(folder, ranks, "../hex.pvtr", "-o", "out.vtu", "--gather", "--min-island",
+                    "8", "--json", "out.json")
+    check(code == 0, "--min-island on %d ranks exits %d: %s" % (ranks, code, err))
+    check(filecmp.cmp(path("islands_serial", "out.vtu"), path(folder, "out.vtu"), shallow=False),
+          "--min-island on %d ranks: the gathered file differs from the serial one" % ranks)
+    check(report("islands_serial") == report(folder, ranks),
+          "--min-island on %d ranks: the report differs from the serial one" % ranks)
+
 # A label map: its materials are the values of the whole grid, one of them (42) only in the
 # last layers, which one rank alone holds; the gathered file is the serial one. A value that
 # is not an integer is named by its cell's id in the whole grid.
@@ -216,8 +232,6 @@ check(not os.listdir(path("bad")), "a bad sum on 3 ranks left files: %s" % os.li
 code, err = run("usage", 2, "../hex.pvtr", "-o", "out.vtu")
 check(code == 1 and ".pvtu" in err and "--gather" in err and err.count("error") == 1,
       "a .vtu without --gather on 2 ranks: exit %d, %r" % (code, err))
-code, err = run("usage", 2, "../hex.pvtr", "-o", "out.pvtu", "--min-island", "3")
-check(code == 1 and "--min-island" in err, "--min-island on 2 ranks: exit %d, %r" % (code, err))
 os.remove(path("hex_2.vtr") if os.path.exists(path("hex_2.vtr")) else path("hex", "hex_2.vtr"))
 code, err = run("usage", 3, "../hex.pvtr", "-o", "out.pvtu")
 check(code == 2 and "hex_2.vtr" in err and err.count("error") == 1,

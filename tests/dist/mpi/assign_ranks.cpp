@@ -172,18 +172,25 @@ TEST(AssignOnRanks, AFailureIsTheOneOfOneRank) {
   expect_same_as_one_rank(mesh, f, cells, options);
 }
 
-TEST(AssignOnRanks, WholeMeshStepsAreRefused) {
-  const std::array<int, 3> cells{4, 4, 6};
-  const HexMesh mesh = make_hex_grid(cells[0], cells[1], cells[2]);
-  const Fractions f = test::random_fractions(mesh.n_cells(), 2, 2, 1);
+// Small pieces (min_island) that cross the ranks' borders: the pieces are joined over the
+// ranks, and the cells reassigned, the figures and what follows are those of one rank.
+TEST(AssignOnRanks, SmallPiecesAsOnOneRank) {
+  const std::array<int, 3> cells{9, 8, 12};
+  const auto mesh = jittered_grid<HexMesh>(cells, 9);
+  const Fractions f = test::random_fractions(mesh.n_cells(), 3, 2, 21);
+  assign::AssignOptions options;
+  options.min_island = 6;
+  const assign::AssignResult one = assign::assign_materials(mesh, f, options);
+  ASSERT_GT(one.islands.islands, 20);
+  expect_same_as_one_rank(mesh, f, cells, options);
   const dist::Slab slab = dist::structured_slab(cells, 3, world().rank(), world().size(), 2);
   const auto [part_mesh, part] = test::held_part(mesh, f, cells, slab);
-  assign::AssignOptions options;
-  options.min_island = 3;
-  const dist::Distribution where{world(), slab.block};
-  if (world().size() > 1) {
-    EXPECT_THROW(assign::assign_materials(part_mesh, part, options, where), OptionError);
-  }
+  const assign::AssignResult r =
+      assign::assign_materials(part_mesh, part, options, {world(), slab.block});
+  EXPECT_EQ(r.islands.islands, one.islands.islands);
+  EXPECT_EQ(r.islands.cells, one.islands.cells);
+  EXPECT_EQ(r.islands.left, one.islands.left);
+  EXPECT_EQ(r.small_pieces_final, one.small_pieces_final);
 }
 
 }  // namespace

@@ -9,9 +9,15 @@
 // in the next round. A small piece with no such neighbour (a material that is small
 // everywhere and touches only other small pieces, or fills the whole grid) stays, and is
 // counted in `left`. A material whose every piece is small vanishes: assign reports it.
+//
+// On ranks (`where`), a piece may cross rank borders: each rank finds the pieces within the
+// cells it owns, and the pieces that meet across a border are joined over every rank's border
+// cells. The cells of small pieces go to every rank, which sums each piece's fractions over
+// its cells in increasing global id, as one process does, and relabels the cells it holds.
 #pragma once
 
 #include "hexadapt/core/ids.h"
+#include "hexadapt/dist/block.h"
 #include "hexadapt/mesh/fractions.h"
 
 namespace hexadapt::assign {
@@ -22,12 +28,19 @@ struct IslandResult {
   index_t left = 0;     ///< small pieces that stay
 };
 
-/// Pieces of `labels` smaller than min_cells, reassigned in place (min_cells <= 1: none).
+/// Pieces of `labels` smaller than min_cells, reassigned in place (min_cells <= 1: none);
+/// on ranks, the figures are those of the whole grid.
+template <class M>
+IslandResult remove_islands(const M& mesh, const Fractions& fractions, CellMaterials& labels,
+                            index_t min_cells, const dist::Distribution& where);
 template <class M>
 IslandResult remove_islands(const M& mesh, const Fractions& fractions, CellMaterials& labels,
                             index_t min_cells);
 
-/// The number of pieces of `labels` with fewer than min_cells cells.
+/// The number of pieces of `labels` with fewer than min_cells cells (of the whole grid).
+template <class M>
+index_t count_small_pieces(const M& mesh, const CellMaterials& labels, index_t min_cells,
+                           const dist::Distribution& where);
 template <class M>
 index_t count_small_pieces(const M& mesh, const CellMaterials& labels, index_t min_cells);
 
