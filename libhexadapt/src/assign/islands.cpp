@@ -13,20 +13,23 @@ namespace {
 
 // The pieces of `labels` over every rank: cells joined across faces within one material, each
 // piece named by its root, the lowest global id among its cells. A rank knows the root of
-// the cells it owns and of the ghost cells across a face from them.
+// the cells it owns and of the ghost cells across a face from them (-1 for the others).
 struct Pieces {
-  std::unordered_map<std::int64_t, std::int64_t> root_of;  ///< global cell id -> root
-  std::map<std::int64_t, std::int64_t> size;               ///< root -> cells
+  IdVector<CellId, std::int64_t> root;        ///< per held cell
+  std::map<std::int64_t, std::int64_t> size;  ///< root -> cells
 };
 
 // Roots joined over the ranks: every set is named by its lowest member.
 class Roots {
  public:
   std::int64_t find(std::int64_t k) {
-    auto it = parent_.find(k);
-    if (it == parent_.end()) return k;
-    const std::int64_t r = find(it->second);
-    it->second = r;
+    std::int64_t r = k;
+    for (auto it = parent_.find(r); it != parent_.end(); it = parent_.find(r)) r = it->second;
+    while (k != r) {  // every member on the way now points at the root
+      auto it = parent_.find(k);
+      k = it->second;
+      it->second = r;
+    }
     return r;
   }
   void join(std::int64_t a, std::int64_t b) {
@@ -92,17 +95,22 @@ Pieces global_pieces(const M& mesh, const CellMaterials& labels, const dist::Dis
   Roots roots;
   for (std::size_t i = 0; i < link_key.size(); ++i)
     roots.join(link_key[i], border.at(link_cell[i]));
-  Pieces p;
+  Pieces p{IdVector<CellId, std::int64_t>(static_cast<std::size_t>(mesh.n_cells()), -1), {}};
   for (std::size_t i = 0; i < keys.size(); ++i) p.size[roots.find(keys[i])] += sizes[i];
-  for (index_t s = b.owned_cell_first; s < b.owned_cell_end; ++s)
-    p.root_of[b.global(CellId(s))] = roots.find(key[CellId(s)]);
-  for (const auto& [cell, k] : border) p.root_of.emplace(cell, roots.find(k));
+  for (index_t s = b.owned_cell_first; s < b.owned_cell_end; ++s) {
+    const CellId c(s);
+    p.root[c] = roots.find(key[c]);
+    for (int lf = 0; lf < M::faces_per_cell; ++lf) {
+      const CellId o = mesh.neighbour(c, lf);
+      if (o.valid() && !b.owns(o)) p.root[o] = roots.find(border.at(b.global(o)));
+    }
+  }
   return p;
 }
 
 // Whether held cell c (owned, or a ghost across a face from an owned cell) is in a small piece.
-bool in_small(CellId c, const Pieces& p, const dist::Block& b, index_t min_cells) {
-  return p.size.at(p.root_of.at(b.global(c))) < min_cells;
+bool in_small(CellId c, const Pieces& p, index_t min_cells) {
+  return p.size.at(p.root[c]) < min_cells;
 }
 
 }  // namespace
@@ -124,15 +132,14 @@ IslandResult remove_islands(const M& mesh, const Fractions& fractions, CellMater
     std::vector<char> around;
     for (index_t s = b.owned_cell_first; s < b.owned_cell_end; ++s) {
       const CellId c(s);
-      if (!in_small(c, p, b, min_cells)) continue;
-      root.push_back(p.root_of.at(b.global(c)));
+      if (!in_small(c, p, min_cells)) continue;
+      root.push_back(p.root[c]);
       cell.push_back(b.global(c));
       for (int m = 0; m < n; ++m) fr.push_back(fractions(c, m));
       std::vector<char> mine(static_cast<std::size_t>(n), 0);
       for (int lf = 0; lf < M::faces_per_cell; ++lf) {
         const CellId o = mesh.neighbour(c, lf);
-        if (o.valid() && !in_small(o, p, b, min_cells))
-          mine[static_cast<std::size_t>(labels[o])] = 1;
+        if (o.valid() && !in_small(o, p, min_cells)) mine[static_cast<std::size_t>(labels[o])] = 1;
       }
       around.insert(around.end(), mine.begin(), mine.end());
     }
