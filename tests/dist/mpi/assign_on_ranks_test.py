@@ -95,6 +95,25 @@ def report(folder, ranks=None):
     return r
 
 
+def as_serial(case, pvtr, *options):
+    """Runs `pvtr` with `options` on one process, then on 2 and 3 ranks with --gather: each
+    gathered file must have the serial bytes, each report the serial figures. Returns the
+    serial report."""
+    args = ("../" + pvtr, "-o", "out.vtu", "--gather", "--json", "out.json") + options
+    code, err = run(case + "_serial", 0, *args)
+    check(code == 0, "%s: the serial run exits %d: %s" % (case, code, err))
+    for ranks in (2, 3):
+        folder = "%s_%d" % (case, ranks)
+        code, err = run(folder, ranks, *args)
+        check(code == 0, "%s on %d ranks exits %d: %s" % (case, ranks, code, err))
+        check(filecmp.cmp(path(case + "_serial", "out.vtu"), path(folder, "out.vtu"),
+                          shallow=False),
+              "%s on %d ranks: the gathered file differs from the serial one" % (case, ranks))
+        check(report(case + "_serial") == report(folder, ranks),
+              "%s on %d ranks: the report differs from the serial one" % (case, ranks))
+    return report(case + "_serial")
+
+
 def by_centre(data):
     centres = vtk.vtkCellCenters()
     centres.SetInputData(data)
@@ -151,37 +170,13 @@ slab_vf *= 0.3
 thin.GetCellData().GetArray("vf_slab").Modified()
 thin.GetCellData().GetArray("vf_matrix").Modified()
 write_pieces(thin, "thin.pvtr", 4)
-code, err = run("thin_serial", 0, "../thin.pvtr", "-o", "out.vtu", "--gather", "--keep-materials",
-                "--json", "out.json")
-check(code == 0, "kept material: the serial run exits %d: %s" % (code, err))
-kept = report("thin_serial")["assign"]["kept"]
+kept = as_serial("thin", "thin.pvtr", "--keep-materials")["assign"]["kept"]
 check(len(kept) == 1 and kept[0]["name"] == "slab" and kept[0]["cells"] > 10,
       "kept material: the serial run keeps %r" % kept)
-for ranks in (2, 3):
-    folder = "thin_%d" % ranks
-    code, err = run(folder, ranks, "../thin.pvtr", "-o", "out.vtu", "--gather",
-                    "--keep-materials", "--json", "out.json")
-    check(code == 0, "kept material on %d ranks exits %d: %s" % (ranks, code, err))
-    check(filecmp.cmp(path("thin_serial", "out.vtu"), path(folder, "out.vtu"), shallow=False),
-          "kept material on %d ranks: the gathered file differs from the serial one" % ranks)
-    check(report("thin_serial") == report(folder, ranks),
-          "kept material on %d ranks: the report differs from the serial one" % ranks)
 
 # Small pieces (--min-island) joined across the ranks' borders: the serial file and report.
-code, err = run("islands_serial", 0, "../hex.pvtr", "-o", "out.vtu", "--gather", "--min-island",
-                "8", "--json", "out.json")
-check(code == 0, "--min-island: the serial run exits %d: %s" % (code, err))
-islands = report("islands_serial")["assign"]["islands"]
+islands = as_serial("islands", "hex.pvtr", "--min-island", "8")["assign"]["islands"]
 check(islands["reassigned"] > 3, "--min-island: the serial run reassigns %r" % islands)
-for ranks in (2, 3):
-    folder = "islands_%d" % ranks
-    code, err = run(folder, ranks, "../hex.pvtr", "-o", "out.vtu", "--gather", "--min-island",
-                    "8", "--json", "out.json")
-    check(code == 0, "--min-island on %d ranks exits %d: %s" % (ranks, code, err))
-    check(filecmp.cmp(path("islands_serial", "out.vtu"), path(folder, "out.vtu"), shallow=False),
-          "--min-island on %d ranks: the gathered file differs from the serial one" % ranks)
-    check(report("islands_serial") == report(folder, ranks),
-          "--min-island on %d ranks: the report differs from the serial one" % ranks)
 
 # A label map: its materials are the values of the whole grid, one of them (42) only in the
 # last layers, which one rank alone holds; the gathered file is the serial one. A value that
