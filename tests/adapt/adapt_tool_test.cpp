@@ -79,8 +79,9 @@ TEST(AdaptTool, WritesTheMeshTheArraysAndTheReport) {
             report["result"]["dist_init"].get<double>());
   EXPECT_GE(report["result"]["min_quality"].get<double>(), 0.3);
   EXPECT_EQ(report["result"]["cells"], d.n_cells());
-  // check targets pillow move cavity move-smooth
-  EXPECT_EQ(report["result"]["steps"].size(), 6u);
+  // check targets pillow move cavity move-smooth reach
+  EXPECT_EQ(report["result"]["steps"].size(), 7u);
+  EXPECT_EQ(report["result"]["reach"]["still_off"], report["result"]["blocked_nodes"]);
   EXPECT_TRUE(report["threshold_met"].get<bool>());
   // -v says each step and where the interface nodes ended (it said nothing).
   const fs::path err = dir / "err.txt";

@@ -55,7 +55,9 @@ void check_guaranteed(const M& grid, const AdaptResult<M>& r, double threshold =
       EXPECT_GE(s.min_quality, threshold) << s.name;
     }
   }
-  EXPECT_LE(r.dist_final, r.dist_init);
+  // The distance to the surfaces: the last step slides nodes along them, which may take them
+  // farther from their target points (the asteroid at 6^3: 0.37 -> 0.48).
+  EXPECT_LE(r.surface_dist_final, r.surface_dist_init);
   index_t blocked = 0;
   for (NodeId v : id_range<NodeId>(r.mesh.n_nodes())) {
     EXPECT_EQ(r.blocked[v] != 0, r.has_target[v] && !r.near_interface[v]);
@@ -78,9 +80,9 @@ TEST_P(GeneratedCases, KeepTheThresholdAndGetCloser) {
         const auto r = adapt(grid, f, material, guaranteed_options());
         check_guaranteed(grid, r);
         // Closer than after the first move, unless that move already put every node on its
-        // interface (some slid there, away from their targets).
-        if (r.dist_init > 0 && r.n_blocked > 0) {
-          EXPECT_LT(r.dist_final, r.dist_init);
+        // interface.
+        if (r.surface_dist_init > 0 && r.n_blocked > 0) {
+          EXPECT_LT(r.surface_dist_final, r.surface_dist_init);
         }
       });
 }
@@ -112,11 +114,13 @@ INSTANTIATE_TEST_SUITE_P(
 // The asteroid at 20^3: with the interfaces pillowed first every interface node reaches its
 // surface, where cavities leave a tenth short. The layers kept with the cells that fail on the
 // staircase, for the moves to mend, reach more than layers carved where they fail (measured:
-// 782, 701 and 767 of 782).
+// 782, 701 and 767 of 782). Without the last step, which puts the nodes still off their
+// surface on it with their neighbours and brings all three to 782.
 TEST(GuaranteedMethod, InterfacesPillowedFirstReachWhereCavitiesDoNot) {
   test::with_generated_case({"asteroid", {20, 20, 20}}, [](const auto& grid, const Fractions& f,
                                                            const IdVector<CellId, int>& m) {
     AdaptOptions o = guaranteed_options();
+    o.reach.passes = 0;
     const auto first = adapt(grid, f, m, o);  // automatic: first in 3D
     check_guaranteed(grid, first);
     EXPECT_EQ(first.n_below_min_edge, 0);
@@ -231,6 +235,7 @@ TEST(GuaranteedMethod, AutomaticLayersFallBackToCavitiesWhereTheFirstLayerFallsS
       [](const auto& grid, const Fractions& f, const IdVector<CellId, int>& m) {
         AdaptOptions o = guaranteed_options();
         o.move.drag = false;
+        o.reach.passes = 0;  // with it, the first layer brings 333 of the 340 nodes near
         const auto r = adapt(grid, f, m, o);
         check_guaranteed(grid, r);
         EXPECT_EQ(r.layers, LayerStrategy::cavities);
@@ -312,6 +317,7 @@ TEST(GuaranteedMethod, ReportsTheNodesItCouldNotMove) {
   const Fractions f = test::sample_fractions(grid, test::triple_point(4.0), 3, 12);
   AdaptOptions o = guaranteed_options();
   o.threshold = 0.6;
+  o.reach.passes = 0;
   const auto r = adapt(grid, f, majority_materials(f), o);
   check_guaranteed(grid, r, 0.6);
   EXPECT_GT(r.n_blocked, 0);
@@ -328,6 +334,32 @@ TEST(GuaranteedMethod, ReportsTheNodesItCouldNotMove) {
     for (NodeId v : r.mesh.cell_nodes(c)) next_to_blocked |= r.blocked[v] != 0;
     EXPECT_TRUE(next_to_blocked);
   }
+}
+
+// The vortex at 16^3 and t = 1.5: its filaments are one cell thick, and the move-smooth loop
+// leaves nodes beside them off their surface, held by cells at the threshold (a surface
+// distance ratio of 0.18). Put on their surface with their neighbours repairing the cells
+// around them, most reach it.
+TEST(GuaranteedMethod, NodesTheLoopLeftOffTheirSurfaceReachItWithTheirNeighbours) {
+  test::with_generated_case({"vortex", {16, 16, 16}, 1.5}, [](const auto& grid, const Fractions& f,
+                                                              const IdVector<CellId, int>& m) {
+    AdaptOptions o = guaranteed_options();
+    o.reach.passes = 0;
+    const auto without = adapt(grid, f, m, o);
+    check_guaranteed(grid, without);
+    EXPECT_EQ(without.reach.passes, 0);
+    EXPECT_GE(without.n_blocked, 5);
+    EXPECT_GT(without.surface_dist_final, 0.1 * without.surface_dist_init);
+
+    const auto r = adapt(grid, f, m, guaranteed_options());
+    check_guaranteed(grid, r);
+    EXPECT_EQ(r.n_below_min_edge, 0);
+    EXPECT_EQ(r.reach.off_surface, without.n_blocked);
+    EXPECT_EQ(r.reach.still_off, r.n_blocked);
+    EXPECT_LE(2 * r.n_blocked, without.n_blocked);
+    EXPECT_LE(r.surface_dist_final, 0.05 * r.surface_dist_init);
+    EXPECT_EQ(r.surface_dist_init, without.surface_dist_init);  // the same run up to the loop
+  });
 }
 
 // A triple point extruded into 2 hex layers, with its fractions.

@@ -113,6 +113,9 @@ Json result_json(const AdaptResult<M>& r, index_t input_cells, double threshold)
                        {"failing", a.failing}});
   j["interface_pillows"] = pillows;
   j["mend_failing"] = r.mend_failing;
+  j["reach"] = {{"off_surface", r.reach.off_surface},
+                {"still_off", r.reach.still_off},
+                {"passes", r.reach.passes}};
   j["layers"] = to_string(r.layers);
   j["other_near_interface"] = r.other_near_interface;
   j["interface_layer_cells"] = r.n_interface_layer_cells;
@@ -349,6 +352,11 @@ int main(int argc, char** argv) {
   app.add_flag("--allow-bad-input", args.options.allow_bad_input,
                "guaranteed: run even when input cells are below --threshold (exit 3 otherwise)");
   app.add_option("--max-loops", args.options.max_loops, "guaranteed: move-smooth rounds at most")
+      ->check(cli::non_negative)
+      ->capture_default_str();
+  app.add_option("--reach-passes", args.options.reach.passes,
+                 "guaranteed: passes putting the nodes still off their surface after the loop "
+                 "on it, their neighbours repairing the cells (0: none)")
       ->check(cli::non_negative)
       ->capture_default_str();
   app.add_option("--cavity-range", args.options.cavity.range,

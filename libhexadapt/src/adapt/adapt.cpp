@@ -64,6 +64,8 @@ void check_options(const AdaptOptions& o) {
     throw OptionError("{enough_share} must be in [0, 1], got " + std::to_string(o.enough_share));
   if (!(o.near_interface >= 0))
     throw OptionError("{near_interface} must be >= 0, got " + std::to_string(o.near_interface));
+  if (o.reach.passes < 0)
+    throw OptionError("{reach.passes} must be >= 0, got " + std::to_string(o.reach.passes));
   if (!(o.loop_tolerance >= 0))
     throw OptionError("loop_tolerance must be >= 0, got " + std::to_string(o.loop_tolerance));
   if (o.targets.volume_sweeps < 0 || !(o.targets.volume_max_shift >= 0) ||

@@ -6,13 +6,16 @@
 // The target correction (sec. 5.3) changes targets only, never the mesh, so it cannot break
 // the guarantee. Between the first controlled move and the move-smooth loop, cavities are
 // pillowed around the nodes the move left short of their targets (sec. 5.2,
-// cavity_pillow.h); those still short at the end are reported as blocked.
+// cavity_pillow.h). After the loop, the nodes still off their surface go onto it where the
+// nodes around them can repair their cells (reach_surface.h); those still off at the end are
+// reported as blocked.
 #include "guaranteed_pipeline.h"
 
 #include <algorithm>
 #include <string>
 
 #include "hexadapt/adapt/local_topology.h"
+#include "hexadapt/adapt/reach_surface.h"
 #include "hexadapt/core/error.h"
 #include "pipeline_steps.h"
 
@@ -304,7 +307,7 @@ void run_layers(const M& grid, const CellMaterials& material, const Targets& gri
   record_step(r, mesh, "cavity", clock, options.progress, 0.4, "");  // the loop reports
   // The loop's rounds report within what is left of the run (after a probe, its second half).
   AdaptOptions rest = options;
-  rest.progress = progress_part(options.progress, 0.4, 1.0);
+  rest.progress = progress_part(options.progress, 0.4, 0.95);
 
   const auto sliding = sliding_constraints(boundary_constraints(mesh, options.boundary), targets);
   if (mend) {
@@ -322,11 +325,14 @@ void run_layers(const M& grid, const CellMaterials& material, const Targets& gri
       record_step(r, mesh, "move-smooth", clock, options.progress, 1.0, "");
       return;  // the caller discards the run
     }
-    rest.progress = progress_part(options.progress, 0.5, 1.0);
+    rest.progress = progress_part(options.progress, 0.5, 0.95);
   }
   rest.max_loops = options.max_loops - r.loops;
   r.loops += move_smooth_loop(mesh, targets, sliding, size, rest, r.loops);
-  record_step(r, mesh, "move-smooth", clock, options.progress, 1.0, "");
+  record_step(r, mesh, "move-smooth", clock, options.progress, 0.95, "reach");
+  r.reach = reach_surfaces(mesh, targets, sliding, size, options.reach, options.smooth,
+                           options.threshold, options.near_interface);
+  record_step(r, mesh, "reach", clock, options.progress, 1.0, "");
 
   r.mesh = std::move(mesh);
   r.material = std::move(out_material);

@@ -28,6 +28,7 @@
 #include "hexadapt/adapt/cavity_pillow.h"
 #include "hexadapt/adapt/controlled_move.h"
 #include "hexadapt/adapt/global_pillow.h"
+#include "hexadapt/adapt/reach_surface.h"
 #include "hexadapt/adapt/interface_pillow.h"
 #include "hexadapt/adapt/node_constraint.h"
 #include "hexadapt/adapt/size_criterion.h"
@@ -96,6 +97,9 @@ struct AdaptOptions : StepSettings {
   int mend_rounds = 12;
   /// guaranteed: the loop stops when a round lowers dist by no more than this share of it.
   double loop_tolerance = 1e-3;
+  /// guaranteed: after the loop, the nodes still off their surface go onto it where their
+  /// neighbours can repair the cells around them (reach_surface.h); passes = 0: no such step.
+  ReachOptions reach;
   /// A node within this many local sizes (the mean local_size of its cells) of its interface
   /// surface has reached the interface; one farther is blocked.
   double near_interface = 0.05;
@@ -170,6 +174,7 @@ struct AdaptResult {
   index_t n_cavities_published = 0;
   index_t n_cells_added = 0;          ///< layer cells of the published cavities
   TargetCorrectionResult correction;  ///< the 3D target correction (ran or why skipped)
+  ReachResult reach;                  ///< the nodes put on their surface after the loop
 };
 
 /// Runs the chosen pipeline. `material` holds one index into `fractions`' materials per

@@ -1,0 +1,52 @@
+// The last step of the guaranteed method: nodes the move-smooth loop left off their interface
+// surface are put on it, and the cells around them are repaired by moving their neighbours.
+//
+// The loop moves one node at a time, every cell around it keeping the criteria; a node
+// whose every step would sink a cell below the threshold stays where it is, although moving
+// its neighbours as well would let it reach. Here a node off its surface (farther than
+// near_interface local sizes) is put on it (the foot of its distance), and the nodes around
+// it then optimise their cells (smoothing.h, the pattern search only): the nodes without a
+// target within two cells of it, and the nodes with a target sharing a cell with it, which
+// slide on their own surfaces. The move is kept when every cell around these nodes meets
+// the criteria (the threshold and the size criterion); otherwise the node tries 3/4 of the
+// way, then just enough to come within near_interface, and stays where it was when none
+// holds (a node that comes closer without reaching stays there and tries again on the next
+// pass). Nodes whose regions share no cell are repaired together, in a fixed order, and the
+// passes repeat while a node reaches its surface, so the result is the same whatever the
+// thread count.
+//
+// Measured on the 3D cases of docs/results.md: the blocked nodes sit beside cells at
+// 0.300-0.31 (vortex filaments one cell thick, balldrop's air two cells thick under the
+// drop), which one node moving alone cannot raise.
+#pragma once
+
+#include "hexadapt/adapt/node_constraint.h"
+#include "hexadapt/adapt/size_criterion.h"
+#include "hexadapt/adapt/smoothing.h"
+#include "hexadapt/adapt/targets.h"
+#include "hexadapt/core/ids.h"
+
+namespace hexadapt {
+
+struct ReachOptions {
+  int passes = 3;  ///< passes over the nodes still off their surface; 0 = none
+};
+
+struct ReachResult {
+  index_t off_surface = 0;  ///< nodes off their surface before the first pass
+  index_t still_off = 0;    ///< nodes off their surface after the last pass
+  /// Passes made: they stop when one brings no node closer, or at ReachOptions::passes.
+  int passes = 0;
+};
+
+/// Puts the nodes farther than near_interface local sizes from their surface (`surface`:
+/// sliding_constraints()) on it where the cells around them can be repaired to meet
+/// `threshold` and the size criterion; `smooth`: the smoothing settings the repair starts
+/// from. Throws OptionError for passes < 0.
+template <class M>
+ReachResult reach_surfaces(M& mesh, const Targets& targets,
+                           const IdVector<NodeId, NodeConstraint>& surface,
+                           const SizeCriterion& size, const ReachOptions& options,
+                           const SmoothOptions& smooth, double threshold, double near_interface);
+
+}  // namespace hexadapt
