@@ -81,7 +81,7 @@ TEST(AdaptTool, WritesTheMeshTheArraysAndTheReport) {
   EXPECT_EQ(report["result"]["cells"], d.n_cells());
   // check targets pillow move cavity move-smooth reach
   EXPECT_EQ(report["result"]["steps"].size(), 7u);
-  EXPECT_EQ(report["result"]["reach"]["still_off"], report["result"]["blocked_nodes"]);
+  EXPECT_LE(report["result"]["blocked_nodes"], report["result"]["reach"]["still_off"]);
   EXPECT_TRUE(report["threshold_met"].get<bool>());
   // -v says each step and where the interface nodes ended (it said nothing).
   const fs::path err = dir / "err.txt";

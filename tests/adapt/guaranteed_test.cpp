@@ -355,7 +355,7 @@ TEST(GuaranteedMethod, NodesTheLoopLeftOffTheirSurfaceReachItWithTheirNeighbours
     check_guaranteed(grid, r);
     EXPECT_EQ(r.n_below_min_edge, 0);
     EXPECT_EQ(r.reach.off_surface, without.n_blocked);
-    EXPECT_EQ(r.reach.still_off, r.n_blocked);
+    EXPECT_LE(r.n_blocked, r.reach.still_off);  // the loop, resumed, may bring more near
     EXPECT_LE(2 * r.n_blocked, without.n_blocked);
     EXPECT_LE(r.surface_dist_final, 0.05 * r.surface_dist_init);
     EXPECT_EQ(r.surface_dist_init, without.surface_dist_init);  // the same run up to the loop

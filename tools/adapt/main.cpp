@@ -115,6 +115,7 @@ Json result_json(const AdaptResult<M>& r, index_t input_cells, double threshold)
   j["mend_failing"] = r.mend_failing;
   j["reach"] = {{"off_surface", r.reach.off_surface},
                 {"still_off", r.reach.still_off},
+                {"moves", r.reach.moves},
                 {"passes", r.reach.passes}};
   j["layers"] = to_string(r.layers);
   j["other_near_interface"] = r.other_near_interface;

@@ -202,6 +202,7 @@ ReachResult reach_surfaces(M& mesh, const Targets& targets,
   while (out.passes < options.passes && !off.empty()) {
     ++out.passes;
     const index_t closer = reach_pass(rp, off);
+    out.moves += closer;
     off = off_surface(mesh, targets, surface, size, near_interface);
     if (closer == 0) break;
   }

@@ -35,6 +35,7 @@ struct ReachOptions {
 struct ReachResult {
   index_t off_surface = 0;  ///< nodes off their surface before the first pass
   index_t still_off = 0;    ///< nodes off their surface after the last pass
+  index_t moves = 0;        ///< moves kept, onto a surface or toward it, over all passes
   /// Passes made: they stop when one brings no node closer, or at ReachOptions::passes.
   int passes = 0;
 };
