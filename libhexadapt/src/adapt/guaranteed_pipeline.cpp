@@ -241,9 +241,10 @@ void diagnose(AdaptResult<M>& r, const std::vector<NodeId>& failed_seeds) {
 }
 
 // Rounds of the move-smooth loop after the reach step. Measured on the vortex 64^3 at t = 1.5
-// (target distance ratio): 0.54 after the step, 0.343 after 3 rounds, 0.337 after the 7
-// rounds left of 20 (1.5 CPU s with the step), 0.31 without the step.
-constexpr int resumed_loops = 3;
+// (target distance ratio; CPU s of the step and the rounds): 0.54 after the step, 0.376 after
+// 1 round (0.7 s), 0.343 after 3 (1.0 s), 0.337 after the 7 rounds left of 20 (1.5 s), 0.31
+// without the step. The rounds cost adapt's speed on the vortex, whose margin is thin.
+constexpr int resumed_loops = 1;
 
 // Rounds of the move-smooth loop after which a run whose first layer was kept failing is
 // judged (run_layers). Measured at 48^3 on venn and balldrop t = 1: the cells failing after

@@ -93,7 +93,7 @@ bool region_passes(const M& mesh, const Region& r, const SizeCriterion& size, do
 // Where a node `offset` from its surface tries to go on its k-th try: onto the surface, 3/4
 // of the way, then just within `near` of it. False: the k-th try would be no nearer than
 // the one before, and is not made.
-bool try_position(const Vec3& at, const Vec3& offset, double near, int k, Vec3& p) {
+bool kth_position(const Vec3& at, const Vec3& offset, double near, int k, Vec3& p) {
   const double fractions[] = {1.0, 0.75, 1.0 - 0.8 * near / offset.norm()};
   if (k == 2 && fractions[2] >= fractions[1]) return false;
   p = at - fractions[k] * offset;
@@ -125,7 +125,7 @@ std::vector<NodeId> repair_batch(Repair<M>& rp, const std::vector<const Region*>
     const Vec3 d = at - rp.targets.position[r.node];
     const double near = rp.near_interface * node_local_size(mesh, r.node, rp.size);
     Vec3 p;
-    if (!try_position(at, d - rp.surface[r.node].project(d), near, k, p)) continue;
+    if (!kth_position(at, d - rp.surface[r.node].project(d), near, k, p)) continue;
     saved[i].push_back(at);
     for (NodeId w : r.helpers) saved[i].push_back(mesh.point(w));
     mesh.set_point(r.node, p);
