@@ -122,10 +122,10 @@ std::vector<NodeId> repair_batch(Repair<M>& rp, const std::vector<const Region*>
   for (std::size_t i = 0; i < batch.size(); ++i) {
     const Region& r = *batch[i];
     const Vec3 at = mesh.point(r.node);
-    const Vec3 d = at - rp.targets.position[r.node];
+    const Vec3 offset = surface_offset(at, rp.targets.position[r.node], rp.surface[r.node]);
     const double near = rp.near_interface * node_local_size(mesh, r.node, rp.size);
     Vec3 p;
-    if (!kth_position(at, d - rp.surface[r.node].project(d), near, k, p)) continue;
+    if (!kth_position(at, offset, near, k, p)) continue;
     saved[i].push_back(at);
     for (NodeId w : r.helpers) saved[i].push_back(mesh.point(w));
     mesh.set_point(r.node, p);

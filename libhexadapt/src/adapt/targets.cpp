@@ -313,9 +313,13 @@ IdVector<NodeId, NodeConstraint> sliding_constraints(
   return out;
 }
 
-double surface_distance(const Vec3& p, const Vec3& target, const NodeConstraint& surface) {
+Vec3 surface_offset(const Vec3& p, const Vec3& target, const NodeConstraint& surface) {
   const Vec3 d = p - target;
-  return (d - surface.project(d)).norm();
+  return d - surface.project(d);
+}
+
+double surface_distance(const Vec3& p, const Vec3& target, const NodeConstraint& surface) {
+  return surface_offset(p, target, surface).norm();
 }
 
 template <class M>

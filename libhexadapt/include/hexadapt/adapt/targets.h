@@ -103,4 +103,8 @@ double target_distance(const M& mesh, const Targets& targets);
 /// when the constraint fixes the node).
 double surface_distance(const Vec3& p, const Vec3& target, const NodeConstraint& surface);
 
+/// p's offset from that surface: p minus the nearest point of it (its norm is
+/// surface_distance()).
+Vec3 surface_offset(const Vec3& p, const Vec3& target, const NodeConstraint& surface);
+
 }  // namespace hexadapt
