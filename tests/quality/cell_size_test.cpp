@@ -216,43 +216,5 @@ TEST(CellSize, ScoresDownToABoundAreTheWholeComputationAboveIt) {
   EXPECT_GT(exact, 1000);
 }
 
-// A hex whose one corner tries many positions, its other parts computed once: the same
-// figures as the whole computation, bit for bit, down to the same bounds; with collapsed
-// edges and NaNs both at the moving corner and away from it.
-TEST(CellSize, ACornerMovingGivesTheWholeComputationsFigures) {
-  std::mt19937 rng(17);
-  std::uniform_real_distribution<double> jitter(-0.4, 0.4), step(-1.2, 1.2), bound(-1.2, 1.0);
-  int exact = 0, stopped = 0;
-  for (int k = 0; k < 60; ++k) {
-    std::array<Vec3, 8> p = box(1, 2, 0.5);
-    for (Vec3& x : p) x += Vec3(jitter(rng), jitter(rng), jitter(rng));
-    if (k == 58) p[6] = p[7];                // a collapsed edge
-    if (k == 59) p[5].x() = std::nan("");  // a NaN
-    for (std::size_t moving = 0; moving < 8; ++moving) {
-      const HexCornerMove move(p, moving);
-      for (int t = 0; t < 14; ++t) {
-        std::array<Vec3, 8> q = p;
-        q[moving] += Vec3(step(rng), step(rng), step(rng));
-        if (t == 10) q[moving] = p[moving ^ 1u];
-        if (t == 11) q[moving].y() = std::nan("");
-        if (t == 12) q[moving] = p[moving];
-        const double min_edge = t % 3 == 0 ? 0.0 : 0.3;
-        const double stop_below = t == 13 ? -std::numeric_limits<double>::infinity() : bound(rng);
-        const HexShapeAndSize got = move.at(q[moving], min_edge, stop_below);
-        expect_as_whole(got, q, min_edge, stop_below);
-        const HexShapeAndSize whole = hex_shape_and_size(q, min_edge, stop_below);
-        if (whole.scaled_jacobian >= stop_below) {
-          EXPECT_EQ(got.scaled_jacobian, whole.scaled_jacobian);
-          ++exact;
-        } else {
-          stopped += got.scaled_jacobian != hex_scaled_jacobian(q);
-        }
-      }
-    }
-  }
-  EXPECT_GT(exact, 1500);
-  EXPECT_GT(stopped, 100);
-}
-
 }  // namespace
 }  // namespace hexadapt

@@ -2,8 +2,7 @@
 // internal to the smoothing: the scores at the node's current position come from a mesh-wide
 // cache of the cells none of whose nodes moved since they were scored, and a trial position
 // scores the cells worst first, so that a trial that must not lower the local minimum is
-// mostly refused at its first cell. A hex's parts away from the node are computed once per
-// node (HexCornerMove), at its first trial.
+// mostly refused at its first cell.
 //
 // The order changes no result: a trial that does not stop early is the minimum over all the
 // cells, and one that stops is below its bound whatever the order (min_score_around).
@@ -17,7 +16,6 @@
 #include "hexadapt/adapt/size_criterion.h"
 #include "hexadapt/core/ids.h"
 #include "hexadapt/core/span.h"
-#include "hexadapt/quality/cell_size.h"
 
 namespace hexadapt::detail {
 
@@ -68,7 +66,7 @@ class NodeScores {
   double trial(double stop_below = -std::numeric_limits<double>::infinity()) {
     double s = 1.0;
     for (Entry& e : cells_) {
-      e.trial = trial_score(e, stop_below);
+      e.trial = cell_score(mesh_, e.cell, size_, stop_below);
       s = std::min(s, e.trial);
       if (s < stop_below) break;
     }
@@ -93,7 +91,10 @@ class NodeScores {
   bool capped(double at) const {
     for (const Entry& e : cells_) {
       if (e.current > at) break;  // worst first
-      if (cell_score_bound(mesh_, e.cell, size_, corner_of(e.cell)) <= at) return true;
+      const auto& nodes = mesh_.cell_nodes(e.cell);
+      const auto k = static_cast<std::size_t>(
+          std::find(nodes.begin(), nodes.end(), node_) - nodes.begin());
+      if (cell_score_bound(mesh_, e.cell, size_, k) <= at) return true;
     }
     return false;
   }
@@ -108,37 +109,7 @@ class NodeScores {
     CellId cell;
     double current;  ///< score at the node's current position
     double trial;    ///< score at the last trial position
-    /// Index in corner_moves_ (hexes), made at the cell's second trial; -1 before its first
-    /// trial, -2 after it.
-    int corner_move = -1;
   };
-
-  // The node's index among the cell's nodes.
-  std::size_t corner_of(CellId c) const {
-    const auto& nodes = mesh_.cell_nodes(c);
-    return static_cast<std::size_t>(std::find(nodes.begin(), nodes.end(), node_) -
-                                    nodes.begin());
-  }
-
-  // cell_score of e's cell with the node where it is now.
-  double trial_score(Entry& e, double stop_below) {
-    if constexpr (M::dim == 3) {
-      if (e.corner_move == -1) {  // the first trial: the whole cell, mostly the only one
-        e.corner_move = -2;
-        return cell_score(mesh_, e.cell, size_, stop_below);
-      }
-      if (e.corner_move < 0) {
-        if (corner_moves_.empty()) corner_moves_.reserve(cells_.size());
-        e.corner_move = static_cast<int>(corner_moves_.size());
-        corner_moves_.emplace_back(mesh_.cell_points(e.cell), corner_of(e.cell));
-      }
-      const HexShapeAndSize m = corner_moves_[static_cast<std::size_t>(e.corner_move)].at(
-          mesh_.point(node_), size_.min_length(e.cell), stop_below);
-      return score_of(m.scaled_jacobian, m.shortest_edge, e.cell, size_);
-    } else {
-      return cell_score(mesh_, e.cell, size_, stop_below);
-    }
-  }
 
   // Insertion sort: a node has few cells, mostly in order already after a small move.
   void sort_worst_first() {
@@ -151,7 +122,6 @@ class NodeScores {
   const SizeCriterion& size_;
   NodeId node_;
   std::vector<Entry> cells_;  ///< lowest current score first
-  std::vector<HexCornerMove> corner_moves_;
 };
 
 }  // namespace hexadapt::detail

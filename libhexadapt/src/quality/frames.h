@@ -60,35 +60,6 @@ inline std::size_t hex_edge_index(std::size_t v, int axis) {
   return 8 + (v & 3u);
 }
 
-/// det(a, b, c) / (|a| |b| |c|) computed on unit vectors, so that neither tiny nor huge
-/// coordinates underflow or overflow the product of the lengths. False for a degenerate frame.
-inline bool scaled_det(const Vec3& a, const Vec3& b, const Vec3& c, double scale, double& out) {
-  const double la = a.norm(), lb = b.norm(), lc = c.norm();
-  const double tiny = degenerate_length * scale;
-  if (!(la > tiny && lb > tiny && lc > tiny)) return false;  // also catches NaN
-  out = (a / la).dot((b / lb).cross(c / lc));
-  return std::isfinite(out);
-}
-
-/// Corner v's Jacobian from the unit edges (hex_corner_frame): its edges along x, y, z
-/// pointing away from v, x and y swapped at the corners of odd parity.
-[[gnu::always_inline]] inline double corner_jacobian(const std::array<Vec3, 12>& unit,
-                                                     std::size_t v) {
-  std::array<Vec3, 3> f;
-  for (int axis = 0; axis < 3; ++axis) {
-    const Vec3& u = unit[hex_edge_index(v, axis)];
-    f[static_cast<std::size_t>(axis)] = (v >> axis) & 1u ? Vec3(-u) : u;
-  }
-  const unsigned parity = (v & 1u) ^ ((v >> 1) & 1u) ^ ((v >> 2) & 1u);
-  if (parity) std::swap(f[0], f[1]);
-  return f[0].dot(f[1].cross(f[2]));
-}
-
-/// The shortest edge as reported: 0 when it is collapsed next to the longest.
-inline double reported_shortest(double shortest, double longest) {
-  return shortest > degenerate_length * longest ? shortest : 0.0;
-}
-
 /// hex_scaled_jacobian(p) from p's edges (scaled_jacobian.cpp), exact when it is at least
 /// `stop_below`; otherwise some value below stop_below (it stops at the first corner below).
 double hex_scaled_jacobian(const std::array<Vec3, 8>& p, const HexEdges& e, double stop_below);

@@ -10,6 +10,30 @@ namespace hexadapt {
 
 namespace {
 
+// det(a, b, c) / (|a| |b| |c|) computed on unit vectors, so that neither tiny nor huge
+// coordinates underflow or overflow the product of the lengths. False for a degenerate frame.
+bool scaled_det(const Vec3& a, const Vec3& b, const Vec3& c, double scale, double& out) {
+  const double la = a.norm(), lb = b.norm(), lc = c.norm();
+  const double tiny = quality_detail::degenerate_length * scale;
+  if (!(la > tiny && lb > tiny && lc > tiny)) return false;  // also catches NaN
+  out = (a / la).dot((b / lb).cross(c / lc));
+  return std::isfinite(out);
+}
+
+// Corner v's Jacobian from the unit edges (hex_corner_frame): its edges along x, y, z
+// pointing away from v, x and y swapped at the corners of odd parity.
+[[gnu::always_inline]] inline double corner_jacobian(const std::array<Vec3, 12>& unit,
+                                                     std::size_t v) {
+  std::array<Vec3, 3> f;
+  for (int axis = 0; axis < 3; ++axis) {
+    const Vec3& u = unit[quality_detail::hex_edge_index(v, axis)];
+    f[static_cast<std::size_t>(axis)] = (v >> axis) & 1u ? Vec3(-u) : u;
+  }
+  const unsigned parity = (v & 1u) ^ ((v >> 1) & 1u) ^ ((v >> 2) & 1u);
+  if (parity) std::swap(f[0], f[1]);
+  return f[0].dot(f[1].cross(f[2]));
+}
+
 // The unit vector of edge k of p; false when the edge has no direction.
 bool unit_edge(const quality_detail::HexEdges& e, std::size_t k, Vec3& out) {
   if (!(e.length[k] > 0) || !std::isfinite(e.length[k])) return false;
@@ -41,14 +65,14 @@ double quality_detail::hex_scaled_jacobian(const std::array<Vec3, 8>& p,
   // makes it -1, which the whole minimum then is too.
   double worst = 1.0;
   for (std::size_t v = 0; v < 8; ++v) {
-    const double j = quality_detail::corner_jacobian(unit, v);
+    const double j = corner_jacobian(unit, v);
     if (!std::isfinite(j)) return -1.0;
     worst = std::min(worst, j);
     if (worst < stop_below) return std::clamp(worst, -1.0, 1.0);
   }
   const auto axes = quality_detail::hex_principal_axes(p);
   double centre;
-  if (!quality_detail::scaled_det(axes[0], axes[1], axes[2], 4 * scale, centre)) return -1.0;
+  if (!scaled_det(axes[0], axes[1], axes[2], 4 * scale, centre)) return -1.0;
   return std::clamp(std::min(worst, centre), -1.0, 1.0);
 }
 
@@ -68,7 +92,7 @@ double quality_detail::hex_scaled_jacobian_bound(const quality_detail::HexEdges&
       const std::size_t k = quality_detail::hex_edge_index(v, axis);
       if (!unit_edge(e, k, unit[k])) return 1.0;
     }
-    const double j = quality_detail::corner_jacobian(unit, v);
+    const double j = corner_jacobian(unit, v);
     if (std::isfinite(j)) bound = std::min(bound, j);
   }
   return std::max(bound, -1.0);

@@ -43,25 +43,6 @@ HexShapeAndSize hex_shape_and_size(
     const std::array<Vec3, 8>& p, double min_edge = 0,
     double stop_below = -std::numeric_limits<double>::infinity());
 
-/// hex_shape_and_size of a hex whose corner `moving` alone takes many positions (a node
-/// trying places): what does not depend on that corner, its 9 other edges and the 4 corners
-/// whose frames do not hold it, is computed once. at() gives hex_shape_and_size's values bit
-/// for bit, down to the same bounds.
-class HexCornerMove {
- public:
-  HexCornerMove(const std::array<Vec3, 8>& p, std::size_t moving);
-  HexShapeAndSize at(const Vec3& corner, double min_edge = 0,
-                     double stop_below = -std::numeric_limits<double>::infinity()) const;
-
- private:
-  std::array<Vec3, 8> p_;
-  std::array<Vec3, 12> unit_;  ///< the unit edges away from the moving corner
-  std::size_t moving_;
-  double shortest_ = 0, longest_ = 0;  ///< of the edges away from it
-  bool finite_ = true;                 ///< whether their lengths are finite
-  double corners_ = 1;                 ///< the least Jacobian of the corners away from it
-};
-
 /// What a cell can still reach while only its corner `moving` (binary order for a hex,
 /// counter-clockwise for a quad) moves: its scaled Jacobian stays at or below
 /// `scaled_jacobian` (the corners whose frames do not hold the moving corner), its shortest
