@@ -363,6 +363,26 @@ TEST(GuaranteedMethod, NodesTheLoopLeftOffTheirSurfaceReachItWithTheirNeighbours
   });
 }
 
+// Nodes the controlled move slides onto their surface, short of their target, get a cavity
+// as the nodes off their surface do (cavity pillowing is the 2D default), and the cavity
+// gives them room to reach their target. Seeded with the nodes off their surface only, these
+// cases kept target distance ratios of 0.46 and 0.43 (the generated triple point at 28x12,
+// t = 1.5, and stir at 30x15, t = 2, through the tools).
+TEST(GuaranteedMethod, NodesThatSlidShortOfTheirTargetReachItThroughACavity) {
+  for (const test::GeneratedCase& c : {test::GeneratedCase{"triple-point", {28, 12}, 1.5},
+                                       test::GeneratedCase{"stir", {30, 15}, 2.0}}) {
+    SCOPED_TRACE(test::label(c));
+    test::with_generated_case(
+        c, [](const auto& grid, const Fractions& f, const IdVector<CellId, int>& m) {
+          const auto r = adapt(grid, f, m, guaranteed_options());
+          check_guaranteed(grid, r);
+          EXPECT_EQ(r.n_below_min_edge, 0);
+          EXPECT_GT(r.dist_init, 0);
+          EXPECT_LE(r.dist_final, 0.01 * r.dist_init);
+        });
+  }
+}
+
 // A triple point extruded into 2 hex layers, with its fractions.
 std::pair<HexMesh, Fractions> extruded_triple_point() {
   const double h = 1.0 / 8;
