@@ -366,8 +366,8 @@ TEST(GuaranteedMethod, NodesTheLoopLeftOffTheirSurfaceReachItWithTheirNeighbours
 // Nodes the controlled move slides onto their surface, short of their target, get a cavity
 // as the nodes off their surface do (cavity pillowing is the 2D default), and the cavity
 // gives them room to reach their target. Seeded with the nodes off their surface only, these
-// cases kept target distance ratios of 0.46 and 0.43 (the generated triple point at 28x12,
-// t = 1.5, and stir at 30x15, t = 2, through the tools).
+// cases kept target distance ratios of 0.46 and 0.43 (the triple point at 28x12, t = 1.5,
+// and stir at 30x15, t = 2).
 TEST(GuaranteedMethod, NodesThatSlidShortOfTheirTargetReachItThroughACavity) {
   for (const test::GeneratedCase& c : {test::GeneratedCase{"triple-point", {28, 12}, 1.5},
                                        test::GeneratedCase{"stir", {30, 15}, 2.0}}) {

@@ -120,11 +120,11 @@ int move_smooth_loop(M& mesh, const Targets& targets,
 }
 
 // Pillows cavities around the nodes the first move left short of their targets (sec. 5.2),
-// those that slid onto their surface too: seeded only with the nodes off their surface, the
-// 2D cases kept slid nodes away from their targets (damBreak t = 0.4: target distance ratio
-// 0.446 against 0 with them). Input nodes keep their ids and their targets: a seed stays with the cells outside its cavity, on the
-// interface; its copies inside the cavity are new nodes without a target, free to smooth.
-// The layer cells take the local size of their cavity's cells.
+// those that slid onto their surface too: seeded with the nodes off their surface only, the 2D
+// cases kept slid nodes away from their targets (damBreak t = 0.4: target distance ratio 0.446,
+// against 0 with them). Input nodes keep their ids and their targets: a seed stays with the
+// cells outside its cavity, on the interface; its copies inside the cavity are new nodes
+// without a target, free to smooth. The layer cells take the local size of their cavity's cells.
 template <class M>
 std::vector<NodeId> pillow_cavities(M& mesh, CellMaterials& material, Targets& targets,
                                     SizeCriterion& size, const MoveResult& first, int n_materials,
