@@ -170,6 +170,10 @@ Json result_json(const AdaptResult<M>& r, index_t input_cells, double threshold)
     correction["skipped"] = c.skipped;
   }
   j["correction"] = correction;
+  const TargetSpacingResult& sp = r.spacing;
+  j["target_spacing"] = {{"short_edges", sp.short_edges}, {"moved_targets", sp.moved},
+                         {"left_short", sp.left_short}, {"max_shift", sp.max_shift},
+                         {"sweeps", sp.sweeps}};
   return j;
 }
 

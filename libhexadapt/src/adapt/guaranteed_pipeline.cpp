@@ -3,8 +3,9 @@
 // holds the threshold the user gave whenever the input does. Beside a cell below it (a first
 // layer kept with its failing cells, first_layer), no move makes a passing cell fail nor the
 // controlled move a failing one worse; a run that still ends with such a cell is discarded.
-// The target correction (sec. 5.3) changes targets only, never the mesh, so it cannot break
-// the guarantee. Between the first controlled move and the move-smooth loop, cavities are
+// The target correction (sec. 5.3) and the spacing of targets closer than the size criterion
+// allows (target_spacing.h) change targets only, never the mesh, so they cannot break the
+// guarantee. Between the first controlled move and the move-smooth loop, cavities are
 // pillowed around the nodes the move left short of their targets (sec. 5.2,
 // cavity_pillow.h). After the loop, the nodes still off their surface go onto it where the
 // nodes around them can repair their cells (reach_surface.h), and the loop resumes; those
@@ -442,6 +443,8 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
   r.n_interface_nodes = targets.n_interface_nodes;
   record_step(r, mesh, "targets", clock, options.progress, 0.1, "layers");
   correct(mesh, material, grid_boundary, targets, model, r, clock, options);
+  r.spacing = space_targets(mesh, size, sliding_constraints(grid_boundary, targets), targets,
+                            options.spacing);
 
   const int n_materials = fractions.n_materials();
   AdaptOptions layers = options;  // what is left reports as its part of the progress

@@ -18,7 +18,8 @@
 // near_interface from their surface at the end are reported in `blocked`. In 3D, when asked
 // and given the reconstruction's geometric model, the guaranteed method first corrects the
 // targets (sec. 5.3, target_correction.h); otherwise the correction is skipped and the
-// result says why. It is off by default.
+// result says why. It is off by default. With the size criterion on, targets closer than it
+// lets their grid edge be are then pushed apart along their interface (target_spacing.h).
 #pragma once
 
 #include <string>
@@ -35,6 +36,7 @@
 #include "hexadapt/adapt/smoothing.h"
 #include "hexadapt/adapt/step_settings.h"
 #include "hexadapt/adapt/target_correction.h"
+#include "hexadapt/adapt/target_spacing.h"
 #include "hexadapt/adapt/targets.h"
 #include "hexadapt/core/log.h"
 #include "hexadapt/mesh/assigned_grid.h"
@@ -73,6 +75,8 @@ struct AdaptOptions : StepSettings {
   MoveOptions move;
   TargetOptions targets;               ///< target computation
   TargetCorrectionOptions correction;  ///< guaranteed, 3D: targets smoothed on the model
+  /// guaranteed, with the size criterion: targets pushed apart where closer than it allows.
+  TargetSpacingOptions spacing;
   Progress progress;                   ///< phase progress, nullptr = silent
   /// guaranteed: run even when input cells are below the threshold (no guarantee then).
   bool allow_bad_input = false;
@@ -174,6 +178,7 @@ struct AdaptResult {
   index_t n_cavities_published = 0;
   index_t n_cells_added = 0;          ///< layer cells of the published cavities
   TargetCorrectionResult correction;  ///< the 3D target correction (ran or why skipped)
+  TargetSpacingResult spacing;        ///< the targets pushed apart for the size criterion
   ReachResult reach;                  ///< the nodes put on their surface after the loop
 };
 
