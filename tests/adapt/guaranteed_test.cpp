@@ -383,6 +383,33 @@ TEST(GuaranteedMethod, NodesThatSlidShortOfTheirTargetReachItThroughACavity) {
   }
 }
 
+// Stir at 40x20, t = 1, extruded into 2 hex layers: the first layer (the 3D default) leaves 3
+// of its 762 interface nodes on their surface short of their targets (target distance ratio
+// 0.0115); cavities around them at the end take them there. Some of its targets are closer
+// than the size criterion lets their edge be (12 edges), which target_spacing.h pushes apart.
+TEST(GuaranteedMethod, AFewNodesLeftShortByTheFirstLayerReachTheirTargetsThroughLateCavities) {
+  test::with_generated_case(
+      test::GeneratedCase{"stir", {40, 20}, 1.0, 2},
+      [](const auto& grid, const Fractions& f, const IdVector<CellId, int>& m) {
+        AdaptOptions o = guaranteed_options();
+        o.late_cavity_share = 0;
+        const auto without = adapt(grid, f, m, o);
+        check_guaranteed(grid, without);
+        EXPECT_EQ(without.layers, LayerStrategy::first);
+        EXPECT_GT(without.dist_final, 0.005 * without.dist_init);
+        EXPECT_EQ(without.n_cavities_published, 0);
+        EXPECT_GT(without.spacing.short_edges, 0);
+        EXPECT_EQ(without.spacing.left_short, 0);
+
+        const auto r = adapt(grid, f, m, guaranteed_options());
+        check_guaranteed(grid, r);
+        EXPECT_EQ(r.n_below_min_edge, 0);
+        EXPECT_GT(r.n_cavities_published, 0);
+        EXPECT_EQ(r.dist_final, 0);
+        EXPECT_EQ(r.n_reached, r.n_interface_nodes);
+      });
+}
+
 // A triple point extruded into 2 hex layers, with its fractions.
 std::pair<HexMesh, Fractions> extruded_triple_point() {
   const double h = 1.0 / 8;

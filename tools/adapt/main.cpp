@@ -171,8 +171,10 @@ Json result_json(const AdaptResult<M>& r, index_t input_cells, double threshold)
   }
   j["correction"] = correction;
   const TargetSpacingResult& sp = r.spacing;
-  j["target_spacing"] = {{"short_edges", sp.short_edges}, {"moved_targets", sp.moved},
-                         {"left_short", sp.left_short}, {"max_shift", sp.max_shift},
+  j["target_spacing"] = {{"short_edges", sp.short_edges},
+                         {"moved_targets", sp.moved},
+                         {"left_short", sp.left_short},
+                         {"max_shift", sp.max_shift},
                          {"sweeps", sp.sweeps}};
   return j;
 }
@@ -376,6 +378,11 @@ int main(int argc, char** argv) {
                  "when fewer than --enough-share of the interface nodes end near their "
                  "interface, cavities too, keeping the result with more of them")
       ->check(CLI::IsMember({"automatic", "cavities", "first", "both"}))
+      ->capture_default_str();
+  app.add_option("--late-cavity-share", args.options.late_cavity_share,
+                 "guaranteed, first layer: at the end, cavities around the nodes still short of "
+                 "their targets when they are at most this share of the interface nodes (0: none)")
+      ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   app.add_option("--enough-share", args.options.enough_share,
                  "guaranteed, --layers automatic, 3D: the share of interface nodes near their "

@@ -99,6 +99,9 @@ struct AdaptOptions : StepSettings {
   /// out around the cells the run before left failing; when none gets every cell passing,
   /// the layers are carved where they fail before the move. 0 = carve before the move only.
   int mend_rounds = 12;
+  /// guaranteed, first layer: cavities are pillowed at the end around the nodes still short of
+  /// their targets when they are at most this share of the interface nodes (0: never).
+  double late_cavity_share = 0.01;
   /// guaranteed: the loop stops when a round lowers dist by no more than this share of it.
   double loop_tolerance = 1e-3;
   /// guaranteed: after the loop, the nodes still off their surface go onto it where their
