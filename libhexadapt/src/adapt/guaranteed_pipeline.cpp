@@ -8,8 +8,9 @@
 // guarantee. Between the first controlled move and the move-smooth loop, cavities are
 // pillowed around the nodes the move left short of their targets (sec. 5.2,
 // cavity_pillow.h). After the loop, the nodes still off their surface go onto it where the
-// nodes around them can repair their cells (reach_surface.h), and the loop resumes; those
-// still off at the end are reported as blocked.
+// nodes around them can repair their cells (reach_surface.h), and the loop resumes; after a
+// first layer, the few nodes still short of their targets then get cavities (late_cavities).
+// Those still off their surface at the end are reported as blocked.
 #include "guaranteed_pipeline.h"
 
 #include <algorithm>
