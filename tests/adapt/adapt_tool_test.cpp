@@ -79,8 +79,8 @@ TEST(AdaptTool, WritesTheMeshTheArraysAndTheReport) {
             report["result"]["dist_init"].get<double>());
   EXPECT_GE(report["result"]["min_quality"].get<double>(), 0.3);
   EXPECT_EQ(report["result"]["cells"], d.n_cells());
-  // check targets pillow move cavity move-smooth reach
-  EXPECT_EQ(report["result"]["steps"].size(), 7u);
+  // check targets pillow move cavity move-smooth reach late-cavity
+  EXPECT_EQ(report["result"]["steps"].size(), 8u);
   EXPECT_LE(report["result"]["blocked_nodes"], report["result"]["reach"]["still_off"]);
   EXPECT_TRUE(report["threshold_met"].get<bool>());
   // -v says each step and where the interface nodes ended (it said nothing).

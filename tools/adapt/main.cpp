@@ -380,8 +380,9 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"automatic", "cavities", "first", "both"}))
       ->capture_default_str();
   app.add_option("--late-cavity-share", args.options.late_cavity_share,
-                 "guaranteed, first layer: at the end, cavities around the nodes still short of "
-                 "their targets when they are at most this share of the interface nodes (0: none)")
+                 "guaranteed: at the end, cavities around the nodes still short of their targets "
+                 "when they are at most this share of the interface nodes, kept when a few more "
+                 "move-smooth rounds then bring them closer (0: none)")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   app.add_option("--enough-share", args.options.enough_share,

@@ -8,9 +8,9 @@
 // guarantee. Between the first controlled move and the move-smooth loop, cavities are
 // pillowed around the nodes the move left short of their targets (sec. 5.2,
 // cavity_pillow.h). After the loop, the nodes still off their surface go onto it where the
-// nodes around them can repair their cells (reach_surface.h), and the loop resumes; after a
-// first layer, the few nodes still short of their targets then get cavities (late_cavities).
-// Those still off their surface at the end are reported as blocked.
+// nodes around them can repair their cells (reach_surface.h), and the loop resumes; the few
+// nodes still short of their targets then get cavities (late_cavities). Those still off their
+// surface at the end are reported as blocked.
 #include "guaranteed_pipeline.h"
 
 #include <algorithm>
@@ -156,32 +156,48 @@ std::vector<NodeId> pillow_cavities(M& mesh, CellMaterials& material, Targets& t
 // Rounds of the move-smooth loop after the late cavities (late_cavities).
 constexpr int late_loops = 3;
 
-// After a first layer's loop and reach step: cavities around the nodes still short of their
-// targets, when they are at most late_cavity_share of the interface nodes, then rounds of the
-// loop that count the distance to the targets. The extruded cases end with a few nodes on
-// their surface short of their targets, which cavities let reach them; on curved 3D surfaces
-// hundreds are, and cavities around them brought them barely closer at 1.5 times the time
-// (docs/results.md). False when no cavity was published (nothing changed).
+// Sum of the distances to the surfaces and to the targets.
 template <class M>
-bool late_cavities(M& mesh, CellMaterials& material, Targets& targets, SizeCriterion& size,
-                   int n_materials, AdaptResult<M>& r, const AdaptOptions& options) {
+double distance_sums(const M& mesh, const Targets& targets,
+                     const IdVector<NodeId, NodeConstraint>& sliding) {
+  return surface_distance_sum(mesh, targets, sliding) + target_distance(mesh, targets);
+}
+
+// At the end of a run: cavities around the nodes still short of their targets, when they are
+// at most late_cavity_share of the interface nodes, then rounds of the loop that count the
+// distance to the targets; kept only when that brings the nodes closer. The extruded cases'
+// first layer and a 2D case's cavities end with a few nodes on their surface short of their
+// targets, which these cavities let reach them; on curved 3D surfaces hundreds are, and
+// cavities around them brought them barely closer at 1.5 times the time (docs/results.md).
+template <class M>
+void late_cavities(M& mesh, CellMaterials& material, Targets& targets, SizeCriterion& size,
+                   IdVector<NodeId, NodeConstraint>& sliding, int n_materials, AdaptResult<M>& r,
+                   const AdaptOptions& options) {
   std::vector<NodeId> seeds;
   for (NodeId v : id_range<NodeId>(mesh.n_nodes()))
     if (targets.has[v] && mesh.point(v) != targets.position[v]) seeds.push_back(v);
   const double most = options.late_cavity_share * static_cast<double>(targets.n_interface_nodes);
-  if (seeds.empty() || static_cast<double>(seeds.size()) > most || options.cavity.range < 1)
-    return false;
+  if (seeds.empty() || static_cast<double>(seeds.size()) > most || options.cavity.range < 1) return;
   CavityResult<M> c =
       cavity_pillow(mesh, material, n_materials, seeds, options.cavity, options, size);
+  if (c.n_published == 0) return;
+  Targets t = targets;
+  extend_targets(c.mesh, t);
+  SizeCriterion s = size.remapped(c.cell_origin.raw());
+  auto sl = sliding_constraints(boundary_constraints(c.mesh, options.boundary), t);
+  AdaptOptions rounds = options;
+  rounds.max_loops = std::min(late_loops, options.max_loops - r.loops);
+  const int loops = move_smooth_loop(c.mesh, t, sl, s, rounds, r.loops, nullptr, true);
+  if (distance_sums(c.mesh, t, sl) >= distance_sums(mesh, targets, sliding)) return;
+  r.loops += loops;
   r.cavities.insert(r.cavities.end(), c.attempts.begin(), c.attempts.end());
-  if (c.n_published == 0) return false;
-  size = size.remapped(c.cell_origin.raw());
   r.n_cavities_published += c.n_published;
   r.n_cells_added += c.n_cells_added;
   mesh = std::move(c.mesh);
   material = std::move(c.material);
-  extend_targets(mesh, targets);
-  return true;
+  targets = std::move(t);
+  size = std::move(s);
+  sliding = std::move(sl);
 }
 
 // What the first controlled move leaves, with or without the interfaces pillowed first
@@ -391,13 +407,9 @@ void run_layers(const M& grid, const CellMaterials& material, const Targets& gri
     r.loops += move_smooth_loop(mesh, targets, sliding, size, rest, r.loops, &around);
   }
   record_step(r, mesh, "reach", clock, options.progress, 1.0, "");
-  if (pillows_first(layers) &&
-      late_cavities(mesh, out_material, targets, size, n_materials, r, options)) {
-    sliding = sliding_constraints(boundary_constraints(mesh, options.boundary), targets);
-    rest.max_loops = std::min(late_loops, options.max_loops - r.loops);
-    r.loops += move_smooth_loop(mesh, targets, sliding, size, rest, r.loops, nullptr, true);
-    record_step(r, mesh, "late-cavity", clock, options.progress, 1.0, "");
-  }
+  rest.max_loops = options.max_loops;  // late_cavities counts the rounds already run
+  late_cavities(mesh, out_material, targets, size, sliding, n_materials, r, rest);
+  record_step(r, mesh, "late-cavity", clock, options.progress, 1.0, "");
 
   r.mesh = std::move(mesh);
   r.material = std::move(out_material);

@@ -14,8 +14,8 @@
 // move (3D, by default: LayerStrategy) each material's interfaces are pillowed where every
 // cell keeps both criteria (interface_pillow.h); between the first controlled move and the
 // move-smooth loop (2D, by default), cavity pillowing (sec. 5.2, Alg. 5, cavity_pillow.h)
-// gives the nodes left short new cells to move into; after a first layer, the last few
-// nodes short of their targets get cavities at the end (late_cavity_share). The nodes still
+// gives the nodes left short new cells to move into; the last few nodes short of their
+// targets get cavities at the end (late_cavity_share). The nodes still
 // farther than near_interface from their surface at the end are reported in `blocked`. In
 // 3D, when asked and given the reconstruction's geometric model, the guaranteed method first
 // corrects the targets (sec. 5.3, target_correction.h); otherwise the correction is skipped
@@ -101,8 +101,9 @@ struct AdaptOptions : StepSettings {
   /// out around the cells the run before left failing; when none gets every cell passing,
   /// the layers are carved where they fail before the move. 0 = carve before the move only.
   int mend_rounds = 12;
-  /// guaranteed, first layer: cavities are pillowed at the end around the nodes still short of
-  /// their targets when they are at most this share of the interface nodes (0: never).
+  /// guaranteed: cavities are pillowed at the end around the nodes still short of their
+  /// targets when they are at most this share of the interface nodes (0: never), and kept
+  /// when a few more rounds of the loop then bring the nodes closer.
   double late_cavity_share = 0.01;
   /// guaranteed: the loop stops when a round lowers dist by no more than this share of it.
   double loop_tolerance = 1e-3;
