@@ -404,9 +404,35 @@ TEST(GuaranteedMethod, AFewNodesLeftShortByTheFirstLayerReachTheirTargetsThrough
         const auto r = adapt(grid, f, m, guaranteed_options());
         check_guaranteed(grid, r);
         EXPECT_EQ(r.n_below_min_edge, 0);
+        EXPECT_EQ(r.late_cavities.short_nodes, 3);
+        EXPECT_TRUE(r.late_cavities.tried);
+        EXPECT_TRUE(r.late_cavities.kept);
         EXPECT_GT(r.n_cavities_published, 0);
         EXPECT_EQ(r.dist_final, 0);
         EXPECT_EQ(r.n_reached, r.n_interface_nodes);
+      });
+}
+
+// Late cavities that bring no node closer are dropped: on balldrop at 20x20, t = 2, the one
+// node left short gets two cavities, after which the rounds of the loop leave it where it
+// was; the output is the one without them.
+TEST(GuaranteedMethod, LateCavitiesThatBringNoNodeCloserAreDropped) {
+  test::with_generated_case(
+      test::GeneratedCase{"balldrop", {20, 20}, 2.0},
+      [](const auto& grid, const Fractions& f, const IdVector<CellId, int>& m) {
+        const auto r = adapt(grid, f, m, guaranteed_options());
+        check_guaranteed(grid, r);
+        EXPECT_EQ(r.late_cavities.short_nodes, 1);
+        EXPECT_TRUE(r.late_cavities.tried);
+        EXPECT_GT(r.late_cavities.published, 0);
+        EXPECT_FALSE(r.late_cavities.kept);
+        AdaptOptions o = guaranteed_options();
+        o.late_cavity_share = 0;
+        const auto without = adapt(grid, f, m, o);
+        EXPECT_FALSE(without.late_cavities.tried);
+        EXPECT_EQ(r.mesh.n_cells(), without.mesh.n_cells());
+        EXPECT_EQ(r.dist_final, without.dist_final);
+        EXPECT_EQ(r.n_cavities_published, without.n_cavities_published);
       });
 }
 

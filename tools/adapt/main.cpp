@@ -176,6 +176,11 @@ Json result_json(const AdaptResult<M>& r, index_t input_cells, double threshold)
                          {"left_short", sp.left_short},
                          {"max_shift", sp.max_shift},
                          {"sweeps", sp.sweeps}};
+  const LateCavities& late = r.late_cavities;
+  j["late_cavities"] = {{"short_nodes", late.short_nodes},
+                        {"tried", late.tried},
+                        {"published", late.published},
+                        {"kept", late.kept}};
   return j;
 }
 

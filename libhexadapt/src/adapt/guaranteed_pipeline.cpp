@@ -176,10 +176,14 @@ void late_cavities(M& mesh, CellMaterials& material, Targets& targets, SizeCrite
   std::vector<NodeId> seeds;
   for (NodeId v : id_range<NodeId>(mesh.n_nodes()))
     if (targets.has[v] && mesh.point(v) != targets.position[v]) seeds.push_back(v);
+  LateCavities& late = r.late_cavities;
+  late = {static_cast<index_t>(seeds.size()), false, 0, false};
   const double most = options.late_cavity_share * static_cast<double>(targets.n_interface_nodes);
   if (seeds.empty() || static_cast<double>(seeds.size()) > most || options.cavity.range < 1) return;
+  late.tried = true;
   CavityResult<M> c =
       cavity_pillow(mesh, material, n_materials, seeds, options.cavity, options, size);
+  late.published = c.n_published;
   if (c.n_published == 0) return;
   Targets t = targets;
   extend_targets(c.mesh, t);
@@ -189,6 +193,7 @@ void late_cavities(M& mesh, CellMaterials& material, Targets& targets, SizeCrite
   rounds.max_loops = std::min(late_loops, options.max_loops - r.loops);
   const int loops = move_smooth_loop(c.mesh, t, sl, s, rounds, r.loops, nullptr, true);
   if (distance_sums(c.mesh, t, sl) >= distance_sums(mesh, targets, sliding)) return;
+  late.kept = true;
   r.loops += loops;
   r.cavities.insert(r.cavities.end(), c.attempts.begin(), c.attempts.end());
   r.n_cavities_published += c.n_published;

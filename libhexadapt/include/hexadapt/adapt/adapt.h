@@ -122,6 +122,15 @@ enum class BlockReason : char {
   cavity = 2,   ///< and a cavity around it (for one of its materials) failed at every range
 };
 
+/// The cavities pillowed at the end of a run around the nodes still short of their targets
+/// (AdaptOptions::late_cavity_share).
+struct LateCavities {
+  index_t short_nodes = 0;  ///< nodes with a target off it before them
+  bool tried = false;       ///< short_nodes was within the share: cavities were tried
+  index_t published = 0;    ///< cavities published
+  bool kept = false;        ///< the rounds after them brought the nodes closer: in the output
+};
+
 /// One step of a pipeline, in the order it ran.
 struct AdaptStep {
   std::string name;
@@ -186,6 +195,7 @@ struct AdaptResult {
   TargetCorrectionResult correction;  ///< the 3D target correction (ran or why skipped)
   TargetSpacingResult spacing;        ///< the targets pushed apart for the size criterion
   ReachResult reach;                  ///< the nodes put on their surface after the loop
+  LateCavities late_cavities;         ///< of the run that made the output
 };
 
 /// Runs the chosen pipeline. `material` holds one index into `fractions`' materials per
