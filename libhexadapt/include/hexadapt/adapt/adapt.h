@@ -15,13 +15,12 @@
 // cell keeps both criteria (interface_pillow.h); between the first controlled move and the
 // move-smooth loop (2D, by default), cavity pillowing (sec. 5.2, Alg. 5, cavity_pillow.h)
 // gives the nodes left short new cells to move into; the last few nodes short of their
-// targets get cavities at the end (late_cavity_share). The nodes still
-// farther than near_interface from their surface at the end are reported in `blocked`. In
-// 3D, when asked and given the reconstruction's geometric model, the guaranteed method first
-// corrects the targets (sec. 5.3, target_correction.h); otherwise the correction is skipped
-// and the result says why. It is off by default. With the size criterion on, targets closer
-// than it lets their grid edge be are then pushed apart along their interface
-// (target_spacing.h).
+// targets get cavities at the end (late_cavity_share). The nodes still farther than
+// near_interface from their surface at the end are reported in `blocked`. In 3D, when asked
+// and given the reconstruction's geometric model, the guaranteed method first corrects the
+// targets (sec. 5.3, target_correction.h); otherwise the correction is skipped and the
+// result says why. It is off by default. With the size criterion on, targets closer than it
+// lets their grid edge be are then pushed apart along their interface (target_spacing.h).
 #pragma once
 
 #include <string>
