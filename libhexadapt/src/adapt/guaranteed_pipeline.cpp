@@ -82,6 +82,13 @@ std::vector<NodeId> nodes_around_moves(const M& mesh, const std::vector<Vec3>& b
   return nodes;
 }
 
+// Sum of the distances to the surfaces and to the targets.
+template <class M>
+double distance_sums(const M& mesh, const Targets& targets,
+                     const IdVector<NodeId, NodeConstraint>& sliding) {
+  return surface_distance_sum(mesh, targets, sliding) + target_distance(mesh, targets);
+}
+
 // Controlled moves alternating with quality-preserving smoothing until a round no longer
 // brings the nodes closer to their interface surfaces by more than the tolerance; keeps the
 // best round (each reported as "move-smooth k", k counted after `rounds_before`). Nodes that
@@ -96,8 +103,8 @@ int move_smooth_loop(M& mesh, const Targets& targets,
                      const AdaptOptions& options, int rounds_before = 0,
                      const std::vector<NodeId>* first = nullptr, bool to_targets = false) {
   auto measure = [&] {
-    const double d = surface_distance_sum(mesh, targets, sliding);
-    return to_targets ? d + target_distance(mesh, targets) : d;
+    return to_targets ? distance_sums(mesh, targets, sliding)
+                      : surface_distance_sum(mesh, targets, sliding);
   };
   double best = measure();
   std::vector<Vec3> best_points = points_of(mesh);
@@ -155,13 +162,6 @@ std::vector<NodeId> pillow_cavities(M& mesh, CellMaterials& material, Targets& t
 
 // Rounds of the move-smooth loop after the late cavities (late_cavities).
 constexpr int late_loops = 3;
-
-// Sum of the distances to the surfaces and to the targets.
-template <class M>
-double distance_sums(const M& mesh, const Targets& targets,
-                     const IdVector<NodeId, NodeConstraint>& sliding) {
-  return surface_distance_sum(mesh, targets, sliding) + target_distance(mesh, targets);
-}
 
 // At the end of a run: cavities around the nodes still short of their targets, when they are
 // at most late_cavity_share of the interface nodes, then rounds of the loop that count the
