@@ -20,6 +20,7 @@
 #include "hexadapt/adapt/reach_surface.h"
 #include "hexadapt/core/error.h"
 #include "pipeline_steps.h"
+#include "hexadapt/adapt/warm_start.h"
 
 namespace hexadapt::detail {
 
@@ -217,6 +218,7 @@ struct FirstMove {
   MoveResult move;
   std::vector<InterfacePillowAttempt> pillows;
   IdVector<CellId, CellId> cell_origin;  ///< the input cell each cell comes from
+  IdVector<NodeId, NodeId> node_origin;  ///< the input node each node is (a copy of)
   index_t layer_cells = 0;
   double surface_dist = 0;  ///< sum of surface distances after the move
   double pillow_seconds = 0, move_seconds = 0;
@@ -228,9 +230,10 @@ template <class M>
 FirstMove<M> first_move(const M& mesh, const CellMaterials& material, const Targets& targets,
                         const SizeCriterion& size, bool pillow_first, int n_materials,
                         const AdaptOptions& options, const std::vector<CellId>* mend) {
-  FirstMove<M> f{mesh, material, targets, size, {}, {}, {}, 0, 0, 0, 0};
+  FirstMove<M> f{mesh, material, targets, size, {}, {}, {}, {}, 0, 0, 0, 0};
   if (options.progress) options.progress("pillow", 0.0);
   for (CellId c : id_range<CellId>(mesh.n_cells())) f.cell_origin.push_back(c);
+  for (NodeId v : id_range<NodeId>(mesh.n_nodes())) f.node_origin.push_back(v);
   Timer clock;
   if (pillow_first && options.interface_pillow.rounds > 0) {
     InterfacePillowOptions io = options.interface_pillow;
@@ -242,6 +245,7 @@ FirstMove<M> first_move(const M& mesh, const CellMaterials& material, const Targ
     f.layer_cells = p.mesh.n_cells() - f.mesh.n_cells();
     f.size = f.size.remapped(p.cell_origin.raw());
     f.cell_origin = std::move(p.cell_origin);
+    f.node_origin = std::move(p.node_origin);
     f.mesh = std::move(p.mesh);
     f.material = std::move(p.material);
     extend_targets(f.mesh, f.targets);
@@ -345,19 +349,26 @@ std::vector<CellId> failing_origins(const M& mesh, const IdVector<CellId, CellId
   return out;
 }
 
+// A run of the mending (first_layer). In: the input cells around which no layer goes, and
+// where the run before ended (none for the first run). Out: the input cells of the cells this
+// run left failing, and where it ended.
+struct Mend {
+  std::vector<CellId> cells;
+  NodePlaces places;
+};
+
 // The steps after the targets, with the given (resolved) layer strategy: the first move
 // (after a first layer, for `first` and `both`), cavities (for `cavities` and `both`), the
-// move-smooth loop; fills r. `mend`, when given (a first layer only): in, the input cells
-// around which no layer goes; out, the input cells of the cells left failing, whose layers
-// were kept failing (first_move).
+// move-smooth loop; fills r. `mend`, when given (a first layer only): the layers are kept
+// with their failing cells (first_move); the run starts where the run before ended
+// (warm_start.h), and is judged after a few rounds of the loop.
 template <class M>
 void run_layers(const M& grid, const CellMaterials& material, const Targets& grid_targets,
                 const SizeCriterion& grid_size, int n_materials, LayerStrategy layers,
-                AdaptResult<M>& r, const AdaptOptions& options,
-                std::vector<CellId>* mend = nullptr) {
+                AdaptResult<M>& r, const AdaptOptions& options, Mend* mend = nullptr) {
   r.layers = layers;
   FirstMove<M> f = first_move(grid, material, grid_targets, grid_size, pillows_first(layers),
-                              n_materials, options, mend);
+                              n_materials, options, mend ? &mend->cells : nullptr);
   M mesh = std::move(f.mesh);
   IdVector<CellId, int> out_material = std::move(f.material);
   Targets targets = std::move(f.targets);
@@ -387,11 +398,17 @@ void run_layers(const M& grid, const CellMaterials& material, const Targets& gri
     AdaptOptions probe = options;
     probe.max_loops = std::min(options.max_loops, mend_probe_loops);
     probe.progress = progress_part(options.progress, 0.4, 0.5);
-    r.loops = move_smooth_loop(mesh, targets, sliding, size, probe);
+    NodePlaces here = node_places(mesh, f.node_origin, f.cell_origin);
+    const bool warm = !mend->places.empty();
+    const std::vector<NodeId> start =
+        warm ? warm_start(mesh, here, mend->places) : std::vector<NodeId>{};
+    r.loops = move_smooth_loop(mesh, targets, sliding, size, probe, 0, warm ? &start : nullptr);
     if (options.progress) options.progress("mend", 0.5);
     smooth_around_failing(mesh, sliding, size, options);
-    *mend = failing_origins(mesh, f.cell_origin, size, options.threshold);
-    if (!mend->empty()) {
+    mend->cells = failing_origins(mesh, f.cell_origin, size, options.threshold);
+    if (!mend->cells.empty()) {
+      here.point = points_of(mesh);
+      mend->places = std::move(here);
       record_step(r, mesh, "move-smooth", clock, options.progress, 1.0, "");
       return;  // the caller discards the run
     }
@@ -447,16 +464,18 @@ AdaptResult<M> first_layer(const M& grid, const CellMaterials& material, const T
     from = to;
     return o;
   };
+  NodePlaces places;
   for (int round = 0; round < options.mend_rounds; ++round) {
     AdaptResult<M> r = before;
-    std::vector<CellId> mend = left_out;
+    Mend mend{left_out, std::move(places)};
     run_layers(grid, material, targets, size, n_materials, LayerStrategy::first, r,
                run_options(round + 1, 0.5 * (1 + from)), &mend);
-    failing.push_back(static_cast<index_t>(mend.size()));
-    if (mend.empty()) return finish(std::move(r));
+    failing.push_back(static_cast<index_t>(mend.cells.size()));
+    if (mend.cells.empty()) return finish(std::move(r));
     for (std::size_t k = before.steps.size(); k < r.steps.size(); ++k)
       seconds += r.steps[k].seconds;
-    left_out.insert(left_out.end(), mend.begin(), mend.end());
+    places = std::move(mend.places);
+    left_out.insert(left_out.end(), mend.cells.begin(), mend.cells.end());
     std::sort(left_out.begin(), left_out.end());
     left_out.erase(std::unique(left_out.begin(), left_out.end()), left_out.end());
   }

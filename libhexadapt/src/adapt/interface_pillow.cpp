@@ -175,8 +175,9 @@ InterfacePillowResult<M> pillow_interfaces(const M& mesh, const CellMaterials& m
   if (material.size() != static_cast<std::size_t>(mesh.n_cells()) ||
       fixed.size() != static_cast<std::size_t>(mesh.n_nodes()))
     throw InternalError("interface pillow: materials or fixed flags do not match the mesh");
-  InterfacePillowResult<M> r{mesh, material, {}, 0, {}};
+  InterfacePillowResult<M> r{mesh, material, {}, {}, 0, {}};
   for (CellId c : id_range<CellId>(mesh.n_cells())) r.cell_origin.push_back(c);
+  for (NodeId v : id_range<NodeId>(mesh.n_nodes())) r.node_origin.push_back(v);
   IdVector<NodeId, char> still(fixed);
   SizeCriterion current = size.remapped(r.cell_origin.raw());
   const std::vector<CellId> sheets =
@@ -220,6 +221,9 @@ InterfacePillowResult<M> pillow_interfaces(const M& mesh, const CellMaterials& m
             r.cell_origin.push_back(r.cell_origin[a.p.cell_origin[c]]);
             r.material.push_back(m);
           }
+        for (NodeId v : id_range<NodeId>(a.p.mesh.n_nodes()))
+          if (v.value() >= r.mesh.n_nodes())
+            r.node_origin.push_back(r.node_origin[a.p.node_origin[v]]);
         r.n_new_nodes += a.p.n_new_nodes;
         still.resize(static_cast<std::size_t>(a.p.mesh.n_nodes()), 0);
         current = std::move(a.size);

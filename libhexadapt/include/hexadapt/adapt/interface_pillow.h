@@ -65,6 +65,7 @@ struct InterfacePillowResult {
   M mesh;
   CellMaterials material;
   IdVector<CellId, CellId> cell_origin;  ///< the input cell; a layer cell: its region's cell
+  IdVector<NodeId, NodeId> node_origin;  ///< the input node each node is (a copy of)
   index_t n_new_nodes = 0;               ///< appended after the input's nodes
   std::vector<InterfacePillowAttempt> attempts;
 };
