@@ -18,9 +18,9 @@
 
 #include "hexadapt/adapt/local_topology.h"
 #include "hexadapt/adapt/reach_surface.h"
+#include "hexadapt/adapt/warm_start.h"
 #include "hexadapt/core/error.h"
 #include "pipeline_steps.h"
-#include "hexadapt/adapt/warm_start.h"
 
 namespace hexadapt::detail {
 
@@ -398,17 +398,16 @@ void run_layers(const M& grid, const CellMaterials& material, const Targets& gri
     AdaptOptions probe = options;
     probe.max_loops = std::min(options.max_loops, mend_probe_loops);
     probe.progress = progress_part(options.progress, 0.4, 0.5);
-    NodePlaces here = node_places(mesh, f.node_origin, f.cell_origin);
     const bool warm = !mend->places.empty();
     const std::vector<NodeId> start =
-        warm ? warm_start(mesh, here, mend->places) : std::vector<NodeId>{};
+        warm ? warm_start(mesh, node_places(mesh, f.node_origin, f.cell_origin), mend->places)
+             : std::vector<NodeId>{};
     r.loops = move_smooth_loop(mesh, targets, sliding, size, probe, 0, warm ? &start : nullptr);
     if (options.progress) options.progress("mend", 0.5);
     smooth_around_failing(mesh, sliding, size, options);
     mend->cells = failing_origins(mesh, f.cell_origin, size, options.threshold);
     if (!mend->cells.empty()) {
-      here.point = points_of(mesh);
-      mend->places = std::move(here);
+      mend->places = node_places(mesh, f.node_origin, f.cell_origin);
       record_step(r, mesh, "move-smooth", clock, options.progress, 1.0, "");
       return;  // the caller discards the run
     }
@@ -443,7 +442,10 @@ void run_layers(const M& grid, const CellMaterials& material, const Targets& gri
 // smooth_around_failing to mend, left out around the input cells whose cells the run before
 // left failing, at most mend_rounds times; when no such run ends with every cell passing, the
 // layers carved where their cells fail before the move, which keeps the guarantee. The
-// discarded runs' time is the step "mend".
+// discarded runs' time is the step "mend". Each run starts where the run before ended, but
+// around what it leaves out: on the vortex 64^3 at t = 1.5 (4 runs), the runs after the first
+// started from 7483, 4764 and 499 nodes instead of all, and the whole adapt took 11.3-12.0
+// CPU s instead of 14.4-14.8 (alternating runs), with as many nodes near their surface.
 template <class M>
 AdaptResult<M> first_layer(const M& grid, const CellMaterials& material, const Targets& targets,
                            const SizeCriterion& size, int n_materials, const AdaptResult<M>& before,
