@@ -106,5 +106,31 @@ TEST(WarmStart, NodesAroundCellsLeftOutStartColdAndTheOthersWhereTheRunBeforeEnd
   });
 }
 
+TEST(WarmStart, ANodeOfNoCellWithoutANamesakeStaysWhereItIs) {
+  const HexMesh grid = make_hex_grid(2, 2, 2);
+  std::vector<Vec3> points = grid.points();
+  points.emplace_back(5.0, 5.0, 5.0);
+  std::vector<HexMesh::CellNodes> cells;
+  for (CellId c : id_range<CellId>(grid.n_cells())) cells.push_back(grid.cell_nodes(c));
+  HexMesh mesh(points, cells);
+  auto identity = [](index_t n_nodes, index_t n_cells) {
+    std::pair<IdVector<NodeId, NodeId>, IdVector<CellId, CellId>> o;
+    for (NodeId v : id_range<NodeId>(n_nodes)) o.first.push_back(v);
+    for (CellId c : id_range<CellId>(n_cells)) o.second.push_back(c);
+    return o;
+  };
+  HexMesh shifted = grid;
+  shift_all(shifted);
+  const auto g = identity(grid.n_nodes(), grid.n_cells());
+  const auto m = identity(mesh.n_nodes(), mesh.n_cells());
+  const std::vector<NodeId> start = warm_start(mesh, node_places(mesh, m.first, m.second),
+                                               node_places(shifted, g.first, g.second));
+  EXPECT_TRUE(start.empty());
+  EXPECT_EQ(mesh.point(NodeId(grid.n_nodes())), Vec3(5.0, 5.0, 5.0));
+  for (NodeId v : id_range<NodeId>(grid.n_nodes())) {
+    EXPECT_EQ(mesh.point(v), shifted.point(v));
+  }
+}
+
 }  // namespace
 }  // namespace hexadapt

@@ -72,6 +72,7 @@ std::vector<NodeId> warm_start(M& mesh, const NodePlaces& now, const NodePlaces&
         for (NodeId o : mesh.cell_nodes(c)) warm[o.idx()] = 0;
   std::vector<NodeId> start;
   for (NodeId v : id_range<NodeId>(mesh.n_nodes())) {
+    if (match[v.idx()] < 0) warm[v.idx()] = 0;  // a node of no cell stays where it is
     if (warm[v.idx()]) {
       mesh.set_point(v, before.point[static_cast<std::size_t>(match[v.idx()])]);
       continue;
