@@ -65,14 +65,15 @@ std::vector<NodeId> warm_start(M& mesh, const NodePlaces& now, const NodePlaces&
     if (t != there.end() && here.count(now.name[i]))
       match[i] = static_cast<std::int64_t>(t->second);
   }
-  std::vector<char> warm(now.name.size(), 1);
+  // Warm: matched, and so is every node of its cells (a node of no cell only needs a match).
+  std::vector<char> warm(now.name.size(), 0);
+  for (std::size_t i = 0; i < match.size(); ++i) warm[i] = match[i] >= 0;
   for (NodeId v : id_range<NodeId>(mesh.n_nodes()))
     if (match[v.idx()] < 0)
       for (CellId c : mesh.node_cells(v))
         for (NodeId o : mesh.cell_nodes(c)) warm[o.idx()] = 0;
   std::vector<NodeId> start;
   for (NodeId v : id_range<NodeId>(mesh.n_nodes())) {
-    if (match[v.idx()] < 0) warm[v.idx()] = 0;  // a node of no cell stays where it is
     if (warm[v.idx()]) {
       mesh.set_point(v, before.point[static_cast<std::size_t>(match[v.idx()])]);
       continue;
