@@ -79,9 +79,11 @@ TEST(AdaptTool, WritesTheMeshTheArraysAndTheReport) {
             report["result"]["dist_init"].get<double>());
   EXPECT_GE(report["result"]["min_quality"].get<double>(), 0.3);
   EXPECT_EQ(report["result"]["cells"], d.n_cells());
-  // check targets pillow move cavity move-smooth reach late-cavity
-  EXPECT_EQ(report["result"]["steps"].size(), 8u);
+  // check targets pillow move cavity move-smooth reach late-cavity late-reach
+  EXPECT_EQ(report["result"]["steps"].size(), 9u);
   EXPECT_LE(report["result"]["blocked_nodes"], report["result"]["reach"]["still_off"]);
+  EXPECT_LE(report["result"]["late_reach"]["still_short"],
+            report["result"]["late_reach"]["short_nodes"]);
   EXPECT_TRUE(report["threshold_met"].get<bool>());
   // -v says each step and where the interface nodes ended (it said nothing).
   const fs::path err = dir / "err.txt";

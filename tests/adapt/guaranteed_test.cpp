@@ -436,6 +436,35 @@ TEST(GuaranteedMethod, LateCavitiesThatBringNoNodeCloserAreDropped) {
       });
 }
 
+// Stir at 56x24, t = 2 (2D): two nodes end on their surface short of their targets, and no
+// cavity around them meets both criteria; put on their targets with the nodes without a
+// target repairing their cells, they reach them (the late reach; target distance ratio
+// 0.007 without it).
+TEST(GuaranteedMethod, TheLastNodesShortOfTheirTargetsReachThemWithTheirNeighbours) {
+  test::with_generated_case(
+      test::GeneratedCase{"stir", {56, 24}, 2.0},
+      [](const auto& grid, const Fractions& f, const IdVector<CellId, int>& m) {
+        AdaptOptions o = guaranteed_options();
+        o.reach.passes = 0;
+        const auto without = adapt(grid, f, m, o);
+        check_guaranteed(grid, without);
+        EXPECT_EQ(without.late_cavities.published, 0);
+        EXPECT_EQ(without.late_reach.off_surface, 2);
+        EXPECT_EQ(without.late_reach.still_off, 2);
+        EXPECT_GT(without.dist_final, 0.005 * without.dist_init);
+
+        const auto r = adapt(grid, f, m, guaranteed_options());
+        check_guaranteed(grid, r);
+        EXPECT_EQ(r.n_below_min_edge, 0);
+        EXPECT_EQ(r.late_cavities.published, 0);
+        EXPECT_EQ(r.late_reach.off_surface, 2);
+        EXPECT_EQ(r.late_reach.still_off, 0);
+        EXPECT_EQ(r.dist_final, 0);
+        EXPECT_EQ(r.n_reached, r.n_interface_nodes);
+        EXPECT_EQ(r.mesh.n_cells(), without.mesh.n_cells());
+      });
+}
+
 // A triple point extruded into 2 hex layers, with its fractions.
 std::pair<HexMesh, Fractions> extruded_triple_point() {
   const double h = 1.0 / 8;

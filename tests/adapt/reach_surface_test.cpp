@@ -92,5 +92,58 @@ TEST(ReachSurface, NoPassLeavesTheMeshAsItIs) {
                OptionError);
 }
 
+// The middle node is on its surface, the plane x = 2, and `lift` short of its target on it;
+// the nodes at z = 1 and z = 3 have targets where they are. Alone on its target, the middle
+// node leaves the cells around it below the threshold.
+struct OnItsSurface : Lifted {
+  OnItsSurface() {
+    targets.interface[middle] = NodeConstraint{};
+    targets.interface[middle].add(Vec3::UnitX());
+    for (NodeId v : id_range<NodeId>(mesh.n_nodes()))
+      if (mesh.point(v).z() == 1 || mesh.point(v).z() == 3) targets.has[v] = 1;
+    surface = sliding_constraints(boundary_constraints(mesh), targets);
+  }
+  double short_by() const { return (mesh.point(middle) - targets.position[middle]).norm(); }
+};
+
+// The node goes onto its target with the nodes without a target repairing its cells; the
+// nodes with a target stay on theirs.
+TEST(ReachTargets, ANodeOnItsSurfaceReachesItsTargetAndNoOtherTargetMoves) {
+  OnItsSurface g;
+  EXPECT_EQ(g.off(), 0);
+  HexMesh alone = g.mesh;
+  alone.set_point(g.middle, g.targets.position[g.middle]);
+  EXPECT_LT(min_score(alone, g.size), threshold);
+
+  const HexMesh before = g.mesh;
+  const ReachResult r = reach_targets(g.mesh, g.targets, g.surface, g.size, {}, {}, threshold);
+  EXPECT_EQ(r.off_surface, 1);
+  EXPECT_EQ(r.still_off, 0);
+  EXPECT_GE(r.moves, 1);
+  EXPECT_EQ(g.short_by(), 0);
+  EXPECT_GE(min_score(g.mesh, g.size), threshold);
+  index_t helpers_moved = 0;
+  for (NodeId v : id_range<NodeId>(g.mesh.n_nodes())) {
+    if (v == g.middle) continue;
+    if (g.targets.has[v]) {
+      EXPECT_EQ(g.mesh.point(v), before.point(v)) << v.value();
+    }
+    helpers_moved += g.mesh.point(v) != before.point(v);
+  }
+  EXPECT_GT(helpers_moved, 0);
+}
+
+// With every other node holding a target, nothing may repair the cells: the node stays.
+TEST(ReachTargets, ANodeWhoseCellsOnlyNodesWithATargetCouldRepairStays) {
+  OnItsSurface g;
+  for (NodeId v : id_range<NodeId>(g.mesh.n_nodes())) g.targets.has[v] = 1;
+  const HexMesh before = g.mesh;
+  const ReachResult r = reach_targets(g.mesh, g.targets, g.surface, g.size, {}, {}, threshold);
+  EXPECT_EQ(r.off_surface, 1);
+  EXPECT_EQ(r.still_off, 1);
+  EXPECT_EQ(r.moves, 0);
+  for (NodeId v : id_range<NodeId>(g.mesh.n_nodes())) EXPECT_EQ(g.mesh.point(v), before.point(v));
+}
+
 }  // namespace
 }  // namespace hexadapt

@@ -181,6 +181,10 @@ Json result_json(const AdaptResult<M>& r, index_t input_cells, double threshold)
                         {"tried", late.tried},
                         {"published", late.published},
                         {"kept", late.kept}};
+  j["late_reach"] = {{"short_nodes", r.late_reach.off_surface},
+                     {"still_short", r.late_reach.still_off},
+                     {"moves", r.late_reach.moves},
+                     {"passes", r.late_reach.passes}};
   return j;
 }
 

@@ -12,31 +12,41 @@ namespace hexadapt {
 
 namespace {
 
-// A node off its surface and the nodes that repair its cells: the nodes without a target
-// within two cells of it and the nodes with a target sharing a cell with it (sorted).
+// What the nodes reach: their surface (reach_surfaces) or their target (reach_targets).
+enum class Goal : char { surface, target };
+
+// A node off its goal and the nodes that repair its cells: the nodes without a target
+// within two cells of it and, for the surface, the nodes with a target sharing a cell with
+// it (sorted).
 struct Region {
   NodeId node;
   std::vector<NodeId> helpers;
 };
 
+// The nodes off their goal: farther than near_interface local sizes from their surface, or
+// anywhere but on their target.
 template <class M>
-std::vector<NodeId> off_surface(const M& mesh, const Targets& targets,
-                                const IdVector<NodeId, NodeConstraint>& surface,
-                                const SizeCriterion& size, double near_interface) {
+std::vector<NodeId> off_goal(const M& mesh, const Targets& targets,
+                             const IdVector<NodeId, NodeConstraint>& surface,
+                             const SizeCriterion& size, double near_interface, Goal goal) {
   std::vector<NodeId> out;
-  for (NodeId v : id_range<NodeId>(mesh.n_nodes()))
-    if (targets.has[v] && surface_distance(mesh.point(v), targets.position[v], surface[v]) >
-                              near_interface * node_local_size(mesh, v, size))
-      out.push_back(v);
+  for (NodeId v : id_range<NodeId>(mesh.n_nodes())) {
+    if (!targets.has[v]) continue;
+    const bool off = goal == Goal::target
+                         ? mesh.point(v) != targets.position[v]
+                         : surface_distance(mesh.point(v), targets.position[v], surface[v]) >
+                               near_interface * node_local_size(mesh, v, size);
+    if (off) out.push_back(v);
+  }
   return out;
 }
 
 template <class M>
-Region region_of(const M& mesh, NodeId n, const Targets& targets) {
+Region region_of(const M& mesh, NodeId n, const Targets& targets, Goal goal) {
   Region r{n, {}};
   for (CellId c : mesh.node_cells(n))
     for (NodeId w : mesh.cell_nodes(c)) {
-      if (w != n && targets.has[w]) r.helpers.push_back(w);
+      if (goal == Goal::surface && w != n && targets.has[w]) r.helpers.push_back(w);
       for (CellId d : mesh.node_cells(w))
         for (NodeId x : mesh.cell_nodes(d))
           if (!targets.has[x]) r.helpers.push_back(x);
@@ -90,12 +100,12 @@ bool region_passes(const M& mesh, const Region& r, const SizeCriterion& size, do
   return true;
 }
 
-// Where a node `offset` from its surface tries to go on its k-th try: onto the surface, 3/4
-// of the way, then just within `near` of it. False: the k-th try would be no nearer than
-// the one before, and is not made.
-bool kth_position(const Vec3& at, const Vec3& offset, double near, int k, Vec3& p) {
+// Where a node `offset` from its goal tries to go on its k-th try: onto it, 3/4 of the way,
+// then, for a surface, just within `near` of it. False: the k-th try would be no nearer than
+// the one before, or is not for this goal, and is not made.
+bool kth_position(const Vec3& at, const Vec3& offset, double near, int k, Goal goal, Vec3& p) {
   const double fractions[] = {1.0, 0.75, 1.0 - 0.8 * near / offset.norm()};
-  if (k == 2 && fractions[2] >= fractions[1]) return false;
+  if (k == 2 && (goal == Goal::target || fractions[2] >= fractions[1])) return false;
   p = at - fractions[k] * offset;
   return true;
 }
@@ -109,6 +119,7 @@ struct Repair {
   const SizeCriterion& size;
   SmoothOptions smooth;
   double threshold, near_interface;
+  Goal goal;
   IdVector<NodeId, char> movable;
   NeighbourCache neighbours;
 };
@@ -122,10 +133,13 @@ std::vector<NodeId> repair_batch(Repair<M>& rp, const std::vector<const Region*>
   for (std::size_t i = 0; i < batch.size(); ++i) {
     const Region& r = *batch[i];
     const Vec3 at = mesh.point(r.node);
-    const Vec3 offset = surface_offset(at, rp.targets.position[r.node], rp.surface[r.node]);
+    const Vec3& target = rp.targets.position[r.node];
+    const Vec3 offset = rp.goal == Goal::target ? Vec3(at - target)
+                                                : surface_offset(at, target, rp.surface[r.node]);
     const double near = rp.near_interface * node_local_size(mesh, r.node, rp.size);
     Vec3 p;
-    if (!kth_position(at, offset, near, k, p)) continue;
+    if (!kth_position(at, offset, near, k, rp.goal, p)) continue;
+    if (k == 0 && rp.goal == Goal::target) p = target;  // exactly: on its target
     saved[i].push_back(at);
     for (NodeId w : r.helpers) saved[i].push_back(mesh.point(w));
     mesh.set_point(r.node, p);
@@ -152,7 +166,7 @@ std::vector<NodeId> repair_batch(Repair<M>& rp, const std::vector<const Region*>
 template <class M>
 index_t reach_pass(Repair<M>& rp, const std::vector<NodeId>& off) {
   std::vector<Region> regions;
-  for (NodeId n : off) regions.push_back(region_of(rp.mesh, n, rp.targets));
+  for (NodeId n : off) regions.push_back(region_of(rp.mesh, n, rp.targets, rp.goal));
   index_t closer = 0;
   for (int k = 0; k < 3 && !regions.empty(); ++k) {
     std::vector<NodeId> kept;
@@ -171,13 +185,10 @@ index_t reach_pass(Repair<M>& rp, const std::vector<NodeId>& off) {
   return closer;
 }
 
-}  // namespace
-
 template <class M>
-ReachResult reach_surfaces(M& mesh, const Targets& targets,
-                           const IdVector<NodeId, NodeConstraint>& surface,
-                           const SizeCriterion& size, const ReachOptions& options,
-                           const SmoothOptions& smooth, double threshold, double near_interface) {
+ReachResult reach(M& mesh, const Targets& targets, const IdVector<NodeId, NodeConstraint>& surface,
+                  const SizeCriterion& size, const ReachOptions& options,
+                  const SmoothOptions& smooth, double threshold, double near_interface, Goal goal) {
   if (options.passes < 0)
     throw OptionError("reach passes must be at least 0, got " + std::to_string(options.passes));
   // The pattern search alone: with the Laplacian pulls too, the helpers with a target drifted
@@ -194,26 +205,49 @@ ReachResult reach_surfaces(M& mesh, const Targets& targets,
                s,
                threshold,
                near_interface,
+               goal,
                IdVector<NodeId, char>(static_cast<std::size_t>(mesh.n_nodes()), 0),
                NeighbourCache(mesh.n_nodes())};
   ReachResult out;
-  std::vector<NodeId> off = off_surface(mesh, targets, surface, size, near_interface);
+  std::vector<NodeId> off = off_goal(mesh, targets, surface, size, near_interface, goal);
   out.off_surface = static_cast<index_t>(off.size());
   while (out.passes < options.passes && !off.empty()) {
     ++out.passes;
     const index_t closer = reach_pass(rp, off);
     out.moves += closer;
-    off = off_surface(mesh, targets, surface, size, near_interface);
+    off = off_goal(mesh, targets, surface, size, near_interface, goal);
     if (closer == 0) break;
   }
   out.still_off = static_cast<index_t>(off.size());
   return out;
 }
 
+}  // namespace
+
+template <class M>
+ReachResult reach_surfaces(M& mesh, const Targets& targets,
+                           const IdVector<NodeId, NodeConstraint>& surface,
+                           const SizeCriterion& size, const ReachOptions& options,
+                           const SmoothOptions& smooth, double threshold, double near_interface) {
+  return reach(mesh, targets, surface, size, options, smooth, threshold, near_interface,
+               Goal::surface);
+}
+
+template <class M>
+ReachResult reach_targets(M& mesh, const Targets& targets,
+                          const IdVector<NodeId, NodeConstraint>& surface,
+                          const SizeCriterion& size, const ReachOptions& options,
+                          const SmoothOptions& smooth, double threshold) {
+  return reach(mesh, targets, surface, size, options, smooth, threshold, 0.0, Goal::target);
+}
+
 #define HEXADAPT_INSTANTIATE(M)                                                          \
   template ReachResult reach_surfaces<M>(                                                \
       M&, const Targets&, const IdVector<NodeId, NodeConstraint>&, const SizeCriterion&, \
-      const ReachOptions&, const SmoothOptions&, double, double);
+      const ReachOptions&, const SmoothOptions&, double, double);                        \
+  template ReachResult reach_targets<M>(                                                 \
+      M&, const Targets&, const IdVector<NodeId, NodeConstraint>&, const SizeCriterion&, \
+      const ReachOptions&, const SmoothOptions&, double);
 HEXADAPT_INSTANTIATE(QuadMesh)
 HEXADAPT_INSTANTIATE(HexMesh)
 #undef HEXADAPT_INSTANTIATE

@@ -15,8 +15,9 @@
 // cell keeps both criteria (interface_pillow.h); between the first controlled move and the
 // move-smooth loop (2D, by default), cavity pillowing (sec. 5.2, Alg. 5, cavity_pillow.h)
 // gives the nodes left short new cells to move into; the last few nodes short of their
-// targets get cavities at the end (late_cavity_share). The nodes still farther than
-// near_interface from their surface at the end are reported in `blocked`. In 3D, when asked
+// targets get cavities at the end (late_cavity_share), then go onto them where the nodes
+// without a target around them can repair their cells (reach_surface.h). The nodes still farther
+// than near_interface from their surface at the end are reported in `blocked`. In 3D, when asked
 // and given the reconstruction's geometric model, the guaranteed method first corrects the
 // targets (sec. 5.3, target_correction.h); otherwise the correction is skipped and the
 // result says why. It is off by default. With the size criterion on, targets closer than it
@@ -78,7 +79,7 @@ struct AdaptOptions : StepSettings {
   TargetCorrectionOptions correction;  ///< guaranteed, 3D: targets smoothed on the model
   /// guaranteed, with the size criterion: targets pushed apart where closer than it allows.
   TargetSpacingOptions spacing;
-  Progress progress;                   ///< phase progress, nullptr = silent
+  Progress progress;  ///< phase progress, nullptr = silent
   /// guaranteed: run even when input cells are below the threshold (no guarantee then).
   bool allow_bad_input = false;
   int max_loops = 20;                               ///< guaranteed: move-smooth rounds at most
@@ -102,7 +103,8 @@ struct AdaptOptions : StepSettings {
   int mend_rounds = 12;
   /// guaranteed: cavities are pillowed at the end around the nodes still short of their
   /// targets when they are at most this share of the interface nodes (0: never), and kept
-  /// when a few more rounds of the loop then bring the nodes closer.
+  /// when a few more rounds of the loop then bring the nodes closer; the nodes still short,
+  /// when as few, are then put on their targets with their neighbours' help (late_reach).
   double late_cavity_share = 0.01;
   /// guaranteed: the loop stops when a round lowers dist by no more than this share of it.
   double loop_tolerance = 1e-3;
@@ -195,6 +197,9 @@ struct AdaptResult {
   TargetSpacingResult spacing;        ///< the targets pushed apart for the size criterion
   ReachResult reach;                  ///< the nodes put on their surface after the loop
   LateCavities late_cavities;         ///< of the run that made the output
+  /// The last few nodes short of their targets put on them (reach_targets), as many as the
+  /// late cavities may seed, after them.
+  ReachResult late_reach;
 };
 
 /// Runs the chosen pipeline. `material` holds one index into `fractions`' materials per
