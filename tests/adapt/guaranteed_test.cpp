@@ -393,6 +393,7 @@ TEST(GuaranteedMethod, AFewNodesLeftShortByTheFirstLayerReachTheirTargetsThrough
       [](const auto& grid, const Fractions& f, const IdVector<CellId, int>& m) {
         AdaptOptions o = guaranteed_options();
         o.late_cavity_share = 0;
+        o.reach.passes = 0;  // the late reach takes them there too
         const auto without = adapt(grid, f, m, o);
         check_guaranteed(grid, without);
         EXPECT_EQ(without.layers, LayerStrategy::first);

@@ -372,7 +372,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--reach-passes", args.options.reach.passes,
                  "guaranteed: passes putting the nodes still off their surface after the loop "
-                 "on it, their neighbours repairing the cells (0: none)")
+                 "on it, and at the end the nodes short of their targets on them, their "
+                 "neighbours repairing the cells (0: none)")
       ->check(cli::non_negative)
       ->capture_default_str();
   app.add_option("--cavity-range", args.options.cavity.range,

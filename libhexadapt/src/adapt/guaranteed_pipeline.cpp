@@ -164,22 +164,6 @@ std::vector<NodeId> pillow_cavities(M& mesh, CellMaterials& material, Targets& t
 // Rounds of the move-smooth loop after the late cavities (late_cavities).
 constexpr int late_loops = 3;
 
-// The nodes with a target anywhere but on it.
-template <class M>
-std::vector<NodeId> short_of_targets(const M& mesh, const Targets& targets) {
-  std::vector<NodeId> out;
-  for (NodeId v : id_range<NodeId>(mesh.n_nodes()))
-    if (targets.has[v] && mesh.point(v) != targets.position[v]) out.push_back(v);
-  return out;
-}
-
-// Whether `n` nodes short of their targets are few enough for the late steps
-// (AdaptOptions::late_cavity_share).
-bool few_short(std::size_t n, const Targets& targets, const AdaptOptions& options) {
-  return n > 0 && static_cast<double>(n) <=
-                      options.late_cavity_share * static_cast<double>(targets.n_interface_nodes);
-}
-
 // At the end of a run: cavities around the nodes still short of their targets, when they are
 // at most late_cavity_share of the interface nodes, then rounds of the loop that count the
 // distance to the targets; kept only when that brings the nodes closer. The extruded cases'
@@ -190,10 +174,13 @@ template <class M>
 void late_cavities(M& mesh, CellMaterials& material, Targets& targets, SizeCriterion& size,
                    IdVector<NodeId, NodeConstraint>& sliding, int n_materials, AdaptResult<M>& r,
                    const AdaptOptions& options) {
-  const std::vector<NodeId> seeds = short_of_targets(mesh, targets);
+  std::vector<NodeId> seeds;
+  for (NodeId v : id_range<NodeId>(mesh.n_nodes()))
+    if (targets.has[v] && mesh.point(v) != targets.position[v]) seeds.push_back(v);
   LateCavities& late = r.late_cavities;
   late = {static_cast<index_t>(seeds.size()), false, 0, false};
-  if (!few_short(seeds.size(), targets, options) || options.cavity.range < 1) return;
+  const double most = options.late_cavity_share * static_cast<double>(targets.n_interface_nodes);
+  if (seeds.empty() || static_cast<double>(seeds.size()) > most || options.cavity.range < 1) return;
   late.tried = true;
   CavityResult<M> c =
       cavity_pillow(mesh, material, n_materials, seeds, options.cavity, options, size);
@@ -444,9 +431,8 @@ void run_layers(const M& grid, const CellMaterials& material, const Targets& gri
   rest.max_loops = options.max_loops;  // late_cavities counts the rounds already run
   late_cavities(mesh, out_material, targets, size, sliding, n_materials, r, rest);
   record_step(r, mesh, "late-cavity", clock, options.progress, 1.0, "");
-  if (few_short(short_of_targets(mesh, targets).size(), targets, options))
-    r.late_reach = reach_targets(mesh, targets, sliding, size, options.reach, options.smooth,
-                                 options.threshold);
+  r.late_reach =
+      reach_targets(mesh, targets, sliding, size, options.reach, options.smooth, options.threshold);
   record_step(r, mesh, "late-reach", clock, options.progress, 1.0, "");
 
   r.mesh = std::move(mesh);

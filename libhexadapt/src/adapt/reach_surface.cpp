@@ -15,9 +15,10 @@ namespace {
 // What the nodes reach: their surface (reach_surfaces) or their target (reach_targets).
 enum class Goal : char { surface, target };
 
-// A node off its goal and the nodes that repair its cells: the nodes without a target
-// within two cells of it and, for the surface, the nodes with a target sharing a cell with
-// it (sorted).
+// A node off its goal and the nodes that repair its cells (sorted). For the surface: the
+// nodes without a target within two cells of it and the nodes with a target sharing a cell
+// with it. For the target: the nodes without a target sharing a cell with it; within two
+// cells, the nodes on the 3D cases reached their targets as often, at 4-5 times the time.
 struct Region {
   NodeId node;
   std::vector<NodeId> helpers;
@@ -46,7 +47,11 @@ Region region_of(const M& mesh, NodeId n, const Targets& targets, Goal goal) {
   Region r{n, {}};
   for (CellId c : mesh.node_cells(n))
     for (NodeId w : mesh.cell_nodes(c)) {
-      if (goal == Goal::surface && w != n && targets.has[w]) r.helpers.push_back(w);
+      if (goal == Goal::target) {
+        if (!targets.has[w]) r.helpers.push_back(w);
+        continue;
+      }
+      if (w != n && targets.has[w]) r.helpers.push_back(w);
       for (CellId d : mesh.node_cells(w))
         for (NodeId x : mesh.cell_nodes(d))
           if (!targets.has[x]) r.helpers.push_back(x);

@@ -15,8 +15,9 @@
 // cell keeps both criteria (interface_pillow.h); between the first controlled move and the
 // move-smooth loop (2D, by default), cavity pillowing (sec. 5.2, Alg. 5, cavity_pillow.h)
 // gives the nodes left short new cells to move into; the last few nodes short of their
-// targets get cavities at the end (late_cavity_share), then go onto them where the nodes
-// without a target around them can repair their cells (reach_surface.h). The nodes still farther
+// targets get cavities at the end (late_cavity_share). Every node still short of its target
+// then goes onto it where the nodes without a target around it can repair its cells
+// (reach_surface.h). The nodes still farther
 // than near_interface from their surface at the end are reported in `blocked`. In 3D, when asked
 // and given the reconstruction's geometric model, the guaranteed method first corrects the
 // targets (sec. 5.3, target_correction.h); otherwise the correction is skipped and the
@@ -103,8 +104,7 @@ struct AdaptOptions : StepSettings {
   int mend_rounds = 12;
   /// guaranteed: cavities are pillowed at the end around the nodes still short of their
   /// targets when they are at most this share of the interface nodes (0: never), and kept
-  /// when a few more rounds of the loop then bring the nodes closer; the nodes still short,
-  /// when as few, are then put on their targets with their neighbours' help (late_reach).
+  /// when a few more rounds of the loop then bring the nodes closer.
   double late_cavity_share = 0.01;
   /// guaranteed: the loop stops when a round lowers dist by no more than this share of it.
   double loop_tolerance = 1e-3;
@@ -197,8 +197,8 @@ struct AdaptResult {
   TargetSpacingResult spacing;        ///< the targets pushed apart for the size criterion
   ReachResult reach;                  ///< the nodes put on their surface after the loop
   LateCavities late_cavities;         ///< of the run that made the output
-  /// The last few nodes short of their targets put on them (reach_targets), as many as the
-  /// late cavities may seed, after them.
+  /// The nodes short of their targets put on them (reach_targets) after the late cavities;
+  /// ReachOptions::passes = 0: no such step.
   ReachResult late_reach;
 };
 

@@ -20,12 +20,15 @@
 // 0.300-0.31 (vortex filaments one cell thick, balldrop's air two cells thick under the
 // drop), which one node moving alone cannot raise.
 //
-// reach_targets does the same for the nodes on their surface but short of their targets
-// (the last few, at the end of a run): such a node goes onto its target, then 3/4 of the way,
-// and only the nodes without a target repair its cells, so that no other node leaves its
-// own target. On the triple point 420x180x3 at t = 1, the size criterion left four nodes
-// 0.06 local sizes short of their targets: an edge to a node without a target would have
-// been 0.95 times the shortest allowed; that node moved aside, they reach them.
+// reach_targets does the same, at the very end of a run, for the nodes short of their
+// targets (most of them on their surface: the controlled move slid them there, to the
+// nearest ring around the target where every cell kept the criteria): such a node goes onto
+// its target, then 3/4 of the way, and only the nodes without a target sharing a cell with
+// it repair its cells, so that no other node leaves its own target. On the triple point
+// 420x180x3 at t = 1, the size criterion left four nodes 0.06 local sizes short of their
+// targets: an edge to a node without a target would have been 0.95 times the shortest
+// allowed; that node moved aside, they reach them. On the fully 3D cases it halves the
+// target distance left (docs/results.md).
 #pragma once
 
 #include "hexadapt/adapt/node_constraint.h"
