@@ -27,8 +27,8 @@
 // it repair its cells, so that no other node leaves its own target. On the triple point
 // 420x180x3 at t = 1, the size criterion left four nodes 0.06 local sizes short of their
 // targets: an edge to a node without a target would have been 0.95 times the shortest
-// allowed; that node moved aside, they reach them. On the fully 3D cases it halves the
-// target distance left (docs/results.md).
+// allowed; that node moved aside, they reach them. On the fully 3D cases it lowers the
+// target distance ratio by a quarter to a half (docs/results.md).
 #pragma once
 
 #include "hexadapt/adapt/node_constraint.h"
