@@ -17,12 +17,12 @@
 // gives the nodes left short new cells to move into; the last few nodes short of their
 // targets get cavities at the end (late_cavity_share). Every node still short of its target
 // then goes onto it where the nodes without a target around it can repair its cells
-// (reach_surface.h). The nodes still farther
-// than near_interface from their surface at the end are reported in `blocked`. In 3D, when asked
-// and given the reconstruction's geometric model, the guaranteed method first corrects the
-// targets (sec. 5.3, target_correction.h); otherwise the correction is skipped and the
-// result says why. It is off by default. With the size criterion on, targets closer than it
-// lets their grid edge be are then pushed apart along their interface (target_spacing.h).
+// (reach_surface.h). The nodes still farther than near_interface from their surface at the
+// end are reported in `blocked`. In 3D, when asked and given the reconstruction's
+// geometric model, the guaranteed method first corrects the targets (sec. 5.3,
+// target_correction.h); otherwise the correction is skipped and the result says why. It is
+// off by default. With the size criterion on, targets closer than it lets their grid edge
+// be are then pushed apart along their interface (target_spacing.h).
 #pragma once
 
 #include <string>
