@@ -24,7 +24,8 @@ struct Lifted {
   SizeCriterion size = size_criterion(mesh, 0.1);
   IdVector<NodeId, NodeConstraint> surface;
 
-  Lifted() {
+  // `normal`: the middle node's interface plane's.
+  explicit Lifted(const Vec3& normal = Vec3::UnitZ()) {
     const auto nn = static_cast<std::size_t>(mesh.n_nodes());
     targets.has.assign(nn, 0);
     targets.interface.assign(nn, NodeConstraint{});
@@ -34,7 +35,7 @@ struct Lifted {
     }
     targets.has[middle] = 1;
     targets.position[middle] += Vec3(0, 0, lift);
-    targets.interface[middle].add(Vec3::UnitZ());
+    targets.interface[middle].add(normal);
     surface = sliding_constraints(boundary_constraints(mesh), targets);
   }
   double off() const {
@@ -100,10 +101,8 @@ TEST(ReachSurface, NoPassLeavesTheMeshAsItIs) {
 constexpr double target_threshold = 0.97;
 
 struct OnItsSurface : Lifted {
-  OnItsSurface() {
+  OnItsSurface() : Lifted(Vec3::UnitX()) {
     targets.position[middle] -= Vec3(0, 0, lift / 2);
-    targets.interface[middle] = NodeConstraint{};
-    targets.interface[middle].add(Vec3::UnitX());
     for (NodeId v : id_range<NodeId>(mesh.n_nodes()))
       if (mesh.point(v).z() == 1 || mesh.point(v).z() == 3) targets.has[v] = 1;
     surface = sliding_constraints(boundary_constraints(mesh), targets);
