@@ -171,11 +171,9 @@ Json result_json(const AdaptResult<M>& r, index_t input_cells, double threshold)
   }
   j["correction"] = correction;
   const TargetSpacingResult& sp = r.spacing;
-  j["target_spacing"] = {{"short_edges", sp.short_edges},
-                         {"moved_targets", sp.moved},
-                         {"left_short", sp.left_short},
-                         {"max_shift", sp.max_shift},
-                         {"sweeps", sp.sweeps}};
+  j["target_spacing"] = {{"short_edges", sp.short_edges}, {"moved_targets", sp.moved},
+                         {"left_short", sp.left_short},   {"max_shift", sp.max_shift},
+                         {"sweeps", sp.sweeps},           {"swapped", sp.swapped}};
   const LateCavities& late = r.late_cavities;
   j["late_cavities"] = {{"short_nodes", late.short_nodes},
                         {"tried", late.tried},

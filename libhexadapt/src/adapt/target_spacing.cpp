@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "hexadapt/adapt/local_topology.h"
+#include "hexadapt/mesh/cell_complex.h"
 
 namespace hexadapt {
 
@@ -30,6 +31,48 @@ std::vector<TargetEdge> target_edges(const M& grid, const SizeCriterion& size,
     }
   }
   return edges;
+}
+
+// Where material m lies around the edge e: from the centroid of the other materials' cells
+// around its two nodes to that of m's (zero when one of the two is missing).
+template <class M>
+Vec3 material_side(const M& grid, const CellMaterials& material, const TargetEdge& e, int m) {
+  std::vector<CellId> ring(grid.node_cells(e.u).begin(), grid.node_cells(e.u).end());
+  for (CellId c : grid.node_cells(e.v))
+    if (corner_of(grid, c, e.u) < 0) ring.push_back(c);
+  Vec3 in = Vec3::Zero(), out = Vec3::Zero();
+  int n_in = 0, n_out = 0;
+  for (CellId c : ring) {
+    const bool mine = material[c] == m;
+    (mine ? in : out) += cell_centroid(grid, c);
+    ++(mine ? n_in : n_out);
+  }
+  if (n_in == 0 || n_out == 0) return Vec3::Zero();
+  return (in / n_in - out / n_out).normalized();
+}
+
+// Whether the nodes of e, both on their targets, would turn every cell of the edge inside
+// out. The edge turns from its grid direction to the targets' one, and each cell from the
+// edge's side it has in the grid to its material's side: the two frames (edge x side) must
+// keep their orientation. Only targets closer than half the edge are judged: there, a riser
+// of the staircase lying across the interface, the order of the two projections is noise.
+template <class M>
+bool crossed(const M& grid, const CellMaterials& material, const TargetEdge& e,
+             const Targets& targets) {
+  const Vec3 pu = grid.point(e.u), pv = grid.point(e.v);
+  const Vec3 edge = pv - pu;
+  const Vec3 reached = targets.position[e.v] - targets.position[e.u];
+  if (reached.norm() >= 0.5 * edge.norm()) return false;
+  int kept = 0, turned = 0;
+  for (CellId c : grid.node_cells(e.u)) {
+    if (corner_of(grid, c, e.v) < 0) continue;
+    const Vec3 before = edge.cross(cell_centroid(grid, c) - 0.5 * (pu + pv));
+    const Vec3 after = reached.cross(material_side(grid, material, e, material[c]));
+    const double turn = before.dot(after);
+    kept += turn > 0;
+    turned += turn < 0;
+  }
+  return turned > 0 && kept == 0;
 }
 
 // Pushes the targets of e apart to `want`, each within its constraint and its shift budget;
@@ -60,12 +103,18 @@ bool push_apart(const TargetEdge& e, double want, const IdVector<NodeId, NodeCon
 }  // namespace
 
 template <class M>
-TargetSpacingResult space_targets(const M& grid, const SizeCriterion& size,
+TargetSpacingResult space_targets(const M& grid, const CellMaterials& material,
+                                  const SizeCriterion& size,
                                   const IdVector<NodeId, NodeConstraint>& sliding, Targets& targets,
                                   const TargetSpacingOptions& options) {
   TargetSpacingResult r;
   if (!size.on()) return r;
   const std::vector<TargetEdge> edges = target_edges(grid, size, targets);
+  for (const TargetEdge& e : edges)
+    if (options.uncross && crossed(grid, material, e, targets)) {
+      std::swap(targets.position[e.u], targets.position[e.v]);
+      ++r.swapped;
+    }
   const IdVector<NodeId, Vec3> start = targets.position;
   IdVector<NodeId, double> budget(start.size(), 0.0);
   for (NodeId v : id_range<NodeId>(grid.n_nodes()))
@@ -91,10 +140,12 @@ TargetSpacingResult space_targets(const M& grid, const SizeCriterion& size,
   return r;
 }
 
-template TargetSpacingResult space_targets<QuadMesh>(const QuadMesh&, const SizeCriterion&,
+template TargetSpacingResult space_targets<QuadMesh>(const QuadMesh&, const CellMaterials&,
+                                                     const SizeCriterion&,
                                                      const IdVector<NodeId, NodeConstraint>&,
                                                      Targets&, const TargetSpacingOptions&);
-template TargetSpacingResult space_targets<HexMesh>(const HexMesh&, const SizeCriterion&,
+template TargetSpacingResult space_targets<HexMesh>(const HexMesh&, const CellMaterials&,
+                                                    const SizeCriterion&,
                                                     const IdVector<NodeId, NodeConstraint>&,
                                                     Targets&, const TargetSpacingOptions&);
 

@@ -15,6 +15,16 @@
 // by its constraints (a 2D triple point, a corner) stays, its neighbour moves the whole way.
 // Sweeps repeat until no edge is short or `sweeps` ran; a target never moves more than
 // `max_shift` local sizes in all.
+//
+// Before that, the two targets of an edge are swapped where reaching them would turn the
+// edge's cells inside out (`uncross`). A riser of the staircase lies across the interface:
+// both its nodes project onto nearly the same point, in an order that is noise. Reaching the
+// interface, the riser turns onto it and each of its cells onto its material's side; that
+// turn must keep the cells' orientation (the edge x the cell's side, in the grid and on the
+// targets): the targets are swapped when it would turn every cell of the edge inside out,
+// not where the cells disagree. Only targets closer than half the edge are judged. Without the swap
+// the guarantee holds both nodes short, one of them a quarter of a local size away (the triple
+// point 420x180 at t = 2, damBreak4phase at t = 2).
 #pragma once
 
 #include "hexadapt/adapt/size_criterion.h"
@@ -26,6 +36,7 @@ struct TargetSpacingOptions {
   double margin = 1.25;    ///< targets end this many times the shortest edge apart
   int sweeps = 8;          ///< over every edge, at most
   double max_shift = 0.5;  ///< farthest a target moves, in local sizes of its node
+  bool uncross = true;     ///< swap the targets of an edge that would turn its cells inside out
 };
 
 struct TargetSpacingResult {
@@ -34,12 +45,14 @@ struct TargetSpacingResult {
   index_t left_short = 0;   ///< edges still short at the end (their nodes cannot move apart)
   double max_shift = 0;     ///< farthest a target moved, in local sizes of its node
   int sweeps = 0;
+  index_t swapped = 0;  ///< edges whose two targets were swapped (uncross)
 };
 
 /// Moves `targets.position` in place on `grid` (the mesh the targets belong to, with `size`
 /// on its cells); `sliding` is sliding_constraints() of the grid. Nothing when size is off.
 template <class M>
-TargetSpacingResult space_targets(const M& grid, const SizeCriterion& size,
+TargetSpacingResult space_targets(const M& grid, const CellMaterials& material,
+                                  const SizeCriterion& size,
                                   const IdVector<NodeId, NodeConstraint>& sliding, Targets& targets,
                                   const TargetSpacingOptions& options = {});
 
