@@ -149,12 +149,13 @@ TEST(TargetSpacing, TargetsThatWouldTurnTheirCellsInsideOutAreSwapped) {
 
   TargetSpacingOptions off;  // the option turns it off
   off.uncross = false;
-  Riser left(+1);
-  EXPECT_EQ(space_targets(left.mesh, left.material, size_criterion(left.mesh, 0.1),
-                          sliding_constraints(boundary_constraints(left.mesh), left.targets),
-                          left.targets, off)
-                .swapped,
-            0);
+  Riser unswapped(+1);
+  EXPECT_EQ(
+      space_targets(unswapped.mesh, unswapped.material, size_criterion(unswapped.mesh, 0.1),
+                    sliding_constraints(boundary_constraints(unswapped.mesh), unswapped.targets),
+                    unswapped.targets, off)
+          .swapped,
+      0);
 }
 
 }  // namespace

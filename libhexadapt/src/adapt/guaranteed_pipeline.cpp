@@ -529,8 +529,8 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
   r.n_interface_nodes = targets.n_interface_nodes;
   record_step(r, mesh, "targets", clock, options.progress, 0.1, "layers");
   correct(mesh, material, grid_boundary, targets, model, r, clock, options);
-  r.spacing = space_targets(mesh, material, size, sliding_constraints(grid_boundary, targets), targets,
-                            options.spacing);
+  r.spacing = space_targets(mesh, material, size, sliding_constraints(grid_boundary, targets),
+                            targets, options.spacing);
 
   const int n_materials = fractions.n_materials();
   AdaptOptions layers = options;  // what is left reports as its part of the progress

@@ -22,9 +22,9 @@
 // interface, the riser turns onto it and each of its cells onto its material's side; that
 // turn must keep the cells' orientation (the edge x the cell's side, in the grid and on the
 // targets): the targets are swapped when it would turn every cell of the edge inside out,
-// not where the cells disagree. Only targets closer than half the edge are judged. Without the swap
-// the guarantee holds both nodes short, one of them a quarter of a local size away (the triple
-// point 420x180 at t = 2, damBreak4phase at t = 2).
+// not where the cells disagree. Only targets closer than half the edge are judged. Without
+// the swap the guarantee holds both nodes short, one of them a quarter of a local size away
+// (the triple point 420x180 at t = 2, damBreak4phase at t = 2).
 #pragma once
 
 #include "hexadapt/adapt/size_criterion.h"
