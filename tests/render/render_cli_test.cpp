@@ -322,6 +322,22 @@ TEST_F(RenderCli, FieldBarSpansTheFiniteValuesWithRoundTicks) {
   EXPECT_EQ(f["ticks"][0]["label"], "2.5");
 }
 
+TEST_F(RenderCli, PointArrayColoursTheCellsByTheirNodes) {
+  io::MeshData d = two_materials_2d();
+  std::vector<double> distance;
+  for (const Vec3& p : d.points) distance.push_back(p.x());
+  d.set_point_array({"distance", 1, io::ScalarType::float64, distance});
+  io::write_mesh(d, path("mesh.vtu"));
+  ASSERT_EQ(
+      run(path("mesh.vtu") + " -o " + path("d.png") + " --color distance --json " + path("d.json")),
+      0);
+  const auto [lo, hi] = std::minmax_element(distance.begin(), distance.end());
+  const nlohmann::json r = read_json(path("d.json"));
+  EXPECT_GT(r["range"][0].get<double>(), *lo);  // cell means, strictly inside the nodes' range
+  EXPECT_LT(r["range"][1].get<double>(), *hi);
+  EXPECT_TRUE(fs::exists(path("d.png")));
+}
+
 }  // namespace
 }  // namespace hexadapt
 #endif

@@ -20,10 +20,11 @@ using namespace hexadapt;
 using reconstruct::Method;
 
 struct Options {
-  std::string input, model, method = "greedy", model_format = "om";
+  std::string input, model, model_format = "om";
   cli::InputOptions in;
   bool majority = false;
   reconstruct::ReconstructOptions lib;
+  std::string method = reconstruct::to_string(lib.method);  ///< --method, parsed into lib
   double read_seconds = 0;  ///< reading the input, for the report
 };
 

@@ -79,17 +79,36 @@ CellColors quality_colors(const io::MeshData& data, const ColoringOptions& optio
   return continuous(q, std::move(bar), options.max_ticks);
 }
 
-// Any other cell array over its own range (vectors by their magnitude).
-CellColors field_colors(const io::DataArray& a, std::size_t n, const ColoringOptions& options) {
-  std::vector<double> values(n, 0.0);
+// One value per tuple: the value itself, or the magnitude of a vector.
+std::vector<double> tuple_values(const io::DataArray& a) {
   const auto nc = static_cast<std::size_t>(a.n_components);
-  for (std::size_t c = 0; c < n; ++c) {
+  std::vector<double> values(a.n_tuples(), 0.0);
+  for (std::size_t t = 0; t < values.size(); ++t) {
     double s = 0;
-    for (std::size_t k = 0; k < nc; ++k) s += a.values[c * nc + k] * a.values[c * nc + k];
-    values[c] = nc == 1 ? a.values[c] : std::sqrt(s);
+    for (std::size_t k = 0; k < nc; ++k) s += a.values[t * nc + k] * a.values[t * nc + k];
+    values[t] = nc == 1 ? a.values[t] : std::sqrt(s);
   }
+  return values;
+}
+
+// A point array seen on the cells: each cell takes the mean of its nodes' values (NaN
+// when one of them has no finite value, so that the cell is shown as having none).
+std::vector<double> cell_means(const io::MeshData& data, const std::vector<double>& node_value) {
+  const auto per_cell = static_cast<std::size_t>(data.nodes_per_cell());
+  std::vector<double> values(static_cast<std::size_t>(data.n_cells()), 0.0);
+  for (std::size_t c = 0; c < values.size(); ++c) {
+    for (std::size_t k = 0; k < per_cell; ++k)
+      values[c] += node_value[static_cast<std::size_t>(data.cells[c * per_cell + k].value())];
+    values[c] /= static_cast<double>(per_cell);
+  }
+  return values;
+}
+
+// Values over their own range; `title` names them on the colour bar.
+CellColors field_colors(const std::vector<double>& values, std::string title,
+                        const ColoringOptions& options) {
   ColorBar bar;
-  bar.title = a.name;
+  bar.title = std::move(title);
   data_range(values, bar);
   bar.scale_min = bar.data_min;
   bar.scale_max = bar.data_max;
@@ -145,9 +164,11 @@ CellColors categorical(const io::MeshData& data, const io::DataArray& material) 
   return c;
 }
 
-std::string available_arrays(const io::MeshData& data) {
-  std::string s = "material, fractions, quality, none";
-  for (const auto& a : data.cell_data) s += ", " + a.name;
+std::string available_fields(const io::MeshData& data) {
+  std::string s = "fractions, quality, none; cell arrays:";
+  for (const auto& a : data.cell_data) s += " '" + a.name + "'";
+  s += "; point arrays:";
+  for (const auto& a : data.point_data) s += " '" + a.name + "'";
   return s;
 }
 
@@ -193,12 +214,15 @@ CellColors color_cells(const io::MeshData& data, const std::string& field,
   }
   if (field == "fractions") return blended(data);
   if (field == "quality") return quality_colors(data, options);
-  const io::DataArray* a = data.find_cell_array(field);
-  if (!a)
-    throw OptionError("--color: no cell array '" + field +
-                      "' (available: " + available_arrays(data) + ")");
-  if (field == "material" && a->n_components == 1) return categorical(data, *a);
-  return field_colors(*a, n, options);
+  if (const io::DataArray* a = data.find_cell_array(field)) {
+    if (field == "material" && a->n_components == 1) return categorical(data, *a);
+    return field_colors(tuple_values(*a), field, options);
+  }
+  if (const io::DataArray* a = data.find_point_array(field))
+    return field_colors(cell_means(data, tuple_values(*a)), field + " (node mean)",
+                        options);
+  throw OptionError("--color: no array '" + field + "' (available: " + available_fields(data) +
+                    ")");
 }
 
 }  // namespace hexadapt::render

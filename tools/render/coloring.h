@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "hexadapt/io/mesh_data.h"
+#include "hexadapt/quality/scaled_jacobian.h"
 #include "ticks.h"
 
 namespace hexadapt::render {
@@ -43,7 +44,7 @@ struct CellColors {
 };
 
 struct ColoringOptions {
-  double threshold = 0.3;  ///< S_q, marked on the bar of "quality"
+  double threshold = default_threshold;  ///< S_q, marked on the bar of "quality"
   int max_ticks = 6;       ///< ticks of the colour bar, at most
 };
 
@@ -60,9 +61,10 @@ std::vector<std::string> material_names(const io::MeshData& data);
 /// Colours by `field`: "material" (categorical), "fractions" (each cell mixes the material
 /// colours by its vf_ fractions), "quality" (scaled Jacobian computed here, on the fixed scale
 /// from min(0, threshold) to 1 so that pictures of different meshes compare; cells below it
-/// get their own colour), "none" (white), or any cell array (continuous over the cells' range;
-/// the magnitude of vector arrays). Cells without a finite value are grey. Throws OptionError
-/// naming the available arrays when `field` is not there.
+/// get their own colour), "none" (white), any cell array (continuous over the cells' range;
+/// the magnitude of vector arrays) or, failing one, any point array (each cell the mean of its
+/// nodes' values). Cells without a finite value are grey. Throws OptionError naming the
+/// available fields and arrays when `field` is none of them.
 CellColors color_cells(const io::MeshData& data, const std::string& field,
                        const ColoringOptions& options = {});
 

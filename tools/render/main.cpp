@@ -38,7 +38,8 @@ void add_options(CLI::App& app, Args& a) {
                  "Cell colouring: material (legend of material names), fractions (material "
                  "colours mixed by the vf_ arrays), quality (scaled Jacobian, computed; colour "
                  "bar on the fixed scale 0 to 1, the same in every picture, with --threshold "
-                 "marked), none, or any cell array (colour bar over the cells' range); auto: "
+                 "marked), none, any cell array (colour bar over the cells' range) or point array "
+                 "(each cell the mean of its nodes); auto: "
                  "material when the file has it, else fractions when it has vf_ arrays, else none")
       ->capture_default_str();
   app.add_option("--threshold", a.coloring.threshold,

@@ -27,9 +27,6 @@
 
 namespace hexadapt {
 
-/// S_q, the smallest scaled Jacobian the steps keep, unless told otherwise.
-inline constexpr double default_threshold = 0.3;
-
 struct SizeCriterion {
   double min_edge = 0;                  ///< shortest edge / local size at least; 0 = off
   IdVector<CellId, double> local_size;  ///< per cell of the mesh it is used on

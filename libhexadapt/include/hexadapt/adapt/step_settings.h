@@ -8,6 +8,7 @@
 #include "hexadapt/adapt/pillow.h"
 #include "hexadapt/adapt/size_criterion.h"
 #include "hexadapt/adapt/smoothing.h"
+#include "hexadapt/quality/scaled_jacobian.h"
 
 namespace hexadapt {
 

@@ -21,6 +21,7 @@
 #include "hexadapt/core/log.h"
 #include "hexadapt/mesh/cell_complex.h"
 #include "hexadapt/mesh/mesh_check.h"
+#include "hexadapt/quality/scaled_jacobian.h"
 
 namespace hexadapt {
 namespace io {
@@ -28,7 +29,7 @@ struct MeshData;
 }
 
 struct QualityReportOptions {
-  double threshold = 0.3;  ///< S_q: cells with scaled Jacobian below it fail
+  double threshold = default_threshold;  ///< S_q: cells with scaled Jacobian below it fail
   int bins = 20;           ///< histogram bins over [-1, 1]
   int max_listed = 10;     ///< how many cells below the threshold (or impure) are listed
   MeshCheckOptions check;  ///< options of the mesh check

@@ -18,6 +18,10 @@
 
 namespace hexadapt {
 
+/// S_q, the smallest scaled Jacobian a cell may have unless told otherwise: what adapt
+/// keeps, what measure checks and what render marks on its colour bar.
+inline constexpr double default_threshold = 0.3;
+
 double hex_scaled_jacobian(const std::array<Vec3, 8>& p);
 /// Signed volume of the trilinear hex (exact: 2x2x2 Gauss quadrature of det J).
 double hex_volume(const std::array<Vec3, 8>& p);
