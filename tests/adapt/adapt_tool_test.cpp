@@ -99,6 +99,44 @@ TEST(AdaptTool, WritesTheMeshTheArraysAndTheReport) {
   fs::remove_all(dir);
 }
 
+// A threshold so high that the interface nodes cannot reach their interface: the mesh meets
+// it (exit 0), and stderr says how many nodes stay away and where the farthest is (it said
+// nothing), as the report and the `blocked` array do.
+TEST(AdaptTool, WarnsAboutNodesKeptAwayFromTheInterface) {
+  const fs::path dir = scratch("blocked");
+  write_assigned(
+      make_quad_grid(16, 16), [](const Vec3& p) { return (p - Vec3(8.2, 7.9, 0)).norm() < 5.1; },
+      2, 8, dir / "in.vtu");
+  const fs::path out = dir / "out.vtu", json = dir / "out.json", err = dir / "err.txt";
+  const std::string cmd = std::string(HEXADAPT_TOOLS_DIR) + "/hexadapt-adapt " +
+                          (dir / "in.vtu").string() + " -o " + out.string() + " --json " +
+                          json.string() + " --threshold 0.9 2>" + err.string();
+  const int status = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+  std::ifstream in(json);
+  const auto report = nlohmann::json::parse(in);
+  const int blocked = report["result"]["blocked_nodes"];
+  ASSERT_GT(blocked, 0);
+  std::ifstream log(err);
+  std::stringstream read;
+  read << log.rdbuf();
+  const std::string text = read.str();
+  const std::string counted = std::to_string(blocked) + " of " +
+                              std::to_string(report["result"]["interface_nodes"].get<int>()) +
+                              " interface nodes";
+  EXPECT_NE(text.find("warning"), std::string::npos) << text;
+  EXPECT_NE(text.find(counted), std::string::npos) << counted << " in:\n" << text;
+  EXPECT_NE(text.find("'blocked'"), std::string::npos) << text;
+  const io::MeshData d = io::read_mesh(out.string());
+  const io::DataArray* flag = d.find_point_array("blocked");
+  ASSERT_NE(flag, nullptr);
+  int flagged = 0;
+  for (double v : flag->values) flagged += v != 0;
+  EXPECT_EQ(flagged, blocked);
+  fs::remove_all(dir);
+}
+
 TEST(AdaptTool, ExitCodes) {
   const fs::path dir = scratch("codes");
   QuadMesh grid;

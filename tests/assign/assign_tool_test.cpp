@@ -7,6 +7,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <vector>
 
 #include "brute_force_manifold.h"
 #include "hexadapt/io/mesh_file.h"
@@ -184,6 +185,79 @@ TEST_F(AssignTool, TextCasesTakeTheSumTolerance) {
       << refused.err;
   const ToolRun r = run(path("t.txt") + " -o " + path("out.vtu") + " --sum-tolerance 1e-3");
   EXPECT_EQ(r.code, 0) << r.err;
+}
+
+// Material b, nowhere the majority, fills 4.2 cells: 45 % of a 2x2 block of an 8x8 grid of
+// a, 30 % of a neighbour, traces elsewhere. Lost by default; with --keep-materials it takes
+// the 4 cells where it is most present, the block. Reported both ways.
+TEST_F(AssignTool, KeepMaterialsGivesALostMaterialTheCellsWhereItIsMostPresent) {
+  io::MeshData data = io::from_mesh(make_quad_grid(8, 8));
+  std::vector<double> b(64, 0.0);
+  for (std::size_t c = 0; c < 5; ++c) b[c] = 0.1;
+  for (std::size_t c = 48; c < 64; ++c) b[c] = 0.1;
+  for (int c : {2 * 8 + 2, 2 * 8 + 3, 3 * 8 + 2, 3 * 8 + 3}) b[static_cast<std::size_t>(c)] = 0.45;
+  b[10] = 0.3;
+  std::vector<double> a;
+  for (double x : b) a.push_back(1 - x);
+  data.set_cell_array({"vf_a", 1, io::ScalarType::float64, a});
+  data.set_cell_array({"vf_b", 1, io::ScalarType::float64, b});
+  io::write_mesh(data, path("lost.vtu"));
+
+  const ToolRun lost = run(path("lost.vtu") + " -o " + path("lost_out.vtu"));
+  ASSERT_EQ(lost.code, 0) << lost.err;
+  EXPECT_NE(lost.err.find("material 'b' has no cell"), std::string::npos) << lost.err;
+
+  const ToolRun kept = run(path("lost.vtu") + " -o " + path("out.vtu") + " --keep-materials" +
+                           " --json " + path("r.json"));
+  ASSERT_EQ(kept.code, 0) << kept.err;
+  EXPECT_EQ(kept.err.find("has no cell"), std::string::npos) << kept.err;
+  const io::MeshData out = io::read_mesh(path("out.vtu"));
+  const io::DataArray* material = out.find_cell_array("material");
+  ASSERT_NE(material, nullptr);
+  for (std::size_t c = 0; c < 64; ++c)
+    EXPECT_EQ(material->values[c], b[c] == 0.45 ? 1 : 0) << "cell " << c;
+  std::ifstream in(path("r.json"));
+  const auto report = nlohmann::json::parse(in);
+  EXPECT_EQ(report["options"]["keep_materials"], true);
+  EXPECT_EQ(report["assign"]["kept"], (nlohmann::json{{{"name", "b"}, {"cells", 4}}}));
+  EXPECT_EQ(report["assign"]["materials"][1]["assigned_cells"], 4);
+}
+
+// One-cell islands of b in a: kept by default, given to a with --min-island 2 (and reported),
+// while the 3x3 piece of b stays.
+TEST_F(AssignTool, MinIslandGivesSmallPiecesToTheMaterialAroundThem) {
+  io::MeshData data = io::from_mesh(make_quad_grid(8, 8));
+  std::vector<double> b(64, 0.0);
+  for (int y = 4; y < 7; ++y)
+    for (int x = 4; x < 7; ++x) b[static_cast<std::size_t>(y * 8 + x)] = 1;
+  b[1 * 8 + 1] = 0.9;
+  b[1 * 8 + 5] = 0.8;
+  std::vector<double> a;
+  for (double x : b) a.push_back(1 - x);
+  data.set_cell_array({"vf_a", 1, io::ScalarType::float64, a});
+  data.set_cell_array({"vf_b", 1, io::ScalarType::float64, b});
+  io::write_mesh(data, path("islands.vtu"));
+  const auto b_cells = [&](const std::string& file) {
+    int n = 0;
+    for (double v : io::read_mesh(file).find_cell_array("material")->values) n += v == 1;
+    return n;
+  };
+
+  ASSERT_EQ(run(path("islands.vtu") + " -o " + path("plain.vtu")).code, 0);
+  EXPECT_EQ(b_cells(path("plain.vtu")), 11);
+  const ToolRun r = run(path("islands.vtu") + " -o " + path("out.vtu") + " --min-island 2 -v" +
+                        " --json " + path("r.json"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(b_cells(path("out.vtu")), 9);
+  EXPECT_NE(r.err.find("2 pieces smaller than 2 cells (2 cells) given to the material around"),
+            std::string::npos)
+      << r.err;
+  std::ifstream in(path("r.json"));
+  const auto report = nlohmann::json::parse(in);
+  EXPECT_EQ(report["options"]["min_island"], 2);
+  EXPECT_EQ(report["assign"]["islands"]["reassigned"], 2);
+  EXPECT_EQ(report["assign"]["islands"]["cells"], 2);
+  EXPECT_EQ(report["assign"]["islands"]["small_pieces_final"], 0);
 }
 
 TEST_F(AssignTool, BadInputAndOptions) {
