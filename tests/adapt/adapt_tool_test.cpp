@@ -1,6 +1,7 @@
 // End-to-end: hexadapt-adapt on a file written here, its exit codes and its output arrays.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -71,6 +72,10 @@ TEST(AdaptTool, WritesTheMeshTheArraysAndTheReport) {
   ASSERT_NE(d.find_point_array("target"), nullptr);
   ASSERT_NE(d.find_point_array("distance"), nullptr);
   EXPECT_EQ(d.find_point_array("target")->n_components, 3);
+  const auto names = std::find_if(d.metadata.begin(), d.metadata.end(),
+                                  [](const auto& kv) { return kv.first == "hexadapt_materials"; });
+  ASSERT_NE(names, d.metadata.end());  // the key of every stage's output
+  EXPECT_EQ(names->second, "m0,m1");
   std::ifstream in(json);
   const auto report = nlohmann::json::parse(in);
   EXPECT_EQ(report["method"], "guaranteed");

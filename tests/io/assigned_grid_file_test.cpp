@@ -98,5 +98,26 @@ TEST(AssignedGridFile, NamesJoinAndSplitBack) {
             (std::vector<std::string>{"air", "Body, Nose"}));
 }
 
+// One key written, every place a file may keep the names read.
+TEST(MaterialNames, ReadFromEachPlaceAFileKeepsThem) {
+  const std::vector<std::string> names{"air", "Volume Fraction for Body, Nose"};
+  MeshData d;
+  EXPECT_TRUE(material_names(d).empty());
+  set_material_names(d, {"old"});
+  set_material_names(d, names);
+  ASSERT_EQ(d.metadata.size(), 1u);
+  EXPECT_EQ(d.metadata[0].first, "hexadapt_materials");
+  EXPECT_EQ(material_names(d), names);
+  // The key of earlier adapt outputs.
+  d.metadata = {{"materials", join_material_names(names)}};
+  EXPECT_EQ(material_names(d), names);
+  // A String field-data array, one name per line: a name holding a comma stays whole.
+  d.metadata = {{"material_names", "air\nBody, Nose"}};
+  EXPECT_EQ(material_names(d), (std::vector<std::string>{"air", "Body, Nose"}));
+  // The project's own key first.
+  d.metadata.emplace_back("hexadapt_materials", "gas");
+  EXPECT_EQ(material_names(d), std::vector<std::string>{"gas"});
+}
+
 }  // namespace
 }  // namespace hexadapt::io

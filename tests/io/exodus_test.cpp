@@ -58,7 +58,7 @@ MeshData two_materials(MeshData d, int nx) {
   for (const Vec3& p : d.points)
     for (int k = 0; k < 3; ++k) target.values.push_back(p[k] + 0.5);
   d.set_point_array(target);
-  d.metadata = {{"hexadapt_tool", "hexadapt-test"}, {"materials", "steel,air"}};
+  d.metadata = {{"hexadapt_tool", "hexadapt-test"}, {"hexadapt_materials", "steel,air"}};
   return d;
 }
 
@@ -73,7 +73,7 @@ void expect_round_trip(const MeshData& d, const MeshData& r) {
   ASSERT_NE(r.find_point_array("target"), nullptr);
   EXPECT_EQ(r.find_point_array("target")->values, d.find_point_array("target")->values);
   bool named = false;
-  for (const auto& [k, v] : r.metadata) named = named || (k == "materials" && v == "steel,air");
+  for (const auto& [k, v] : r.metadata) named = named || (k == "hexadapt_materials" && v == "steel,air");
   EXPECT_TRUE(named);
 }
 
@@ -106,7 +106,7 @@ TEST(Exodus, MetadataComesBackFromTheInfoRecords) {
                 {"key: with colon", "+plus"},
                 {"+lead", ""},
                 {"hexadapt_command", std::string(80, 'x')},
-                {"materials", join_material_names({"steel", "Body, Nose"})}};
+                {"hexadapt_materials", join_material_names({"steel", "Body, Nose"})}};
   const std::string path = temp_path("info.exo");
   write_mesh(d, path);
   const MeshData r = read_mesh(path);
@@ -126,7 +126,7 @@ TEST(Exodus, RandomMetadataComesBackWhole) {
   };
   d.metadata.clear();
   for (int k = 0; k < 60; ++k) d.metadata.emplace_back("k" + text(20), text(250));
-  d.metadata.emplace_back("materials", "steel,air");
+  d.metadata.emplace_back("hexadapt_materials", "steel,air");
   const std::string path = temp_path("random_info.exo");
   write_mesh(d, path);
   const MeshData r = read_mesh(path);
@@ -140,13 +140,13 @@ TEST(Exodus, RandomMetadataComesBackWhole) {
 TEST(Exodus, LongNamesAreKept) {
   MeshData d = two_materials(from_mesh(make_quad_grid(2, 1)), 2);
   const std::string name(60, 'n');
-  d.metadata = {{"materials", "short," + name}};
+  d.metadata = {{"hexadapt_materials", "short," + name}};
   const std::string path = temp_path("long.exo");
   write_mesh(d, path);
   const MeshData r = read_mesh(path);
   std::string names;
   for (const auto& [k, v] : r.metadata)
-    if (k == "materials") names = v;
+    if (k == "hexadapt_materials") names = v;
   EXPECT_EQ(names, "short," + name);
   std::filesystem::remove(path);
 }
@@ -244,7 +244,7 @@ TEST(Exodus, ReadsTheChosenTimeStep) {
   const MeshData r = read_mesh(path, o);
   EXPECT_EQ(r.find_cell_array("material")->values, (std::vector<double>{0, 0}));
   bool named = false;
-  for (const auto& [k, v] : r.metadata) named = named || (k == "materials" && v == "block_7");
+  for (const auto& [k, v] : r.metadata) named = named || (k == "hexadapt_materials" && v == "block_7");
   EXPECT_TRUE(named);
   o.time = 0.7;
   try {
@@ -379,7 +379,7 @@ TEST(Exodus, InfoRecordsOfOtherWritersAreNotMetadata) {
                 {"hexadapt_input: " + record.substr(0, 40), record.substr(40), "a: b"});
   const MeshData r = read_mesh(path);
   std::filesystem::remove(path);
-  for (const auto& [key, value] : r.metadata) EXPECT_EQ(key, "materials") << value;
+  for (const auto& [key, value] : r.metadata) EXPECT_EQ(key, "hexadapt_materials") << value;
 }
 
 // A file of another tool: blocks 20 and 10 (in that order), one named, no `material`
@@ -405,7 +405,7 @@ TEST(Exodus, BlocksOfAnotherToolAreTheMaterials) {
   EXPECT_EQ(r.find_cell_array("material")->values, (std::vector<double>{0, 1}));
   bool named = false;
   for (const auto& [k, v] : r.metadata)
-    named = named || (k == "materials" && v == "steel,block_10");
+    named = named || (k == "hexadapt_materials" && v == "steel,block_10");
   EXPECT_TRUE(named);
   std::filesystem::remove(path);
 }

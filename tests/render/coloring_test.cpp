@@ -1,5 +1,5 @@
-// The render tool's colouring (tools/render/coloring.h): the material names, from each place
-// a file keeps them, and the fields it colours by.
+// The render tool's colouring (tools/render/coloring.h): the legend's names and the fields it
+// colours by.
 #ifdef HEXADAPT_HAVE_RENDER
 #include "coloring.h"
 
@@ -10,23 +10,20 @@
 #include <vector>
 
 #include "hexadapt/core/error.h"
-#include "hexadapt/io/assigned_grid_file.h"
+#include "hexadapt/io/material_names.h"
 
 namespace hexadapt::render {
 namespace {
 
-TEST(RenderColoring, MaterialNamesKeepTheirCommas) {
+// The legend names the file's materials (io::material_names), or else its vf_ arrays.
+TEST(RenderColoring, LegendNamesTheMaterials) {
   const std::vector<std::string> names{"air", "Volume Fraction for Body, Nose"};
   io::MeshData d;
-  d.metadata = {{"hexadapt_materials", io::join_material_names(names)}};
-  EXPECT_EQ(material_names(d), names);
-  d.metadata = {{"materials", io::join_material_names(names)}};
-  EXPECT_EQ(material_names(d), names);
-  // A String field-data array, one name per line: one name holding a comma stays whole.
-  d.metadata = {{"material_names", "Body, Nose"}};
-  EXPECT_EQ(material_names(d), std::vector<std::string>{"Body, Nose"});
-  d.metadata = {{"material_names", "air\nBody, Nose"}};
-  EXPECT_EQ(material_names(d), (std::vector<std::string>{"air", "Body, Nose"}));
+  d.set_cell_array({"vf_gas", 1, io::ScalarType::float64, {}});
+  d.set_cell_array({"vf_water", 1, io::ScalarType::float64, {}});
+  EXPECT_EQ(legend_names(d), (std::vector<std::string>{"gas", "water"}));
+  io::set_material_names(d, names);
+  EXPECT_EQ(legend_names(d), names);
 }
 
 // Two unit quads side by side: nodes 0-2 along y = 0, 3-5 along y = 1.

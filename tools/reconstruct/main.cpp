@@ -100,7 +100,7 @@ int run(const M& mesh, const Fractions& f, const CellMaterials& assignment, Opti
   Timer t;
   io::MeshData out = reconstruct::pixel_mesh_data(rec.pixels);
   out.metadata = cli::provenance(app);
-  out.metadata.emplace_back("hexadapt_materials", io::join_material_names(f.names()));
+  io::set_material_names(out, f.names());
   io::write_mesh(out, common.output, common.write_options());
   std::vector<std::string> files{common.output};
   if (!o.model.empty()) {

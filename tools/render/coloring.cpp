@@ -2,10 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "hexadapt/core/error.h"
-#include "hexadapt/io/assigned_grid_file.h"
+#include "hexadapt/io/material_names.h"
 #include "hexadapt/measure/quality_report.h"
 
 namespace hexadapt::render {
@@ -14,13 +13,6 @@ namespace {
 Rgb hex_color(unsigned v) {
   return {static_cast<double>((v >> 16) & 0xffu) / 255.0,
           static_cast<double>((v >> 8) & 0xffu) / 255.0, static_cast<double>(v & 0xffu) / 255.0};
-}
-
-std::vector<std::string> split_lines(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream in(s);
-  for (std::string item; std::getline(in, item, '\n');) out.push_back(item);
-  return out;
 }
 
 const Rgb below_scale{0.91, 0.16, 0.54};  // off the blue-green-yellow map: stands out
@@ -118,7 +110,7 @@ CellColors field_colors(const std::vector<double>& values, std::string title,
 // Each cell mixes the materials' colours in proportion to its fractions.
 CellColors blended(const io::MeshData& data) {
   CellColors c;
-  const std::vector<std::string> names = material_names(data);
+  const std::vector<std::string> names = legend_names(data);
   std::vector<const io::DataArray*> arrays;
   for (const auto& n : names)
     if (const io::DataArray* a = data.find_cell_array("vf_" + n)) {
@@ -145,7 +137,7 @@ CellColors blended(const io::MeshData& data) {
 
 CellColors categorical(const io::MeshData& data, const io::DataArray& material) {
   CellColors c;
-  const std::vector<std::string> names = material_names(data);
+  const std::vector<std::string> names = legend_names(data);
   int largest = static_cast<int>(names.size()) - 1;
   for (double v : material.values) largest = std::max(largest, static_cast<int>(v));
   const Rgb unassigned{0.6, 0.6, 0.6};
@@ -191,14 +183,9 @@ Rgb colormap(double t) {
   return {a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1]), a[2] + f * (b[2] - a[2])};
 }
 
-std::vector<std::string> material_names(const io::MeshData& data) {
-  // A String field-data array is read as one line per string; the metadata entries are
-  // io::join_material_names'.
-  for (const char* key : {"material_names", "hexadapt_materials", "materials"})
-    for (const auto& [k, v] : data.metadata)
-      if (k == key && !v.empty())
-        return k == "material_names" ? split_lines(v) : io::split_material_names(v);
-  std::vector<std::string> names;
+std::vector<std::string> legend_names(const io::MeshData& data) {
+  std::vector<std::string> names = io::material_names(data);
+  if (!names.empty()) return names;
   for (const auto& a : data.cell_data)
     if (a.name.rfind("vf_", 0) == 0) names.push_back(a.name.substr(3));
   return names;

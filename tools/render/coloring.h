@@ -53,10 +53,9 @@ Rgb palette_color(int k);
 /// The continuous colour map at t in [0, 1] (clamped): dark blue through green to yellow.
 Rgb colormap(double t);
 
-/// Material names from the metadata (`material_names`: one per line, as a String field-data
-/// array is read; `hexadapt_materials` or `materials`: io::join_material_names') or, failing
-/// that, from the vf_<name> cell arrays in file order.
-std::vector<std::string> material_names(const io::MeshData& data);
+/// Material names from the file's data (io::material_names) or, failing that, from the
+/// vf_<name> cell arrays in file order.
+std::vector<std::string> legend_names(const io::MeshData& data);
 
 /// Colours by `field`: "material" (categorical), "fractions" (each cell mixes the material
 /// colours by its vf_ fractions), "quality" (scaled Jacobian computed here, on the fixed scale

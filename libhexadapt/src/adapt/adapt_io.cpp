@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "hexadapt/io/assigned_grid_file.h"
+#include "hexadapt/io/material_names.h"
 
 namespace hexadapt {
 
@@ -30,7 +30,7 @@ io::MeshData adapt_mesh_data(const AdaptResult<M>& result,
   for (NodeId v : id_range<NodeId>(result.mesh.n_nodes()))
     blocked.values.push_back(result.blocked.empty() ? 0 : result.blocked[v]);
   data.set_point_array(std::move(blocked));
-  data.metadata.emplace_back("materials", io::join_material_names(material_names));
+  io::set_material_names(data, material_names);
   return data;
 }
 

@@ -8,7 +8,7 @@
 #include "hexadapt/core/error.h"
 #include "hexadapt/core/parallel.h"
 #include "hexadapt/generate/extrusion.h"
-#include "hexadapt/io/assigned_grid_file.h"
+#include "hexadapt/io/material_names.h"
 #include "hexadapt/mesh/structured.h"
 
 namespace hexadapt::generate {
@@ -94,7 +94,7 @@ void add_arrays(const Fractions& f, bool jittered, double box_volume, GenerateRe
 void add_metadata(const Case& c, const GenerateOptions& o, const Bounds& b, GenerateResult& r) {
   auto& md = r.data.metadata;
   md.emplace_back("hexadapt_case", c.name);
-  md.emplace_back("hexadapt_materials", io::join_material_names(c.materials));
+  md.emplace_back(io::material_names_key, io::join_material_names(c.materials));
   md.emplace_back("hexadapt_time", number(r.time));
   md.emplace_back("hexadapt_samples", std::to_string(o.samples));
   md.emplace_back("hexadapt_rk4_steps", std::to_string(r.steps));

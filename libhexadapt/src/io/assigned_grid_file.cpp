@@ -24,14 +24,6 @@ CellMaterials materials_of(const MeshData& data, const Fractions& fractions,
   return {};
 }
 
-void replace_metadata(MeshData& data, const std::string& key, std::string value) {
-  auto& meta = data.metadata;
-  meta.erase(
-      std::remove_if(meta.begin(), meta.end(), [&](const auto& kv) { return kv.first == key; }),
-      meta.end());
-  meta.emplace_back(key, std::move(value));
-}
-
 }  // namespace
 
 AssignedGrid to_assigned_grid(const MeshData& data, const AssignedGridOptions& options,
@@ -59,7 +51,7 @@ void put_assignment(const AssignedGrid& grid, MeshData& data) {
     a.values.assign(grid.material.begin(), grid.material.end());
     data.set_cell_array(std::move(a));
   }
-  replace_metadata(data, "hexadapt_materials", join_material_names(f.names()));
+  set_material_names(data, f.names());
 }
 
 MeshData to_mesh_data(const AssignedGrid& grid) {
@@ -88,33 +80,6 @@ CellMaterials read_material_array(const MeshData& data, int n_materials, const s
                            ", expected a material index in [0, " + std::to_string(n_materials) +
                            ")");
     out[c] = static_cast<int>(v);
-  }
-  return out;
-}
-
-std::string join_material_names(const std::vector<std::string>& names) {
-  std::string out;
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    if (i > 0) out += ',';
-    for (char ch : names[i]) {
-      if (ch == ',' || ch == '\\') out += '\\';
-      out += ch;
-    }
-  }
-  return out;
-}
-
-std::vector<std::string> split_material_names(const std::string& joined) {
-  std::vector<std::string> out;
-  if (joined.empty()) return out;
-  out.emplace_back();
-  for (std::size_t i = 0; i < joined.size(); ++i) {
-    if (joined[i] == '\\' && i + 1 < joined.size())
-      out.back() += joined[++i];
-    else if (joined[i] == ',')
-      out.emplace_back();
-    else
-      out.back() += joined[i];
   }
   return out;
 }

@@ -15,7 +15,7 @@
 #include "exodus_info.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/core/geometry.h"
-#include "hexadapt/io/assigned_grid_file.h"
+#include "hexadapt/io/material_names.h"
 #include "hexadapt/io/exodus.h"
 #include "netcdf_extent.h"
 #include "time_step.h"
@@ -353,11 +353,7 @@ void block_materials(const std::vector<Block>& blocks, MeshData& d) {
       names[m] = b.name;
     }
   }
-  auto& meta = d.metadata;
-  meta.erase(std::remove_if(meta.begin(), meta.end(),
-                            [](const auto& kv) { return kv.first == "materials"; }),
-             meta.end());
-  meta.emplace_back("materials", join_material_names(names));
+  set_material_names(d, names);
 }
 
 // The cells back in their own order when the element id map is a permutation of 1..n (our

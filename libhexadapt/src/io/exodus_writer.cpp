@@ -16,7 +16,7 @@
 #include "hexadapt/core/geometry.h"
 #include "hexadapt/io/atomic_file.h"
 #include "hexadapt/io/exodus.h"
-#include "material_names.h"
+#include "hexadapt/io/material_names.h"
 
 namespace hexadapt::io {
 
@@ -36,7 +36,7 @@ struct Blocks {
 Blocks group_cells(const MeshData& d, const std::string& path) {
   Blocks b;
   const auto n = static_cast<std::size_t>(d.n_cells());
-  b.names = detail::material_names(d);
+  b.names = material_names(d);
   b.material.assign(n, 0);
   if (const DataArray* a = d.find_cell_array("material"); a != nullptr && a->n_components == 1) {
     for (std::size_t c = 0; c < n; ++c) {

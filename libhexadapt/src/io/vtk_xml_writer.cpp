@@ -8,7 +8,7 @@
 #include "hexadapt/io/atomic_file.h"
 #include "hexadapt/io/vtk_xml.h"
 #include "hexadapt/mesh/structured.h"
-#include "material_names.h"
+#include "hexadapt/io/material_names.h"
 #include "provenance.h"
 #include "vtk_xml_comment.h"
 #include "vtk_xml_encode.h"
@@ -117,7 +117,7 @@ class XmlFile {
   // the material names, one per material index, and the exact command that made the file.
   void add_string_fields(const MeshData& d, const WriteOptions& options) {
     if (!options.string_fields) return;
-    const std::vector<std::string> names = detail::material_names(d);
+    const std::vector<std::string> names = material_names(d);
     if (!names.empty()) add_string_field("material_names", names);
     if (const std::string* command = detail::last_command(d))
       add_string_field(detail::command_key, {*command});

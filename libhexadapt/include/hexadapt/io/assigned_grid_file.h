@@ -2,7 +2,7 @@
 // stages share. In a file the grid keeps
 //   - each material's fractions in a cell array vf_<name> (or what FractionOptions names),
 //   - each cell's material index in the cell array `material`,
-//   - the material names in the metadata entry `hexadapt_materials` (join_material_names).
+//   - the material names in the metadata entry `hexadapt_materials` (material_names.h).
 #pragma once
 
 #include <string>
@@ -10,6 +10,7 @@
 
 #include "hexadapt/core/ids.h"
 #include "hexadapt/io/fractions_reader.h"
+#include "hexadapt/io/material_names.h"
 #include "hexadapt/io/mesh_data.h"
 #include "hexadapt/mesh/assigned_grid.h"
 
@@ -48,10 +49,5 @@ MeshData to_mesh_data(const AssignedGrid& grid);
 /// whose value is not a material index.
 CellMaterials read_material_array(const MeshData& data, int n_materials, const std::string& file,
                                   const std::string& array = "material");
-
-/// Material names as one metadata value: separated by commas, a comma or backslash inside a
-/// name preceded by a backslash. split_material_names reads it back.
-std::string join_material_names(const std::vector<std::string>& names);
-std::vector<std::string> split_material_names(const std::string& joined);
 
 }  // namespace hexadapt::io
