@@ -324,21 +324,8 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   return cli::ok;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  CLI::App app{
-      "Adapts an assigned grid (material + vf_* cell arrays, from hexadapt-assign) into a\n"
-      "conformal mesh whose cells each hold one material, with point arrays 'target',\n"
-      "'distance', 'surface_distance', 'blocked' (1: the node ended farther than\n"
-      "--near-interface local sizes from its interface surface, the cells around it refusing\n"
-      "the move; 2: and no cavity around it could be pillowed), and the cell array\n"
-      "'local_size'. Exit code 3 when output cells end below --threshold or with an edge\n"
-      "shorter than --min-edge x local_size, or when input cells do (guaranteed method,\n"
-      "nothing written).",
-      "hexadapt-adapt"};
-  Args args;
-  cli::CommonOptions common;
+// The input, the method, the guarantee and the controlled move.
+void add_method_options(CLI::App& app, Args& args) {
   app.add_option("input", args.input, "Assigned grid (.vtu, .vtk, ...)")->required();
   app.add_option("--method", args.method,
                  "guaranteed: controlled move and move-smooth loop keeping every cell >= "
@@ -365,6 +352,10 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_flag("--allow-bad-input", args.options.allow_bad_input,
                "guaranteed: run even when input cells are below --threshold (exit 3 otherwise)");
+}
+
+// The rounds of the guaranteed method and the layers it gives nodes to move into.
+void add_layer_options(CLI::App& app, Args& args) {
   app.add_option("--max-loops", args.options.max_loops, "guaranteed: move-smooth rounds at most")
       ->check(cli::non_negative)
       ->capture_default_str();
@@ -418,6 +409,10 @@ int main(int argc, char** argv) {
                  "the layer is carved where it fails before the move (0: only that)")
       ->check(cli::non_negative)
       ->capture_default_str();
+}
+
+// Where the interface nodes go: their targets and the volume offset.
+void add_target_options(CLI::App& app, Args& args) {
   app.add_option("--near-interface", args.options.near_interface,
                  "guaranteed: a node within this many local sizes of its interface surface has "
                  "reached it; farther ones are reported as blocked")
@@ -441,6 +436,10 @@ int main(int argc, char** argv) {
                  "Farthest a target moves for the volume, in local sizes")
       ->check(cli::non_negative)
       ->capture_default_str();
+}
+
+// The geometric model and the target correction on it (paper sec. 5.3).
+void add_correction_options(CLI::App& app, Args& args) {
   app.add_option("--model", args.model,
                  "guaranteed, 3D: the geometric model of hexadapt-reconstruct --model (its .vtk), "
                  "on which --correction smooths the targets first (paper sec. 5.3)");
@@ -464,6 +463,27 @@ int main(int argc, char** argv) {
                  "Target correction: farthest a target moves by smoothing, in mean edge lengths")
       ->check(cli::positive)
       ->capture_default_str();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "Adapts an assigned grid (material + vf_* cell arrays, from hexadapt-assign) into a\n"
+      "conformal mesh whose cells each hold one material, with point arrays 'target',\n"
+      "'distance', 'surface_distance', 'blocked' (1: the node ended farther than\n"
+      "--near-interface local sizes from its interface surface, the cells around it refusing\n"
+      "the move; 2: and no cavity around it could be pillowed), and the cell array\n"
+      "'local_size'. Exit code 3 when output cells end below --threshold or with an edge\n"
+      "shorter than --min-edge x local_size, or when input cells do (guaranteed method,\n"
+      "nothing written).",
+      "hexadapt-adapt"};
+  Args args;
+  cli::CommonOptions common;
+  add_method_options(app, args);
+  add_layer_options(app, args);
+  add_target_options(app, args);
+  add_correction_options(app, args);
   cli::add_input_options(app, args.in);
   cli::add_common_options(app, common);
   cli::add_write_options(app, common);

@@ -360,6 +360,13 @@ int run_assign_on_ranks(const CLI::App& app, Options& o, const dist::Communicato
   return finish(app, o, r, fr, fractions, in.shape.dim, cells, out, times, comm);
 }
 
+// One process or ranks: the options the flags set, then the run.
+int run(const CLI::App& app, Options& o, const dist::Communicator& comm) {
+  o.assign.correction.spare_neighbours = !o.paper_order;
+  if (comm.rank() == 0) o.assign.correction.progress = cli::terminal_progress(o.common);
+  return comm.size() > 1 ? run_assign_on_ranks(app, o, comm) : run_assign(app, o);
+}
+
 }  // namespace
 }  // namespace hexadapt
 
@@ -369,11 +376,6 @@ int main(int argc, char** argv) {
   hexadapt::Options options;
   hexadapt::add_options(app, options);
   return hexadapt::cli::run_on_ranks(
-      app, argc, argv, options.common, [&](const hexadapt::dist::Communicator& comm) {
-        options.assign.correction.spare_neighbours = !options.paper_order;
-        if (comm.rank() == 0)
-          options.assign.correction.progress = hexadapt::cli::terminal_progress(options.common);
-        return comm.size() > 1 ? hexadapt::run_assign_on_ranks(app, options, comm)
-                               : hexadapt::run_assign(app, options);
-      });
+      app, argc, argv, options.common,
+      [&](const hexadapt::dist::Communicator& comm) { return hexadapt::run(app, options, comm); });
 }

@@ -79,25 +79,26 @@ hx::cli::Json report(const CLI::App& app, const gen::GenerateOptions& o,
   return j;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  CLI::App app{"Write a synthetic grid with volume fractions (vf_<material> cell arrays)",
-               "hexadapt-generate"};
+struct Args {
   hx::cli::CommonOptions common;
   gen::GenerateOptions o;
   std::vector<double> bounds;
   double time = 0;
   bool list = false;
+};
+
+void add_options(CLI::App& app, Args& a) {
+  auto& o = a.o;
   app.add_option("case", o.case_name, "Case name (see --list)");
-  app.add_option("-o,--output", common.output, "Output mesh file (.vtu, .vtk or .exo)");
-  hx::cli::add_common_options(app, common, false);
-  hx::cli::add_write_options(app, common);
-  app.add_flag("--list", list, "List the cases, one a line, and exit");
+  app.add_option("-o,--output", a.common.output, "Output mesh file (.vtu, .vtk or .exo)");
+  hx::cli::add_common_options(app, a.common, false);
+  hx::cli::add_write_options(app, a.common);
+  app.add_flag("--list", a.list, "List the cases, one a line, and exit");
   app.add_option("--dims", o.dims, "Cells per axis: nx,ny (2D) or nx,ny,nz (3D)")->delimiter(',');
-  app.add_option("--bounds", bounds, "Domain: xmin,ymin,xmax,ymax or xmin,ymin,zmin,xmax,ymax,zmax")
+  app.add_option("--bounds", a.bounds,
+                 "Domain: xmin,ymin,xmax,ymax or xmin,ymin,zmin,xmax,ymax,zmax")
       ->delimiter(',');
-  auto* time_opt = app.add_option("--time", time, "Flow time (default: the case's)");
+  app.add_option("--time", a.time, "Flow time (default: the case's)");
   app.add_option("--samples", o.samples, "Samples per axis in each cell (s^d per cell)")
       ->capture_default_str();
   app.add_option("--steps", o.steps, "RK4 steps over [0, time] (0: automatic)")->capture_default_str();
@@ -108,33 +109,45 @@ int main(int argc, char** argv) {
   app.add_option("--jitter-floor", o.jitter_floor, "Scaled Jacobian every jittered cell keeps")
       ->capture_default_str();
   app.add_option("--seed", o.seed, "Seed of the jitter and the seeded shapes")->capture_default_str();
+}
 
-  return hx::cli::run(app, argc, argv, common, [&]() {
-    if (list) {
-      list_cases();
-      return hx::cli::ok;
-    }
-    if (o.case_name.empty()) throw hx::OptionError("a case name is required (see --list)");
-    if (common.output.empty()) throw hx::OptionError("an output file is required (-o FILE)");
-    hx::cli::check_files({}, {{"-o", common.output, true}, {"--json", common.json}});
-    if (!bounds.empty()) o.bounds = parse_bounds(bounds);
-    if (time_opt->count() > 0) o.time = time;
-    o.progress = hx::cli::terminal_progress(common);
-    if (!o.dims.empty()) {
-      double cells = std::max(o.extrude, 1);
-      for (int n : o.dims) cells *= std::max(n, 0);
-      hx::cli::check_memory("generating " + std::to_string(std::llround(cells)) + " cells",
-                            cells * hx::cli::generate_bytes_per_cell, common.memory_limit());
-    }
-    gen::GenerateResult r = gen::generate(o);
-    // after the case keys: a legacy .vtk title line keeps only the first 256 characters
-    for (auto& kv : hx::cli::provenance(app)) r.data.metadata.push_back(std::move(kv));
-    hx::Timer t;
-    hx::io::write_mesh(r.data, common.output, common.write_options());
-    r.times.emplace_back("write", t.seconds());
-    hx::log_info(o.case_name + ": " + std::to_string(r.data.n_cells()) + " cells, " +
-                 std::to_string(r.mixed_cells) + " mixed, written to " + common.output);
-    hx::cli::write_report(common, report(app, o, r));
+int run_generate(const CLI::App& app, Args& a) {
+  auto& o = a.o;
+  const auto& common = a.common;
+  if (a.list) {
+    list_cases();
     return hx::cli::ok;
-  });
+  }
+  if (o.case_name.empty()) throw hx::OptionError("a case name is required (see --list)");
+  if (common.output.empty()) throw hx::OptionError("an output file is required (-o FILE)");
+  hx::cli::check_files({}, {{"-o", common.output, true}, {"--json", common.json}});
+  if (!a.bounds.empty()) o.bounds = parse_bounds(a.bounds);
+  if (app.count("--time") > 0) o.time = a.time;
+  o.progress = hx::cli::terminal_progress(common);
+  if (!o.dims.empty()) {
+    double cells = std::max(o.extrude, 1);
+    for (int n : o.dims) cells *= std::max(n, 0);
+    hx::cli::check_memory("generating " + std::to_string(std::llround(cells)) + " cells",
+                          cells * hx::cli::generate_bytes_per_cell, common.memory_limit());
+  }
+  gen::GenerateResult r = gen::generate(o);
+  // after the case keys: a legacy .vtk title line keeps only the first 256 characters
+  for (auto& kv : hx::cli::provenance(app)) r.data.metadata.push_back(std::move(kv));
+  hx::Timer t;
+  hx::io::write_mesh(r.data, common.output, common.write_options());
+  r.times.emplace_back("write", t.seconds());
+  hx::log_info(o.case_name + ": " + std::to_string(r.data.n_cells()) + " cells, " +
+               std::to_string(r.mixed_cells) + " mixed, written to " + common.output);
+  hx::cli::write_report(common, report(app, o, r));
+  return hx::cli::ok;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Write a synthetic grid with volume fractions (vf_<material> cell arrays)",
+               "hexadapt-generate"};
+  Args args;
+  add_options(app, args);
+  return hx::cli::run(app, argc, argv, args.common, [&] { return run_generate(app, args); });
 }

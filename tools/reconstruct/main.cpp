@@ -151,13 +151,7 @@ int run(const M& mesh, const Fractions& f, const CellMaterials& assignment, Opti
   return cli::ok;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  CLI::App app{"Sub-pixel interface reconstruction and geometric model (paper sec. 4)",
-               "hexadapt-reconstruct"};
-  Options o;
-  cli::CommonOptions common;
+void add_options(CLI::App& app, Options& o, cli::CommonOptions& common) {
   auto& lib = o.lib;
   app.add_option("input", o.input, "Assigned grid (vf_ arrays and a `material` cell array)")
       ->required();
@@ -189,18 +183,31 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--time-limit", lib.mip.time_limit, "MIP: seconds given to GLPK")
       ->capture_default_str();
-  return cli::run(app, argc, argv, common, [&] {
-    lib.mip.seed = lib.annealing.seed;
-    cli::check_files({{"input", o.input}},
-                     {{"-o", common.output, true},
-                      {"--model", o.model.empty() ? "" : model_stem(o.model) + ".vtk"},
-                      {"--json", common.json}});
-    const Timer read;
-    io::MeshData data = io::read_mesh(o.input, o.in.read_options());
-    const AssignedGrid grid = read_grid(data, o);
-    o.read_seconds = read.seconds();
-    return std::visit(
-        [&](const auto& m) { return run(m, grid.fractions, grid.material, o, common, app); },
-        grid.mesh);
-  });
+}
+
+// Reads the assigned grid and reconstructs it.
+int run_reconstruct(const CLI::App& app, Options& o, const cli::CommonOptions& common) {
+  o.lib.mip.seed = o.lib.annealing.seed;
+  cli::check_files({{"input", o.input}},
+                   {{"-o", common.output, true},
+                    {"--model", o.model.empty() ? "" : model_stem(o.model) + ".vtk"},
+                    {"--json", common.json}});
+  const Timer read;
+  io::MeshData data = io::read_mesh(o.input, o.in.read_options());
+  const AssignedGrid grid = read_grid(data, o);
+  o.read_seconds = read.seconds();
+  return std::visit(
+      [&](const auto& m) { return run(m, grid.fractions, grid.material, o, common, app); },
+      grid.mesh);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Sub-pixel interface reconstruction and geometric model (paper sec. 4)",
+               "hexadapt-reconstruct"};
+  Options o;
+  cli::CommonOptions common;
+  add_options(app, o, common);
+  return cli::run(app, argc, argv, common, [&] { return run_reconstruct(app, o, common); });
 }
