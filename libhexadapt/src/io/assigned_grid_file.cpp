@@ -1,6 +1,5 @@
 #include "hexadapt/io/assigned_grid_file.h"
 
-#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
