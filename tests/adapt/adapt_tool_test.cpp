@@ -110,8 +110,8 @@ TEST(AdaptTool, WritesTheMeshTheArraysAndTheReport) {
 TEST(AdaptTool, WarnsAboutNodesKeptAwayFromTheInterface) {
   const fs::path dir = scratch("blocked");
   write_assigned(
-      make_quad_grid(16, 16), [](const Vec3& p) { return (p - Vec3(8.2, 7.9, 0)).norm() < 5.1; },
-      2, 8, dir / "in.vtu");
+      make_quad_grid(16, 16), [](const Vec3& p) { return (p - Vec3(8.2, 7.9, 0)).norm() < 5.1; }, 2,
+      8, dir / "in.vtu");
   const fs::path out = dir / "out.vtu", json = dir / "out.json", err = dir / "err.txt";
   const std::string cmd = std::string(HEXADAPT_TOOLS_DIR) + "/hexadapt-adapt " +
                           (dir / "in.vtu").string() + " -o " + out.string() + " --json " +

@@ -73,7 +73,8 @@ void expect_round_trip(const MeshData& d, const MeshData& r) {
   ASSERT_NE(r.find_point_array("target"), nullptr);
   EXPECT_EQ(r.find_point_array("target")->values, d.find_point_array("target")->values);
   bool named = false;
-  for (const auto& [k, v] : r.metadata) named = named || (k == "hexadapt_materials" && v == "steel,air");
+  for (const auto& [k, v] : r.metadata)
+    named = named || (k == "hexadapt_materials" && v == "steel,air");
   EXPECT_TRUE(named);
 }
 
@@ -244,7 +245,8 @@ TEST(Exodus, ReadsTheChosenTimeStep) {
   const MeshData r = read_mesh(path, o);
   EXPECT_EQ(r.find_cell_array("material")->values, (std::vector<double>{0, 0}));
   bool named = false;
-  for (const auto& [k, v] : r.metadata) named = named || (k == "hexadapt_materials" && v == "block_7");
+  for (const auto& [k, v] : r.metadata)
+    named = named || (k == "hexadapt_materials" && v == "block_7");
   EXPECT_TRUE(named);
   o.time = 0.7;
   try {

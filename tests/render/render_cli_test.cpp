@@ -188,8 +188,10 @@ TEST_F(RenderCli, SliceOf3DPicksTheLayer) {
   }
   d.set_cell_array(cell_array("material", m));
   io::write_mesh(d, path("cube.vtu"));
-  ASSERT_EQ(run(path("cube.vtu") + " -o " + path("low.png") + " --z 0.5 --size 300x200 --no-edges"), 0);
-  ASSERT_EQ(run(path("cube.vtu") + " -o " + path("high.png") + " --z 1.5 --size 300x200 --no-edges"), 0);
+  ASSERT_EQ(run(path("cube.vtu") + " -o " + path("low.png") + " --z 0.5 --size 300x200 --no-edges"),
+            0);
+  ASSERT_EQ(
+      run(path("cube.vtu") + " -o " + path("high.png") + " --z 1.5 --size 300x200 --no-edges"), 0);
   const auto low = png_row(path("low.png"), 110), high = png_row(path("high.png"), 110);
   EXPECT_GT(count(low, blue), 50);
   EXPECT_EQ(count(low, orange), 0);

@@ -32,7 +32,8 @@ void list_cases() {
     for (std::size_t k = 0; k < r.size(); ++k) width[k] = std::max(width[k], r[k].size());
   for (const auto& r : rows) {
     std::string line;
-    for (std::size_t k = 0; k + 1 < r.size(); ++k) line += r[k] + std::string(width[k] + 2 - r[k].size(), ' ');
+    for (std::size_t k = 0; k + 1 < r.size(); ++k)
+      line += r[k] + std::string(width[k] + 2 - r[k].size(), ' ');
     std::printf("%s%s\n", line.c_str(), r.back().c_str());
   }
 }
@@ -101,14 +102,16 @@ void add_options(CLI::App& app, Args& a) {
   app.add_option("--time", a.time, "Flow time (default: the case's)");
   app.add_option("--samples", o.samples, "Samples per axis in each cell (s^d per cell)")
       ->capture_default_str();
-  app.add_option("--steps", o.steps, "RK4 steps over [0, time] (0: automatic)")->capture_default_str();
+  app.add_option("--steps", o.steps, "RK4 steps over [0, time] (0: automatic)")
+      ->capture_default_str();
   app.add_option("--extrude", o.extrude, "Sweep a 2D case into this many hex layers")
       ->capture_default_str();
   app.add_option("--jitter", o.jitter, "Random node displacement, times the shortest edge, < 0.5")
       ->capture_default_str();
   app.add_option("--jitter-floor", o.jitter_floor, "Scaled Jacobian every jittered cell keeps")
       ->capture_default_str();
-  app.add_option("--seed", o.seed, "Seed of the jitter and the seeded shapes")->capture_default_str();
+  app.add_option("--seed", o.seed, "Seed of the jitter and the seeded shapes")
+      ->capture_default_str();
 }
 
 int run_generate(const CLI::App& app, Args& a) {

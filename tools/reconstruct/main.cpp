@@ -25,7 +25,7 @@ struct Options {
   bool majority = false;
   reconstruct::ReconstructOptions lib;
   std::string method = reconstruct::to_string(lib.method);  ///< --method, parsed into lib
-  double read_seconds = 0;  ///< reading the input, for the report
+  double read_seconds = 0;                                  ///< reading the input, for the report
 };
 
 AssignedGrid read_grid(const io::MeshData& data, const Options& o) {

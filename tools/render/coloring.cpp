@@ -206,8 +206,7 @@ CellColors color_cells(const io::MeshData& data, const std::string& field,
     return field_colors(tuple_values(*a), field, options);
   }
   if (const io::DataArray* a = data.find_point_array(field))
-    return field_colors(cell_means(data, tuple_values(*a)), field + " (node mean)",
-                        options);
+    return field_colors(cell_means(data, tuple_values(*a)), field + " (node mean)", options);
   throw OptionError("--color: no array '" + field + "' (available: " + available_fields(data) +
                     ")");
 }

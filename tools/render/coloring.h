@@ -45,7 +45,7 @@ struct CellColors {
 
 struct ColoringOptions {
   double threshold = default_threshold;  ///< S_q, marked on the bar of "quality"
-  int max_ticks = 6;       ///< ticks of the colour bar, at most
+  int max_ticks = 6;                     ///< ticks of the colour bar, at most
 };
 
 /// The k-th colour of the categorical palette (cycles after 10).

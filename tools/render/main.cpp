@@ -79,11 +79,12 @@ render::PictureOptions picture_options(const Args& a) {
     throw OptionError("--size: each side must be between 16 and 16384 pixels");
   if (!a.window.empty()) {
     const render::Window w{a.window[0], a.window[1], a.window[2], a.window[3]};
-    if (!(w.x1 > w.x0 && w.y1 > w.y0))
-      throw OptionError("--window: expected x0 < x1 and y0 < y1");
+    if (!(w.x1 > w.x0 && w.y1 > w.y0)) throw OptionError("--window: expected x0 < x1 and y0 < y1");
     o.window = w;
   }
-  o.edges = a.edges ? render::Edges::on : a.no_edges ? render::Edges::off : render::Edges::automatic;
+  o.edges = a.edges      ? render::Edges::on
+            : a.no_edges ? render::Edges::off
+                         : render::Edges::automatic;
   return o;
 }
 

@@ -15,8 +15,8 @@
 #include "exodus_info.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/core/geometry.h"
-#include "hexadapt/io/material_names.h"
 #include "hexadapt/io/exodus.h"
+#include "hexadapt/io/material_names.h"
 #include "netcdf_extent.h"
 #include "time_step.h"
 

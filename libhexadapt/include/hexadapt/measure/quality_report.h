@@ -30,7 +30,7 @@ struct MeshData;
 
 struct QualityReportOptions {
   double threshold = default_threshold;  ///< S_q: cells with scaled Jacobian below it fail
-  int bins = 20;           ///< histogram bins over [-1, 1]
+  int bins = 20;                         ///< histogram bins over [-1, 1]
   int max_listed = 10;     ///< how many cells below the threshold (or impure) are listed
   MeshCheckOptions check;  ///< options of the mesh check
   std::string material_array = "material";  ///< cell array of material indices
