@@ -247,6 +247,19 @@ TEST_F(MeasureCli, DiscrepancyAgainstReference) {
   EXPECT_EQ(run(path("mesh.vtu") + " --discrepancy-field " + path("e.vtu")), 1);
 }
 
+// The reference is read as every stage reads an input grid (io::to_assigned_grid): a cell
+// that repeats a node is bad input, named with the reference's file and the cell.
+TEST_F(MeasureCli, ReferenceIsReadAsAnInputGrid) {
+  io::MeshData ref = two_material_reference();
+  ref.cells[5 * 8 + 1] = ref.cells[5 * 8];
+  io::write_mesh(ref, path("ref.vtu"));
+  io::write_mesh(two_material_mesh(), path("mesh.vtu"));
+  EXPECT_EQ(run(path("mesh.vtu") + " --reference " + path("ref.vtu")), 2);
+  const std::string err = slurp(path("stderr.txt"));
+  EXPECT_NE(err.find(path("ref.vtu")), std::string::npos) << err;
+  EXPECT_NE(err.find("cell 5"), std::string::npos) << err;
+}
+
 // Volume errors: left (8 - 6) / 6 = 1/3, right (8 - 10) / 10 = -1/5.
 TEST_F(MeasureCli, MaxVolumeErrorDecidesTheExitCode) {
   io::write_mesh(two_material_reference(), path("ref.vtu"));

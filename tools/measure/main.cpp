@@ -155,12 +155,9 @@ DiscrepancyRun measure_discrepancy(const Args& a, const cli::InputOptions& readi
   const index_t cells = mesh.n_cells() + run.reference.n_cells();
   cli::check_memory("measuring " + std::to_string(cells) + " cells of mesh and reference",
                     static_cast<double>(cells) * cli::measure_bytes_per_cell, memory_limit);
-  Fractions fractions;
-  try {
-    fractions = io::extract_fractions(run.reference, reading.fractions, nullptr, a.reference);
-  } catch (const InputError& e) {
-    rethrow_with_file(e, a.reference);
-  }
+  const Fractions fractions =
+      io::to_assigned_grid(run.reference, reading.grid(io::MaterialSource::none), a.reference)
+          .fractions;
   const CellMaterials materials =
       io::read_material_array(mesh, fractions.n_materials(), a.input, a.report.material_array);
   Timer timer;
