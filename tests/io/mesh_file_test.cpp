@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "hexadapt/core/error.h"
+#include "hexadapt/io/vtk_xml.h"
 #include "hexadapt/mesh/structured.h"
 
 namespace hexadapt::io {
@@ -69,6 +70,64 @@ TEST(MeshFile, WritesAPvtuOfOnePiece) {
   std::remove(piece.c_str());
 }
 
+// A structured grid of 3 x 2 x 5 cells with a cell and a point array.
+MeshData structured_hexes() {
+  MeshData d = from_mesh(make_hex_grid(3, 2, 5));
+  d.structured_cells = {3, 2, 5};
+  DataArray c{"vf_a", 1, ScalarType::float64, {}}, p{"height", 1, ScalarType::float32, {}};
+  for (index_t i = 0; i < d.n_cells(); ++i) c.values.push_back(0.01 * static_cast<double>(i));
+  for (const Vec3& x : d.points) p.values.push_back(x.z());
+  d.set_cell_array(c);
+  d.set_point_array(p);
+  return d;
+}
+
+// A .pvts on one process, and a .pvts of pieces cut across z, each a .vts placed by its
+// origin: both read back as the whole grid, points, cells and arrays.
+TEST(MeshFile, WritesAPvtsOfPiecesPlacedInTheWholeGrid) {
+  const MeshData d = structured_hexes();
+  const auto expect_whole = [&](const MeshData& r, const std::string& what) {
+    EXPECT_EQ(r.structured_cells, d.structured_cells) << what;
+    EXPECT_EQ(ids(r), ids(d)) << what;
+    EXPECT_EQ(r.points, d.points) << what;
+    ASSERT_NE(r.find_cell_array("vf_a"), nullptr) << what;
+    EXPECT_EQ(r.find_cell_array("vf_a")->values, d.find_cell_array("vf_a")->values) << what;
+    ASSERT_NE(r.find_point_array("height"), nullptr) << what;
+    EXPECT_EQ(r.find_point_array("height")->values, d.find_point_array("height")->values) << what;
+  };
+  const std::string one = temp_path("one.pvts");
+  write_mesh(d, one);
+  EXPECT_EQ(piece_path(one, 0), temp_path("one_0.vts"));
+  expect_whole(read_mesh(one), "one piece");
+
+  const std::string cut = temp_path("cut.pvts");
+  std::vector<StructuredPiece> pieces;
+  for (const std::array<int, 2>& layers : {std::array<int, 2>{0, 2}, {2, 3}, {3, 5}}) {
+    MeshData part = d;
+    keep_layers(part, layers, "test");
+    const std::string file = piece_path(cut, static_cast<int>(pieces.size()));
+    write_vts(part, file, {}, {0, 0, layers[0]});
+    pieces.push_back(
+        {file.substr(file.find_last_of('/') + 1), {0, 0, layers[0]}, part.structured_cells});
+  }
+  write_pvts(d, d.structured_cells, pieces, cut);
+  expect_whole(read_mesh(cut), "three pieces");
+  std::ifstream text(cut);
+  std::ostringstream xml;
+  xml << text.rdbuf();
+  EXPECT_NE(xml.str().find("WholeExtent=\"0 3 0 2 0 5\""), std::string::npos) << xml.str();
+  EXPECT_NE(xml.str().find("Extent=\"0 3 0 2 2 3\""), std::string::npos) << xml.str();
+  // A rank reads its layers only.
+  ReadOptions window;
+  window.layers = {{2, 5}};
+  MeshData part = d;
+  keep_layers(part, {2, 5}, "test");
+  EXPECT_EQ(read_mesh(cut, window).points, part.points);
+  for (const std::string& p :
+       {one, piece_path(one, 0), cut, piece_path(cut, 0), piece_path(cut, 1), piece_path(cut, 2)})
+    std::remove(p.c_str());
+}
+
 // A file larger than one read chunk, from disk (size known) and from a pipe (size unknown).
 TEST(MeshFile, ReadsLargeFilesAndPipes) {
   const MeshData d = from_mesh(make_hex_grid(16, 16, 16));
@@ -106,7 +165,8 @@ TEST(MeshFile, UnknownExtensionsListTheSupportedOnes) {
     write_mesh(small_hexes(), temp_path("out.obj"));
     FAIL() << "no error";
   } catch (const OptionError& e) {
-    EXPECT_NE(std::string(e.what()).find(".vtu .vts .pvtu .vtk"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(".vtu .vts .pvtu .pvts .vtk"), std::string::npos)
+        << e.what();
   }
   EXPECT_THROW(read_mesh(temp_path("in.stl")), OptionError);
   EXPECT_THROW(read_mesh(temp_path("no_extension")), OptionError);

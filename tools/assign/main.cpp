@@ -64,7 +64,7 @@ void add_options(CLI::App& app, Options& o) {
                  "When the correction fails, write the assignment reached so far here");
   app.add_flag("--gather", o.gather,
                "Under mpirun on several ranks: write one file of the whole grid (any format) "
-               "instead of a .vtu piece per rank and the .pvtu naming them");
+               "instead of a piece per rank (.vtu or .vts) and the .pvtu or .pvts naming them");
 }
 
 /// The input data plus the assigned grid's arrays (io::put_assignment), the majority

@@ -78,6 +78,30 @@ io::MeshData gathered(const dist::Communicator& comm, const io::MeshData& piece,
   return whole;
 }
 
+// The owned layers as .vts pieces placed in the whole grid, and the .pvts naming them.
+void write_structured_pieces(const dist::Communicator& comm, const CLI::App& app,
+                             const io::MeshData& owned, const RankInput& input,
+                             const std::string& path, const io::WriteOptions& options) {
+  const auto axis = static_cast<std::size_t>(input.shape.dim - 1);
+  std::array<int, 3> origin{0, 0, 0};
+  origin[axis] = input.slab.first_layer + owned_layers(input.slab, input.shape.dim)[0];
+  dist::Buffer mine;
+  mine.put(origin[axis]);
+  mine.put(owned.structured_cells[axis]);
+  std::vector<io::StructuredPiece> pieces;
+  int r = 0;
+  for (dist::Buffer& b : dist::all_gather(comm, mine)) {
+    io::StructuredPiece p{base_name(io::piece_path(path, r++)), {0, 0, 0}, input.shape.cells};
+    p.origin[axis] = b.get<int>();
+    p.cells[axis] = b.get<int>();
+    pieces.push_back(p);
+  }
+  on_every_rank(comm, app, [&] {
+    io::write_vts(owned, io::piece_path(path, comm.rank()), options, origin);
+    if (comm.rank() == 0) io::write_pvts(owned, input.shape.cells, pieces, path);
+  });
+}
+
 }  // namespace
 
 RankInput read_on_ranks(const dist::Communicator& comm, const CLI::App& app,
@@ -95,10 +119,11 @@ RankInput read_on_ranks(const dist::Communicator& comm, const CLI::App& app,
 }
 
 void check_rank_output(const std::string& flag, const std::string& path, bool gather) {
-  if (!gather && !path.empty() && !ends_with(path, ".pvtu"))
+  if (!gather && !path.empty() && !ends_with(path, ".pvtu") && !ends_with(path, ".pvts"))
     throw OptionError(flag + " " + path +
-                      ": on several ranks the output is one .vtu piece per rank and the .pvtu "
-                      "that names them: give a .pvtu, or --gather for one file of the whole grid");
+                      ": on several ranks the output is one piece per rank and the parallel file "
+                      "that names them: give a .pvtu (.vtu pieces) or a .pvts (.vts pieces), or "
+                      "--gather for one file of the whole grid");
 }
 
 void write_on_ranks(const dist::Communicator& comm, const CLI::App& app, io::MeshData held,
@@ -112,10 +137,12 @@ void write_on_ranks(const dist::Communicator& comm, const CLI::App& app, io::Mes
     });
     return;
   }
+  if (ends_with(path, ".pvts"))
+    return write_structured_pieces(comm, app, held, input, path, options);
   std::vector<std::string> pieces;
-  for (int r = 0; r < comm.size(); ++r) pieces.push_back(base_name(io::pvtu_piece_path(path, r)));
+  for (int r = 0; r < comm.size(); ++r) pieces.push_back(base_name(io::piece_path(path, r)));
   on_every_rank(comm, app, [&] {
-    io::write_vtu(held, io::pvtu_piece_path(path, comm.rank()), options);
+    io::write_vtu(held, io::piece_path(path, comm.rank()), options);
     if (comm.rank() == 0) io::write_pvtu(held, pieces, path);
   });
 }

@@ -122,9 +122,10 @@ StructuredShape structured_shape(const std::string& path, const ReadOptions& opt
 
 void check_mesh_output(const std::string& path) {
   const std::string ext = extension_of(path);
-  if (ext != ".vtu" && ext != ".vts" && ext != ".pvtu" && ext != ".vtk" && !is_exodus(ext))
+  if (ext != ".vtu" && ext != ".vts" && ext != ".pvtu" && ext != ".pvts" && ext != ".vtk" &&
+      !is_exodus(ext))
     throw OptionError(path + ": unknown mesh file extension " + quote_token(ext) +
-                      " (supported for writing: .vtu .vts .pvtu .vtk .exo .e .g)");
+                      " (supported for writing: .vtu .vts .pvtu .pvts .vtk .exo .e .g)");
 }
 
 void write_mesh(const MeshData& data, const std::string& path, const WriteOptions& options) {
@@ -132,10 +133,19 @@ void write_mesh(const MeshData& data, const std::string& path, const WriteOption
   const std::string ext = extension_of(path);
   if (ext == ".vtu") return write_vtu(data, path, options);
   if (ext == ".vts") return write_vts(data, path, options);
-  if (ext == ".pvtu") {  // one piece: what a job of one rank writes
-    const std::string piece = pvtu_piece_path(path, 0);
+  // Parallel files of one piece: what a job of one rank writes.
+  if (ext == ".pvtu") {
+    const std::string piece = piece_path(path, 0);
     write_vtu(data, piece, options);
     return write_pvtu(data, {std::filesystem::path(piece).filename().string()}, path);
+  }
+  if (ext == ".pvts") {
+    const std::string piece = piece_path(path, 0);
+    write_vts(data, piece, options);
+    return write_pvts(
+        data, data.structured_cells,
+        {{std::filesystem::path(piece).filename().string(), {0, 0, 0}, data.structured_cells}},
+        path);
   }
   if (ext == ".vtk") return write_vtk_legacy(data, path);
   return write_exodus(data, path, options);

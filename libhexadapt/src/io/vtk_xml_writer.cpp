@@ -214,6 +214,17 @@ void check_writable(const MeshData& d, const std::string& path) {
   d.check_array_sizes(path);
 }
 
+// A block's Extent attribute: its first and last point index per axis in the whole grid.
+std::string extent_text(const std::array<int, 3>& origin, const std::array<int, 3>& cells,
+                        int dim) {
+  std::string s;
+  for (std::size_t a = 0; a < 3; ++a) {
+    const int n = a < static_cast<std::size_t>(dim) ? cells[a] : 0;
+    s += (a ? " " : "") + std::to_string(origin[a]) + " " + std::to_string(origin[a] + n);
+  }
+  return s;
+}
+
 // True when the cells are exactly the structured block of structured_cells.
 bool is_structured(const MeshData& d) {
   const auto& n = d.structured_cells;
@@ -242,15 +253,14 @@ void write_vtu(const MeshData& data, const std::string& path, const WriteOptions
   f.write(path);
 }
 
-void write_vts(const MeshData& data, const std::string& path, const WriteOptions& options) {
+void write_vts(const MeshData& data, const std::string& path, const WriteOptions& options,
+               const std::array<int, 3>& origin) {
   check_writable(data, path);
   if (!is_structured(data))
     throw OptionError(path +
                       ": a .vts needs a structured block of cells (structured_cells "
                       "set and matching the cells); write a .vtu instead");
-  const auto& n = data.structured_cells;
-  const std::string extent = "0 " + std::to_string(n[0]) + " 0 " + std::to_string(n[1]) + " 0 " +
-                             std::to_string(data.dim == 3 ? n[2] : 0);
+  const std::string extent = extent_text(origin, data.structured_cells, data.dim);
   XmlFile f("StructuredGrid", options, largest_array(data));
   f.dataset().append_attribute("WholeExtent") = extent.c_str();
   f.add_metadata(data);
@@ -262,18 +272,27 @@ void write_vts(const MeshData& data, const std::string& path, const WriteOptions
   f.write(path);
 }
 
-std::string pvtu_piece_path(const std::string& pvtu, int piece) {
-  return pvtu.substr(0, pvtu.size() - 5) + "_" + std::to_string(piece) + ".vtu";
+std::string piece_path(const std::string& parallel, int piece) {
+  const bool structured =
+      parallel.size() > 5 && parallel.compare(parallel.size() - 5, 5, ".pvts") == 0;
+  return parallel.substr(0, parallel.size() - 5) + "_" + std::to_string(piece) +
+         (structured ? ".vts" : ".vtu");
 }
 
-void write_pvtu(const MeshData& layout, const std::vector<std::string>& pieces,
-                const std::string& path) {
+namespace {
+
+// The parallel file of `type` (PUnstructuredGrid, PStructuredGrid) with the arrays of
+// `layout` declared, naming `pieces`: each piece's file and Extent. `whole` (the WholeExtent)
+// and the Extents are empty for an unstructured grid.
+void write_parallel(const MeshData& layout, const char* type, const std::string& whole,
+                    const std::vector<std::pair<std::string, std::string>>& pieces,
+                    const std::string& path) {
   check_writable(layout, path);
   pugi::xml_document doc;
   auto decl = doc.append_child(pugi::node_declaration);
   decl.append_attribute("version") = "1.0";
   pugi::xml_node root = doc.append_child("VTKFile");
-  root.append_attribute("type") = "PUnstructuredGrid";
+  root.append_attribute("type") = type;
   root.append_attribute("version") = "1.0";
   root.append_attribute("byte_order") =
       detail::native_little_endian() ? "LittleEndian" : "BigEndian";
@@ -281,11 +300,12 @@ void write_pvtu(const MeshData& layout, const std::vector<std::string>& pieces,
   if (!layout.metadata.empty())
     doc.insert_child_before(pugi::node_comment, root)
         .set_value(detail::metadata_comment(layout.metadata).c_str());
-  pugi::xml_node grid = root.append_child("PUnstructuredGrid");
+  pugi::xml_node grid = root.append_child(type);
+  if (!whole.empty()) grid.append_attribute("WholeExtent") = whole.c_str();
   grid.append_attribute("GhostLevel") = 0;
-  const auto declare = [](pugi::xml_node parent, const char* name, ScalarType type, int comps) {
+  const auto declare = [](pugi::xml_node parent, const char* name, ScalarType t, int comps) {
     pugi::xml_node e = parent.append_child("PDataArray");
-    e.append_attribute("type") = detail::vtk_name(type);
+    e.append_attribute("type") = detail::vtk_name(t);
     e.append_attribute("Name") = name;
     e.append_attribute("NumberOfComponents") = comps;
   };
@@ -294,14 +314,35 @@ void write_pvtu(const MeshData& layout, const std::vector<std::string>& pieces,
   pugi::xml_node cd = grid.append_child("PCellData");
   for (const DataArray& a : layout.cell_data) declare(cd, a.name.c_str(), a.type, a.n_components);
   declare(grid.append_child("PPoints"), "Points", ScalarType::float64, 3);
-  for (const std::string& piece : pieces)
-    grid.append_child("Piece").append_attribute("Source") = piece.c_str();
+  for (const auto& [source, extent] : pieces) {
+    pugi::xml_node p = grid.append_child("Piece");
+    if (!extent.empty()) p.append_attribute("Extent") = extent.c_str();
+    p.append_attribute("Source") = source.c_str();
+  }
   std::ostringstream xml;
   doc.save(xml, "  ", pugi::format_indent, pugi::encoding_utf8);
   const std::string text = xml.str();
   AtomicFile file(path);
   file.stream().write(text.data(), static_cast<std::streamsize>(text.size()));
   file.commit();
+}
+
+}  // namespace
+
+void write_pvtu(const MeshData& layout, const std::vector<std::string>& pieces,
+                const std::string& path) {
+  std::vector<std::pair<std::string, std::string>> named;
+  for (const std::string& p : pieces) named.emplace_back(p, "");
+  write_parallel(layout, "PUnstructuredGrid", "", named, path);
+}
+
+void write_pvts(const MeshData& layout, const std::array<int, 3>& whole_cells,
+                const std::vector<StructuredPiece>& pieces, const std::string& path) {
+  std::vector<std::pair<std::string, std::string>> named;
+  for (const StructuredPiece& p : pieces)
+    named.emplace_back(p.file, extent_text(p.origin, p.cells, layout.dim));
+  write_parallel(layout, "PStructuredGrid", extent_text({0, 0, 0}, whole_cells, layout.dim), named,
+                 path);
 }
 
 }  // namespace hexadapt::io

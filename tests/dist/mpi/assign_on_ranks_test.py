@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """hexadapt-assign under mpirun on 2 and 3 ranks, on parallel files VTK wrote: the gathered
-file is the bytes of the run on one process and the report its figures; the .pvtu of pieces
-reads in VTK as the same cells and materials; an error in one rank's layers stops every rank
-with one message and no output.
+file is the bytes of the run on one process and the report its figures; the .pvtu and .pvts
+of pieces read in VTK as the same cells and materials, and the .pvts is read again on ranks
+as on one process; an error in one rank's layers stops every rank with one message and no
+output.
 
 usage: assign_on_ranks_test.py TOOLS_DIR WORK_DIR MPIEXEC
 """
@@ -159,6 +160,25 @@ for case in ("hex", "ghost", "quad"):
         check(pieces == serial,
               "%s on %d ranks: VTK reads other cells or materials in the .pvtu (%d cells, %d "
               "serial)" % (case, ranks, len(pieces), len(serial)))
+        # Structured pieces, each placed in the whole grid by its extent.
+        code, err = run(folder, ranks, "../%s.pvtr" % case, "-o", "slabs.pvts")
+        check(code == 0, "%s on %d ranks, .pvts: exit %d: %s" % (case, ranks, code, err))
+        check(sorted(f for f in os.listdir(path(folder)) if f.startswith("slabs")) ==
+              ["slabs.pvts"] + ["slabs_%d.vts" % r for r in range(ranks)],
+              "%s on %d ranks: not one .vts piece per rank" % (case, ranks))
+        slabs = read(folder + "/slabs.pvts", vtk.vtkXMLPStructuredGridReader)
+        whole = read(case + "_serial/out.vtu", vtk.vtkXMLUnstructuredGridReader)
+        check(slabs.GetNumberOfPoints() == whole.GetNumberOfPoints() and by_centre(slabs) == serial,
+              "%s on %d ranks: VTK reads other points, cells or materials in the .pvts"
+              % (case, ranks))
+
+# The .pvts of 3 ranks is an input a later run on ranks reads slab by slab: on 2 ranks it
+# gives the bytes of one process reading it.
+for ranks in (0, 2):
+    code, err = run("chain_%d" % ranks, ranks, "../hex_3/slabs.pvts", "-o", "out.vtu", "--gather")
+    check(code == 0, "the .pvts read again on %d ranks: exit %d: %s" % (ranks, code, err))
+check(filecmp.cmp(path("chain_0", "out.vtu"), path("chain_2", "out.vtu"), shallow=False),
+      "the .pvts read again on 2 ranks: the gathered file differs from the serial one")
 
 # A material nowhere the majority (the slab, at most 0.3 of a cell), kept: the cells it gets
 # are those of the serial run, on 2 and 3 ranks.

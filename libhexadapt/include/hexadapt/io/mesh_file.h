@@ -8,8 +8,9 @@
 // elements; element variables become cell arrays; see exodus.h). The step of a time series
 // (.pvd or Exodus) is chosen by ReadOptions::step or ::time.
 // Write: .vtu (appended binary, zlib-compressed when large), .vts (the same, for a grid read
-// from a structured data set: MeshData::structured_cells), .pvtu (one .vtu piece,
-// `<name>_0.vtu`, and the .pvtu naming it: what a job of one rank writes), legacy .vtk (binary) and
+// from a structured data set: MeshData::structured_cells), .pvtu and .pvts (one .vtu or .vts
+// piece, `<name>_0.vtu` or `<name>_0.vts`, and the parallel file naming it: what a job of one
+// rank writes), legacy .vtk (binary) and
 // Exodus II .exo .e .g (one element block per material, side and node sets; see exodus.h).
 // Writes are atomic: a temporary file in the target directory, then a rename, so a failed
 // write never leaves a half file and never clobbers an input.

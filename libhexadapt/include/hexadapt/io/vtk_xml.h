@@ -1,5 +1,5 @@
-// VTK XML files: read .vtu .vti .vtr .vts, write .vtu and .vts (VTK file format spec,
-// "XML File Formats").
+// VTK XML files: read .vtu .vti .vtr .vts, write .vtu and .vts and the parallel files that
+// name such pieces, .pvtu and .pvts (VTK file format spec, "XML File Formats").
 //
 // Reading accepts every encoding VTK, ParaView and meshio write: ascii, inline base64,
 // appended raw or base64, zlib-, LZ4- or LZMA-compressed blocks (vtkZLibDataCompressor,
@@ -8,6 +8,7 @@
 // its offset and decoded directly, so large files read at disk and zlib speed.
 #pragma once
 
+#include <array>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -68,9 +69,11 @@ MeshData read_vtk_xml(std::string_view content, const std::string& file,
 void write_vtu(const MeshData& data, const std::string& path, const WriteOptions& options = {});
 
 /// Writes a StructuredGrid (.vts) like write_vtu; needs data.structured_cells with cells
-/// exactly those of that block (a structured source). Throws OptionError when the data is
-/// not structured, IoError on write failure.
-void write_vts(const MeshData& data, const std::string& path, const WriteOptions& options = {});
+/// exactly those of that block (a structured source). `origin`: the index of the block's
+/// first cell per axis in a larger grid whose piece it is (its Extent starts there). Throws
+/// OptionError when the data is not structured, IoError on write failure.
+void write_vts(const MeshData& data, const std::string& path, const WriteOptions& options = {},
+               const std::array<int, 3>& origin = {0, 0, 0});
 
 /// Writes the parallel file (.pvtu) that names `pieces` (.vtu files, relative to its folder)
 /// as one unstructured grid, declaring the point and cell arrays of `layout` (one piece's
@@ -79,7 +82,22 @@ void write_vts(const MeshData& data, const std::string& path, const WriteOptions
 void write_pvtu(const MeshData& layout, const std::vector<std::string>& pieces,
                 const std::string& path);
 
-/// The file of piece `piece` of the .pvtu `pvtu`: `<pvtu without .pvtu>_<piece>.vtu`.
-std::string pvtu_piece_path(const std::string& pvtu, int piece);
+/// A piece of a .pvts: its .vts file (relative to the .pvts's folder), the index of its first
+/// cell per axis in the whole grid, and its cells per axis.
+struct StructuredPiece {
+  std::string file;
+  std::array<int, 3> origin{0, 0, 0};
+  std::array<int, 3> cells{0, 0, 0};
+};
+
+/// Writes the parallel file (.pvts) of a structured grid of `whole_cells` cells per axis made
+/// of `pieces` (written by write_vts with their origins), declaring the arrays of `layout`
+/// as write_pvtu does. Atomic. Throws OptionError (no cells in layout), IoError.
+void write_pvts(const MeshData& layout, const std::array<int, 3>& whole_cells,
+                const std::vector<StructuredPiece>& pieces, const std::string& path);
+
+/// The file of piece `piece` of the parallel file `parallel`: `<parallel without its
+/// extension>_<piece>.vts` for a .pvts, `.vtu` otherwise.
+std::string piece_path(const std::string& parallel, int piece);
 
 }  // namespace hexadapt::io
