@@ -102,11 +102,10 @@ TEST_F(OutputSafety, AnOutputInAMissingDirectoryStopsTheRunBeforeAnyOutput) {
 // the input here is not even a mesh file (exit 1, not 2), and nothing is written.
 TEST_F(OutputSafety, AnUnwritableMeshFormatStopsTheRunBeforeReading) {
   std::ofstream(path("junk.vtu")) << "not a mesh";
-  const std::pair<std::string, std::string> runs[] = {
-      {"generate", "disk --dims 8,8"},
-      {"assign", path("junk.vtu")},
-      {"reconstruct", path("junk.vtu")},
-      {"adapt", path("junk.vtu")}};
+  const std::pair<std::string, std::string> runs[] = {{"generate", "disk --dims 8,8"},
+                                                      {"assign", path("junk.vtu")},
+                                                      {"reconstruct", path("junk.vtu")},
+                                                      {"adapt", path("junk.vtu")}};
   for (const auto& [tool, args] : runs) {
     const ToolRun r = run(tool, args + " -o " + path("out.obj") + " --json " + path("r.json"));
     EXPECT_EQ(r.code, 1) << tool << ": " << r.err;
@@ -114,10 +113,43 @@ TEST_F(OutputSafety, AnUnwritableMeshFormatStopsTheRunBeforeReading) {
     EXPECT_FALSE(fs::exists(path("out.obj"))) << tool;
     EXPECT_FALSE(fs::exists(path("r.json"))) << tool;
   }
-  EXPECT_EQ(run("assign", path("junk.vtu") + " -o " + path("a.vtu") + " --partial " +
-                              path("p.stl"))
-                .code,
-            1);
+  EXPECT_EQ(
+      run("assign", path("junk.vtu") + " -o " + path("a.vtu") + " --partial " + path("p.stl")).code,
+      1);
+}
+
+// A .vts or .pvts holds a structured grid only: adapt's and reconstruct's meshes never are
+// one, so they refuse it before reading (the input here is not even a mesh file); assign and
+// measure refuse it once they have read an unstructured input, before the work. Each wrote
+// nothing after the whole run before.
+TEST_F(OutputSafety, AStructuredFormatForAnUnstructuredMeshStopsTheRunFirst) {
+  std::ofstream(path("junk.vtu")) << "not a mesh";
+  for (const char* tool : {"reconstruct", "adapt"})
+    for (const char* out : {"out.vts", "out.pvts"}) {
+      const ToolRun r =
+          run(tool, path("junk.vtu") + " -o " + path(out) + " --json " + path("r.json"));
+      EXPECT_EQ(r.code, 1) << tool << ": " << r.err;
+      EXPECT_NE(r.err.find("holds a structured grid, and this mesh is not one"), std::string::npos)
+          << r.err;
+      EXPECT_FALSE(fs::exists(path("r.json"))) << tool;
+    }
+  ASSERT_EQ(run("generate", "disk --dims 8,8 -o " + path("u.vtu")).code, 0);
+  ASSERT_EQ(run("generate", "disk --dims 8,8 -o " + path("s.vts")).code, 0);
+  const std::pair<std::string, std::string> after_reading[] = {
+      {"assign", path("u.vtu") + " -o " + path("a.vts")},
+      {"assign", path("u.vtu") + " -o " + path("a.vtu") + " --partial " + path("p.pvts")},
+      {"measure", path("u.vtu") + " --quality-field " + path("q.vts")},
+      {"measure",
+       path("u.vtu") + " --reference " + path("u.vtu") + " --discrepancy-field " + path("d.vts")}};
+  for (const auto& [tool, args] : after_reading) {
+    const ToolRun r = run(tool, args + " --json " + path("r.json"));
+    EXPECT_EQ(r.code, 1) << tool << " " << args << ": " << r.err;
+    EXPECT_NE(r.err.find("holds a structured grid"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(path("r.json"))) << tool << " " << args;
+  }
+  // A structured input keeps its structure through assign.
+  EXPECT_EQ(run("assign", path("s.vts") + " -o " + path("a.pvts")).code, 0);
+  EXPECT_TRUE(fs::exists(path("a_0.vts")));
 }
 
 TEST_F(OutputSafety, DirectoriesFifosAndDevicesAsInputsAreBadInput) {
@@ -138,7 +170,8 @@ TEST_F(OutputSafety, DirectoriesFifosAndDevicesAsInputsAreBadInput) {
 // SIGTERM at that moment must remove the temporary file and end the tool by SIGTERM.
 TEST_F(OutputSafety, SigtermDuringTheWritesLeavesNoTemporaryFile) {
   ASSERT_EQ(::mkfifo(path("fifo").c_str(), 0600), 0);
-  const std::string tool = std::string(HEXADAPT_TOOLS_DIR) + "/hexadapt-generate disk --dims 8,8 -q -o " + path("out.vtu") +
+  const std::string tool = std::string(HEXADAPT_TOOLS_DIR) +
+                           "/hexadapt-generate disk --dims 8,8 -q -o " + path("out.vtu") +
                            " --json " + path("fifo");
   const std::string script = tool + " & p=$!; for i in $(seq 300); do ls " + path(".out.vtu.") +
                              "*.tmp >/dev/null 2>&1 && break; sleep 0.1; done; kill -TERM $p; "

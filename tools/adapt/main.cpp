@@ -256,7 +256,7 @@ int refuse_bad_input(const cli::CommonOptions& common, Json& report, const Phase
 
 int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& common) {
   cli::check_files({{"input", args.input}, {"--model", args.model}},
-                   {{"-o", common.output, true}, {"--json", common.json}});
+                   {{"-o", common.output, true, true}, {"--json", common.json}});
   AdaptOptions options = args.options;
   options.method = parse_adapt_method(args.method);
   options.layers = parse_layer_strategy(args.layers);

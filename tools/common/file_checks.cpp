@@ -112,7 +112,7 @@ void check_files(const std::vector<FileArg>& inputs, const std::vector<FileArg>&
   check_clashes(inputs, outputs);
   for (const FileArg& out : outputs) {
     if (skipped(out)) continue;
-    if (out.mesh) io::check_mesh_output(out.path);
+    if (out.mesh) io::check_mesh_output(out.path, !out.unstructured);
     check_output(out);
   }
 }

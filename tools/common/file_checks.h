@@ -14,6 +14,9 @@ struct FileArg {
   std::string option;
   std::string path;
   bool mesh = false;  ///< an output written by io::write_mesh: its extension must be one it writes
+  /// A mesh output that is never a structured grid (adapt's, reconstruct's): .vts and .pvts
+  /// are refused.
+  bool unstructured = false;
 };
 
 /// Throws OptionError when an output names the same file as an input or another output (same

@@ -90,6 +90,11 @@ void add_options(CLI::App& app, Args& a) {
   cli::add_input_options(app, a.in);
 }
 
+// Whether `data` is a structured grid, which a .vts can hold.
+bool structured(const io::MeshData& data) {
+  return data.structured_cells[0] > 0;
+}
+
 // Library errors about the data name no file: add the input's name.
 [[noreturn]] void rethrow_with_file(const InputError& e, const std::string& file) {
   if (!e.file().empty()) throw e;
@@ -152,6 +157,8 @@ DiscrepancyRun measure_discrepancy(const Args& a, const cli::InputOptions& readi
   run.reference = cli::timed_phase(times, bar, "read_reference", [&] {
     return io::read_mesh(a.reference, reading.read_options());
   });
+  if (!a.discrepancy_field.empty())
+    io::check_mesh_output(a.discrepancy_field, structured(run.reference));
   const index_t cells = mesh.n_cells() + run.reference.n_cells();
   cli::check_memory("measuring " + std::to_string(cells) + " cells of mesh and reference",
                     static_cast<double>(cells) * cli::measure_bytes_per_cell, memory_limit);
@@ -223,13 +230,14 @@ int measure(const CLI::App& app, const cli::CommonOptions& common, const Args& a
       throw OptionError("--discrepancy-field needs --reference (the grid the field lives on)");
   }
   cli::check_files({{"input", a.input}, {"--reference", a.reference}},
-                   {{"--quality-field", a.quality_field},
-                    {"--discrepancy-field", a.discrepancy_field},
+                   {{"--quality-field", a.quality_field, true},
+                    {"--discrepancy-field", a.discrepancy_field, true},
                     {"--json", common.json}});
   PhaseTimes times;
   const Progress bar = cli::terminal_progress(common);
   const io::MeshData data = cli::timed_phase(
       times, bar, "read", [&] { return io::read_mesh(a.input, a.in.read_options()); });
+  if (!a.quality_field.empty()) io::check_mesh_output(a.quality_field, structured(data));
   cli::check_memory("measuring " + std::to_string(data.n_cells()) + " cells",
                     static_cast<double>(data.n_cells()) * cli::measure_bytes_per_cell,
                     common.memory_limit());

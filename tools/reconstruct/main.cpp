@@ -189,7 +189,7 @@ void add_options(CLI::App& app, Options& o, cli::CommonOptions& common) {
 int run_reconstruct(const CLI::App& app, Options& o, const cli::CommonOptions& common) {
   o.lib.mip.seed = o.lib.annealing.seed;
   cli::check_files({{"input", o.input}},
-                   {{"-o", common.output, true},
+                   {{"-o", common.output, true, true},
                     {"--model", o.model.empty() ? "" : model_stem(o.model) + ".vtk"},
                     {"--json", common.json}});
   const Timer read;

@@ -120,8 +120,12 @@ StructuredShape structured_shape(const std::string& path, const ReadOptions& opt
   return {data.dim, data.structured_cells};
 }
 
-void check_mesh_output(const std::string& path) {
+void check_mesh_output(const std::string& path, bool structured) {
   const std::string ext = extension_of(path);
+  if (!structured && (ext == ".vts" || ext == ".pvts"))
+    throw OptionError(path + ": a " + ext +
+                      " holds a structured grid, and this mesh is not one: give a .vtu, .pvtu, "
+                      ".vtk or .exo");
   if (ext != ".vtu" && ext != ".vts" && ext != ".pvtu" && ext != ".pvts" && ext != ".vtk" &&
       !is_exodus(ext))
     throw OptionError(path + ": unknown mesh file extension " + quote_token(ext) +

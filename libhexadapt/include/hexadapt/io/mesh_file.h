@@ -68,8 +68,10 @@ ExodusSets parse_exodus_sets(const std::string& text);
 
 /// Throws InputError (malformed content, with file and place), IoError (cannot open/read).
 MeshData read_mesh(const std::string& path, const ReadOptions& options = {});
-/// Throws OptionError when write_mesh does not write files with path's extension.
-void check_mesh_output(const std::string& path);
+/// Throws OptionError when write_mesh does not write files with path's extension, or when the
+/// data to be written is not `structured` (a block of a structured grid) and the extension
+/// is one of a structured grid's (.vts, .pvts).
+void check_mesh_output(const std::string& path, bool structured = true);
 /// Throws IoError, or OptionError for an unknown extension.
 void write_mesh(const MeshData& data, const std::string& path, const WriteOptions& options = {});
 
