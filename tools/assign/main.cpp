@@ -262,7 +262,7 @@ int run_assign(const CLI::App& app, Options& o) {
   io::MeshData data = io::read_mesh(o.input, o.in.read_options());
   // The output is the input's grid: a .vts needs a structured input.
   for (const std::string& out : {o.common.output, o.partial})
-    if (!out.empty()) io::check_mesh_output(out, data.structured_cells[0] > 0);
+    if (!out.empty()) io::check_mesh_output(out, data.is_structured());
   cli::check_memory("assigning " + std::to_string(data.n_cells()) + " cells",
                     static_cast<double>(data.n_cells()) * cli::assign_bytes_per_cell,
                     o.common.memory_limit());

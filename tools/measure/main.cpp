@@ -90,11 +90,6 @@ void add_options(CLI::App& app, Args& a) {
   cli::add_input_options(app, a.in);
 }
 
-// Whether `data` is a structured grid, which a .vts can hold.
-bool structured(const io::MeshData& data) {
-  return data.structured_cells[0] > 0;
-}
-
 // Library errors about the data name no file: add the input's name.
 [[noreturn]] void rethrow_with_file(const InputError& e, const std::string& file) {
   if (!e.file().empty()) throw e;
@@ -158,7 +153,7 @@ DiscrepancyRun measure_discrepancy(const Args& a, const cli::InputOptions& readi
     return io::read_mesh(a.reference, reading.read_options());
   });
   if (!a.discrepancy_field.empty())
-    io::check_mesh_output(a.discrepancy_field, structured(run.reference));
+    io::check_mesh_output(a.discrepancy_field, run.reference.is_structured());
   const index_t cells = mesh.n_cells() + run.reference.n_cells();
   cli::check_memory("measuring " + std::to_string(cells) + " cells of mesh and reference",
                     static_cast<double>(cells) * cli::measure_bytes_per_cell, memory_limit);
@@ -237,7 +232,7 @@ int measure(const CLI::App& app, const cli::CommonOptions& common, const Args& a
   const Progress bar = cli::terminal_progress(common);
   const io::MeshData data = cli::timed_phase(
       times, bar, "read", [&] { return io::read_mesh(a.input, a.in.read_options()); });
-  if (!a.quality_field.empty()) io::check_mesh_output(a.quality_field, structured(data));
+  if (!a.quality_field.empty()) io::check_mesh_output(a.quality_field, data.is_structured());
   cli::check_memory("measuring " + std::to_string(data.n_cells()) + " cells",
                     static_cast<double>(data.n_cells()) * cli::measure_bytes_per_cell,
                     common.memory_limit());

@@ -113,7 +113,7 @@ StructuredShape structured_shape(const std::string& path, const ReadOptions& opt
   ReadOptions whole = options;
   whole.layers.reset();
   const MeshData data = read_mesh(path, whole);
-  if (data.dim == 0 || data.structured_cells[0] == 0)
+  if (!data.is_structured())
     throw InputError(path, "",
                      "not a structured grid (.vti .vtr .vts, their parallel forms "
                      ".pvti .pvtr .pvts, or a structured .vtk)");

@@ -64,6 +64,8 @@ struct MeshData {
                : static_cast<index_t>(cells.size() / static_cast<std::size_t>(nodes_per_cell()));
   }
   index_t n_points() const { return static_cast<index_t>(points.size()); }
+  /// The data came from a structured data set (structured_cells set), as a .vts can hold.
+  bool is_structured() const { return dim != 0 && structured_cells[0] > 0; }
 
   const DataArray* find_cell_array(const std::string& name) const;
   const DataArray* find_point_array(const std::string& name) const;
