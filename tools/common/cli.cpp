@@ -163,7 +163,8 @@ namespace {
 // The flag of an Options field (a nested one by its path, "cavity.range"): its name with
 // dashes for '_' and '.', or where the two differ, this.
 const std::map<std::string, std::string, std::less<>> flag_names = {
-    {"void_material", "void"}, {"move.steps", "steps"}, {"move.drag", "drag"}};
+    {"void_material", "void"}, {"move.steps", "steps"}, {"move.drag", "drag"},
+    {"extract_model", "model"}};
 
 std::string flag_of(const CLI::App& app, std::string_view field) {
   if (field.empty() ||

@@ -1,6 +1,5 @@
 #include "hexadapt/assign/assign.h"
 
-#include <limits>
 #include <variant>
 
 #include "hexadapt/core/error.h"
@@ -8,28 +7,6 @@
 #include "hexadapt/mesh/unit_frame.h"
 
 namespace hexadapt::assign {
-
-namespace {
-
-/// The frame of the whole distributed mesh (far_unit_frame), from every rank's box.
-template <class M>
-UnitFrame far_unit_frame(const M& mesh, const dist::Communicator& comm) {
-  if (comm.size() == 1) return hexadapt::far_unit_frame(mesh);
-  Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
-  for (NodeId n : id_range<NodeId>(mesh.n_nodes())) {
-    low = low.cwiseMin(mesh.point(n));
-    high = high.cwiseMax(mesh.point(n));
-  }
-  std::vector<double> box;
-  for (const Vec3& p : {low, high}) box.insert(box.end(), p.data(), p.data() + 3);
-  const std::vector<double> all = dist::all_gather_values(comm, box);
-  std::vector<Vec3> corners;
-  for (std::size_t i = 0; i + 2 < all.size(); i += 3)
-    corners.emplace_back(all[i], all[i + 1], all[i + 2]);
-  return hexadapt::far_unit_frame(corners);
-}
-
-}  // namespace
 
 template <class M>
 AssignResult assign_materials(const M& mesh, const Fractions& fractions,

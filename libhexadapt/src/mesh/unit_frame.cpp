@@ -64,6 +64,37 @@ UnitFrame far_unit_frame(const M& mesh) {
   return only_far(unit_frame(mesh));
 }
 
+namespace {
+
+// The low and high corners of every rank's points, in rank order.
+template <class M>
+std::vector<Vec3> rank_boxes(const M& mesh, const dist::Communicator& comm) {
+  Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
+  for (NodeId n : id_range<NodeId>(mesh.n_nodes())) {
+    low = low.cwiseMin(mesh.point(n));
+    high = high.cwiseMax(mesh.point(n));
+  }
+  std::vector<double> box;
+  for (const Vec3& p : {low, high}) box.insert(box.end(), p.data(), p.data() + 3);
+  const std::vector<double> all = dist::all_gather_values(comm, box);
+  std::vector<Vec3> corners;
+  for (std::size_t i = 0; i + 2 < all.size(); i += 3)
+    corners.emplace_back(all[i], all[i + 1], all[i + 2]);
+  return corners;
+}
+
+}  // namespace
+
+template <class M>
+UnitFrame unit_frame(const M& mesh, const dist::Communicator& comm) {
+  return comm.size() == 1 ? unit_frame(mesh) : unit_frame(rank_boxes(mesh, comm));
+}
+
+template <class M>
+UnitFrame far_unit_frame(const M& mesh, const dist::Communicator& comm) {
+  return comm.size() == 1 ? far_unit_frame(mesh) : far_unit_frame(rank_boxes(mesh, comm));
+}
+
 template <class M>
 M to_local(const M& mesh, const UnitFrame& frame) {
   if (frame.is_identity()) return mesh;
@@ -80,6 +111,10 @@ template UnitFrame unit_frame(const QuadMesh&);
 template UnitFrame unit_frame(const HexMesh&);
 template UnitFrame far_unit_frame(const QuadMesh&);
 template UnitFrame far_unit_frame(const HexMesh&);
+template UnitFrame unit_frame(const QuadMesh&, const dist::Communicator&);
+template UnitFrame unit_frame(const HexMesh&, const dist::Communicator&);
+template UnitFrame far_unit_frame(const QuadMesh&, const dist::Communicator&);
+template UnitFrame far_unit_frame(const HexMesh&, const dist::Communicator&);
 template QuadMesh to_local(const QuadMesh&, const UnitFrame&);
 template HexMesh to_local(const HexMesh&, const UnitFrame&);
 template QuadMesh to_world(const QuadMesh&, const UnitFrame&);

@@ -5,6 +5,7 @@
 
 #include "hexadapt/core/error.h"
 #include "hexadapt/core/parallel.h"
+#include "hexadapt/dist/communicator.h"
 
 namespace hexadapt::reconstruct {
 
@@ -59,6 +60,33 @@ class Greedy {
   }
 
   index_t n_free_blocks() const { return static_cast<index_t>(slot_of_block_.size()); }
+  index_t block_of_slot(index_t slot) const { return slot_of_block_[static_cast<std::size_t>(slot)]; }
+  /// The slot of a free block, -1 for a fixed one.
+  index_t slot_of_block(index_t b) const { return free_index_[static_cast<std::size_t>(b)]; }
+
+  /// A block's whole state: its pixels' labels and fraction vectors, and what it owes.
+  void pack(index_t slot, dist::Buffer& out) const {
+    const auto [ppb, nm] = sizes();
+    const auto s = static_cast<std::size_t>(slot);
+    out.put_values(slot_label_.data() + s * ppb, ppb);
+    out.put_values(vf_.data() + s * ppb * nm, ppb * nm);
+    out.put_values(owed_.data() + s * nm, nm);
+  }
+  std::size_t packed_bytes() const {
+    const auto [ppb, nm] = sizes();
+    return ppb * sizeof(int) + (ppb * nm + nm) * sizeof(double);
+  }
+  /// Takes a block's state from pack().
+  void unpack(index_t slot, dist::Buffer& in) {
+    const auto [ppb, nm] = sizes();
+    const auto s = static_cast<std::size_t>(slot);
+    in.get_values(slot_label_.data() + s * ppb, ppb);
+    in.get_values(vf_.data() + s * ppb * nm, ppb * nm);
+    in.get_values(owed_.data() + s * nm, nm);
+    const std::int64_t first = px_.first_pixel(block_of_slot(slot));
+    for (std::size_t i = 0; i < ppb; ++i)
+      px_.set_label(first + static_cast<std::int64_t>(i), slot_label_[s * ppb + i]);
+  }
 
   void diffuse(int sweeps) {
     const std::int64_t n = static_cast<std::int64_t>(slot_of_block_.size()) * px_.pixels_per_block();
@@ -129,6 +157,9 @@ class Greedy {
   // A pixel's volume in units of its block's first pixel (when that one has a volume): every
   // comparison of volumes stays inside one block, and in these units the pixels of an affine
   // cell weigh exactly 1, so the choices do not depend on the unit or the place of the grid.
+  std::pair<std::size_t, std::size_t> sizes() const {
+    return {static_cast<std::size_t>(px_.pixels_per_block()), static_cast<std::size_t>(nm_)};
+  }
   double weight(std::int64_t p) const {
     const double unit = px_.volume(px_.first_pixel(px_.pixel_block(p)));
     return unit > 0 ? px_.volume(p) / unit : px_.volume(p);
@@ -207,25 +238,104 @@ class Greedy {
   std::vector<int> slot_label_;
 };
 
+// The free blocks a rank holds but another owns change as their owner assigns them: after
+// every round each rank sends the state of its owned free blocks that other ranks hold, and
+// takes that of its ghost ones, with the count of pixels it fixed. On one rank it only counts.
+class GhostRefresh {
+ public:
+  GhostRefresh(const Greedy& g, const PixelMesh& px, const dist::Distribution& where)
+      : px_(px), where_(where) {
+    owned_.resize(static_cast<std::size_t>(g.n_free_blocks()));
+    for (index_t s = 0; s < g.n_free_blocks(); ++s)
+      owned_[static_cast<std::size_t>(s)] = where.block.owns(px.block_cell(g.block_of_slot(s)));
+    if (where.comm.size() == 1) return;
+    const dist::Block& mine = where.block;
+    const std::vector<std::int64_t> held = dist::all_gather_values(
+        where.comm, std::vector<std::int64_t>{mine.cell_offset, mine.cell_offset + mine.held_cells});
+    for (index_t s = 0; s < g.n_free_blocks(); ++s) {
+      if (!owned_[static_cast<std::size_t>(s)]) continue;
+      const std::int64_t id = mine.global(px.block_cell(g.block_of_slot(s)));
+      for (int r = 0; r < where.comm.size(); ++r)
+        if (r != where.comm.rank() && id >= held[2 * static_cast<std::size_t>(r)] &&
+            id < held[2 * static_cast<std::size_t>(r) + 1]) {
+          shared_.push_back(s);
+          break;
+        }
+    }
+  }
+
+  bool owned(index_t slot) const { return owned_[static_cast<std::size_t>(slot)]; }
+
+  /// Exchanges the shared blocks' states; returns the sum over the ranks of `fixed`.
+  std::int64_t operator()(Greedy& g, std::int64_t fixed) const {
+    if (where_.comm.size() == 1) return fixed;
+    dist::Buffer out;
+    out.put(fixed);
+    out.put(static_cast<std::uint64_t>(shared_.size()));
+    for (index_t s : shared_) {
+      out.put(where_.block.global(px_.block_cell(g.block_of_slot(s))));
+      g.pack(s, out);
+    }
+    std::int64_t sum = 0;
+    for (dist::Buffer& in : dist::all_gather(where_.comm, out)) {
+      sum += in.get<std::int64_t>();
+      const auto n = in.get<std::uint64_t>();
+      for (std::uint64_t i = 0; i < n; ++i) {
+        const CellId c = where_.block.local_cell(in.get<std::int64_t>());
+        if (!c.valid() || where_.block.owns(c)) {
+          in.skip(g.packed_bytes());
+          continue;
+        }
+        const index_t b = px_.cell_block(c);
+        if (b < 0 || g.slot_of_block(b) < 0)
+          throw InternalError("greedy: a mixed cell held by two ranks is not free on both");
+        g.unpack(g.slot_of_block(b), in);
+      }
+    }
+    return sum;
+  }
+
+ private:
+  const PixelMesh& px_;
+  const dist::Distribution& where_;
+  std::vector<bool> owned_;
+  std::vector<index_t> shared_;
+};
+
 }  // namespace
 
 double greedy_bytes_per_free_pixel(int n_materials, int dim) {
   return 16.0 * n_materials + 16.0 * dim;
 }
 
+int greedy_ghost_layers(int nsub, const GreedyOptions& options) {
+  const int reach = (std::max(0, options.diffusion_sweeps) + nsub - 1) / std::max(1, nsub);
+  return std::max(1, reach) + 1;
+}
+
 GreedyResult greedy_assign(PixelMesh& pixels, const Fractions& fractions,
-                           const GreedyOptions& options) {
+                           const GreedyOptions& options, const dist::Distribution& where) {
   if (!(options.threshold_step > 0 && options.threshold_step <= 1))
     throw OptionError("greedy threshold step must be in (0, 1]");
   if (options.rounds_per_threshold < 1 || options.diffusion_sweeps < 0)
     throw OptionError("greedy: rounds per threshold >= 1 and diffusion sweeps >= 0");
   Greedy g(pixels, fractions);
+  const GhostRefresh refresh(g, pixels, where);
   GreedyResult result;
   const index_t nb = g.n_free_blocks();
   std::vector<std::int64_t> fixed(static_cast<std::size_t>(nb));
+  // Pixels fixed (or placed) in the owned blocks, summed over the ranks.
+  const auto owned_sum = [&] {
+    std::int64_t n = 0;
+    for (index_t s = 0; s < nb; ++s)
+      if (refresh.owned(s)) n += fixed[static_cast<std::size_t>(s)];
+    return n;
+  };
   double threshold = 1.0;
   int rounds_here = 0;
-  std::int64_t left = static_cast<std::int64_t>(nb) * pixels.pixels_per_block();
+  std::int64_t owned_free = 0;
+  for (index_t s = 0; s < nb; ++s) owned_free += refresh.owned(s) ? pixels.pixels_per_block() : 0;
+  std::int64_t left = dist::sum_in_rank_order(where.comm, owned_free);
   while (threshold > 0 && left > 0) {
     ++result.rounds;
     g.diffuse(options.diffusion_sweeps);
@@ -233,7 +343,7 @@ GreedyResult greedy_assign(PixelMesh& pixels, const Fractions& fractions,
     parallel_for(nb, [&](std::int64_t s) {
       fixed[static_cast<std::size_t>(s)] = g.fix(static_cast<index_t>(s), threshold);
     });
-    const std::int64_t n = std::accumulate(fixed.begin(), fixed.end(), std::int64_t{0});
+    const std::int64_t n = refresh(g, owned_sum());
     left -= n;
     if (n == 0 || ++rounds_here >= options.rounds_per_threshold) {
       threshold -= options.threshold_step;
@@ -241,8 +351,14 @@ GreedyResult greedy_assign(PixelMesh& pixels, const Fractions& fractions,
     }
   }
   parallel_for(nb, [&](std::int64_t s) { fixed[static_cast<std::size_t>(s)] = g.finish(static_cast<index_t>(s)); });
-  result.fallback_pixels = std::accumulate(fixed.begin(), fixed.end(), std::int64_t{0});
+  result.fallback_pixels = dist::sum_in_rank_order(where.comm, owned_sum());
   return result;
+}
+
+GreedyResult greedy_assign(PixelMesh& pixels, const Fractions& fractions,
+                           const GreedyOptions& options) {
+  return greedy_assign(pixels, fractions, options,
+                       {dist::serial(), dist::Block::whole(pixels.n_cells(), 0)});
 }
 
 }  // namespace hexadapt::reconstruct

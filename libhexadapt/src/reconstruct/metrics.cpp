@@ -9,8 +9,13 @@
 namespace hexadapt::reconstruct {
 
 std::int64_t edgecut(const PixelMesh& pixels) {
+  return edgecut(pixels, {dist::serial(), dist::Block::whole(pixels.n_cells(), 0)});
+}
+
+std::int64_t edgecut(const PixelMesh& pixels, const dist::Distribution& where) {
   std::vector<std::int64_t> per_block(static_cast<std::size_t>(pixels.n_blocks()), 0);
   parallel_for(pixels.n_blocks(), [&](std::int64_t b) {
+    if (!where.block.owns(pixels.block_cell(static_cast<index_t>(b)))) return;
     std::int64_t cut = 0;
     for (std::int64_t p = pixels.first_pixel(static_cast<index_t>(b));
          p < pixels.first_pixel(static_cast<index_t>(b + 1)); ++p)
@@ -20,7 +25,8 @@ std::int64_t edgecut(const PixelMesh& pixels) {
       }
     per_block[static_cast<std::size_t>(b)] = cut;
   });
-  return std::accumulate(per_block.begin(), per_block.end(), std::int64_t{0});
+  return dist::sum_in_rank_order(
+      where.comm, std::accumulate(per_block.begin(), per_block.end(), std::int64_t{0}));
 }
 
 std::vector<double> block_discrepancy(const PixelMesh& pixels, const Fractions& fractions) {
@@ -44,8 +50,16 @@ std::vector<double> block_discrepancy(const PixelMesh& pixels, const Fractions& 
 }
 
 double discrepancy(const PixelMesh& pixels, const Fractions& fractions) {
+  return discrepancy(pixels, fractions, {dist::serial(), dist::Block::whole(pixels.n_cells(), 0)});
+}
+
+double discrepancy(const PixelMesh& pixels, const Fractions& fractions,
+                   const dist::Distribution& where) {
   const auto d = block_discrepancy(pixels, fractions);
-  return std::accumulate(d.begin(), d.end(), 0.0);
+  ExactSum sum;
+  for (index_t b = 0; b < pixels.n_blocks(); ++b)
+    if (where.block.owns(pixels.block_cell(b))) sum.add(d[static_cast<std::size_t>(b)]);
+  return dist::exact_sum(where.comm, sum);
 }
 
 std::vector<int> largest_remainder_counts(const PixelMesh& pixels, const Fractions& fractions,

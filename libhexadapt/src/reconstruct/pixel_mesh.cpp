@@ -89,11 +89,9 @@ Vec3 PixelMesh::centre(std::int64_t p) const {
   return lattice_point(pixel_block(p), {{L[0] + 0.5, L[1] + 0.5, dim_ == 3 ? L[2] + 0.5 : 0.0}});
 }
 
-namespace {
+int default_nsub(int dim) { return dim == 3 ? 4 : 10; }
 
-int default_nsub(int dim) {
-  return dim == 3 ? 4 : 10;
-}
+namespace {
 
 template <class M>
 void check_inputs(const M& mesh, const Fractions& f, const CellMaterials& assignment) {
@@ -143,28 +141,39 @@ std::string megabytes(double bytes) {
 
 namespace {
 
-template <class M>
-PixelPlan plan_of(const M& mesh, const std::vector<std::uint8_t>& pix,
-                  const PixelOptions& options) {
+// The plan of n_blocks pixelated cells, n_free_blocks of them mixed, in a mesh of n_cells.
+PixelPlan counted_plan(int dim, int nsub, std::int64_t n_cells, index_t n_blocks,
+                       index_t n_free_blocks, const PixelOptions& options) {
   PixelPlan plan;
-  plan.dim = M::dim;
-  plan.nsub = options.nsub == 0 ? default_nsub(M::dim) : options.nsub;
-  if (plan.nsub < 1 || plan.nsub > 64)
-    throw OptionError("nsub must be in [1, 64], got " + std::to_string(plan.nsub));
-  for (auto v : pix) {
-    plan.n_blocks += v ? 1 : 0;
-    plan.n_free_blocks += v == 2 ? 1 : 0;
-  }
+  plan.dim = dim;
+  plan.nsub = nsub;
+  plan.n_blocks = n_blocks;
+  plan.n_free_blocks = n_free_blocks;
   std::int64_t ppb = plan.nsub;
-  for (int a = 1; a < M::dim; ++a) ppb *= plan.nsub;
+  for (int a = 1; a < dim; ++a) ppb *= plan.nsub;
   plan.n_pixels = ppb * plan.n_blocks;
   plan.n_free_pixels = ppb * plan.n_free_blocks;
-  const double per_block = 4.0 + 1.0 + 24.0 * M::nodes_per_cell + 8.0 * M::faces_per_cell;
+  const int nodes_per_cell = 1 << dim, faces_per_cell = 2 * dim;
+  const double per_block = 4.0 + 1.0 + 24.0 * nodes_per_cell + 8.0 * faces_per_cell;
   const double per_pixel = 8.0 + 4.0 + options.output_bytes_per_pixel;
-  plan.bytes = 4.0 * mesh.n_cells() + per_block * plan.n_blocks +
+  plan.bytes = 4.0 * static_cast<double>(n_cells) + per_block * plan.n_blocks +
                per_pixel * static_cast<double>(plan.n_pixels) +
                options.method_bytes_per_free_pixel * static_cast<double>(plan.n_free_pixels);
   return plan;
+}
+
+template <class M>
+PixelPlan plan_of(const M& mesh, const std::vector<std::uint8_t>& pix,
+                  const PixelOptions& options) {
+  const int nsub = options.nsub == 0 ? default_nsub(M::dim) : options.nsub;
+  if (nsub < 1 || nsub > 64)
+    throw OptionError("nsub must be in [1, 64], got " + std::to_string(nsub));
+  index_t n_blocks = 0, n_free_blocks = 0;
+  for (auto v : pix) {
+    n_blocks += v ? 1 : 0;
+    n_free_blocks += v == 2 ? 1 : 0;
+  }
+  return counted_plan(M::dim, nsub, mesh.n_cells(), n_blocks, n_free_blocks, options);
 }
 
 // Parallelepiped cells (every Cartesian and rectilinear cell) split into equal pixels.
@@ -199,6 +208,20 @@ PixelPlan plan_pixels(const M& mesh, const Fractions& fractions, const CellMater
                       const PixelOptions& options) {
   check_inputs(mesh, fractions, assignment);
   return plan_of(mesh, pixelated_cells(mesh, fractions), options);
+}
+
+PixelPlan whole_plan(const PixelMesh& pixels, const PixelOptions& options,
+                     const dist::Distribution& where) {
+  std::int64_t counts[2] = {0, 0};
+  for (index_t b = 0; b < pixels.n_blocks(); ++b)
+    if (where.block.owns(pixels.block_cell(b))) {
+      ++counts[0];
+      counts[1] += pixels.block_free(b) ? 1 : 0;
+    }
+  const std::int64_t owned = where.block.owned_cell_end - where.block.owned_cell_first;
+  return counted_plan(pixels.dim(), pixels.nsub(), dist::sum_in_rank_order(where.comm, owned),
+                      static_cast<index_t>(dist::sum_in_rank_order(where.comm, counts[0])),
+                      static_cast<index_t>(dist::sum_in_rank_order(where.comm, counts[1])), options);
 }
 
 template <class M>

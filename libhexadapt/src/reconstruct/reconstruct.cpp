@@ -44,18 +44,21 @@ double method_bytes(Method m, int n_materials, int dim) {
   return 0;
 }
 
+// Exact sums over the owned cells: the same bits for any split over ranks.
 template <class M>
 double unpixelated_discrepancy(const M& mesh, const PixelMesh& px, const Fractions& f,
-                               const CellMaterials& assignment, double* domain_volume) {
-  double d = 0, total = 0;
-  for (CellId c : id_range<CellId>(mesh.n_cells())) {
+                               const CellMaterials& assignment, const dist::Distribution& where,
+                               double* domain_volume) {
+  ExactSum d, total;
+  for (index_t i = where.block.owned_cell_first; i < where.block.owned_cell_end; ++i) {
+    const CellId c(i);
     const double v = mesh.cell_volume(c);
-    total += v;
+    total.add(v);
     if (px.cell_block(c) >= 0) continue;
-    d += 2 * (1 - f(c, assignment[c])) * v;  // pure cells: 0 or 2 V
+    d.add(2 * (1 - f(c, assignment[c])) * v);  // pure cells: 0 or 2 V
   }
-  *domain_volume = total;
-  return d;
+  *domain_volume = dist::exact_sum(where.comm, total);
+  return dist::exact_sum(where.comm, d);
 }
 
 // Every length, area and volume of a reconstruction made in `frame` back in the grid's units.
@@ -74,20 +77,22 @@ void to_world(Reconstruction& out, const UnitFrame& frame, int dim) {
 template <class M>
 Reconstruction reconstruct_in_frame(const M& mesh, const Fractions& fractions,
                                     const CellMaterials& assignment,
-                                    const ReconstructOptions& options) {
+                                    const ReconstructOptions& options,
+                                    const dist::Distribution& where) {
   Reconstruction out;
   ReconstructResult& r = out.result;
   PixelOptions po = options.pixels;
   po.method_bytes_per_free_pixel += method_bytes(options.method, fractions.n_materials(), M::dim);
   Timer t;
   if (options.progress) options.progress("pixels", 0);
-  out.pixels = build_pixel_mesh(mesh, fractions, assignment, po, &r.plan);
+  out.pixels = build_pixel_mesh(mesh, fractions, assignment, po);
+  r.plan = whole_plan(out.pixels, po, where);
   r.times.emplace_back("pixels", t.seconds());
   t.restart();
   if (options.progress) options.progress(to_string(options.method), 0);
   switch (options.method) {
     case Method::greedy:
-      r.greedy = greedy_assign(out.pixels, fractions, options.greedy);
+      r.greedy = greedy_assign(out.pixels, fractions, options.greedy, where);
       break;
     case Method::annealing:
       r.annealing = annealing_assign(out.pixels, fractions, options.annealing);
@@ -102,10 +107,10 @@ Reconstruction reconstruct_in_frame(const M& mesh, const Fractions& fractions,
   }
   r.times.emplace_back(to_string(options.method), t.seconds());
   t.restart();
-  r.edgecut = edgecut(out.pixels);
-  r.discrepancy = discrepancy(out.pixels, fractions);
+  r.edgecut = edgecut(out.pixels, where);
+  r.discrepancy = discrepancy(out.pixels, fractions, where);
   r.unpixelated_discrepancy =
-      unpixelated_discrepancy(mesh, out.pixels, fractions, assignment, &r.domain_volume);
+      unpixelated_discrepancy(mesh, out.pixels, fractions, assignment, where, &r.domain_volume);
   if (r.domain_volume > 0)
     r.relative_discrepancy = (r.discrepancy + r.unpixelated_discrepancy) / r.domain_volume;
   r.times.emplace_back("metrics", t.seconds());
@@ -123,17 +128,32 @@ Reconstruction reconstruct_in_frame(const M& mesh, const Fractions& fractions,
 
 template <class M>
 Reconstruction reconstruct(const M& mesh, const Fractions& fractions,
-                           const CellMaterials& assignment, const ReconstructOptions& options) {
-  const UnitFrame frame = unit_frame(mesh);
-  Reconstruction out = reconstruct_in_frame(to_local(mesh, frame), fractions, assignment, options);
+                           const CellMaterials& assignment, const ReconstructOptions& options,
+                           const dist::Distribution& where) {
+  if (where.comm.size() > 1 && (options.method != Method::greedy || options.extract_model))
+    throw OptionError(
+        "on several ranks, reconstruct runs the greedy {method} only, without {extract_model}");
+  const UnitFrame frame = unit_frame(mesh, where.comm);
+  Reconstruction out =
+      reconstruct_in_frame(to_local(mesh, frame), fractions, assignment, options, where);
   to_world(out, frame, M::dim);
   return out;
+}
+
+template <class M>
+Reconstruction reconstruct(const M& mesh, const Fractions& fractions,
+                           const CellMaterials& assignment, const ReconstructOptions& options) {
+  return reconstruct(mesh, fractions, assignment, options, dist::Distribution::whole(mesh));
 }
 
 template Reconstruction reconstruct(const QuadMesh&, const Fractions&, const CellMaterials&,
                                     const ReconstructOptions&);
 template Reconstruction reconstruct(const HexMesh&, const Fractions&, const CellMaterials&,
                                     const ReconstructOptions&);
+template Reconstruction reconstruct(const QuadMesh&, const Fractions&, const CellMaterials&,
+                                    const ReconstructOptions&, const dist::Distribution&);
+template Reconstruction reconstruct(const HexMesh&, const Fractions&, const CellMaterials&,
+                                    const ReconstructOptions&, const dist::Distribution&);
 
 Reconstruction reconstruct(const AssignedGrid& grid, const ReconstructOptions& options) {
   grid.require_assigned("reconstruct");

@@ -75,7 +75,21 @@ class Buffer {
     for (const T& x : v) put(x);
   }
 
+  /// n values from `first` in one copy (read back by get_values, into n values).
+  template <class T>
+  void put_values(const T* first, std::size_t n) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    const auto at = bytes_.size();
+    bytes_.resize(at + n * sizeof(T));
+    if (n > 0) std::memcpy(bytes_.data() + at, first, n * sizeof(T));
+  }
+
   bool done() const { return read_ == bytes_.size(); }
+  /// Passes over n bytes.
+  void skip(std::size_t n) {
+    check(n);
+    read_ += n;
+  }
   /// Throws InternalError when the bytes run out (a rank sent something else).
   template <class T>
   T get() {
@@ -94,6 +108,14 @@ class Buffer {
     v.reserve(n);
     for (std::uint64_t i = 0; i < n; ++i) v.push_back(get<T>());
     return v;
+  }
+
+  template <class T>
+  void get_values(T* first, std::size_t n) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    check(n * sizeof(T));
+    if (n > 0) std::memcpy(first, bytes_.data() + read_, n * sizeof(T));
+    read_ += n * sizeof(T);
   }
 
   const std::vector<std::uint8_t>& bytes() const { return bytes_; }

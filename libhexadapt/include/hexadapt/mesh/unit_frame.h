@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "hexadapt/core/geometry.h"
+#include "hexadapt/dist/communicator.h"
 
 namespace hexadapt {
 
@@ -45,6 +46,13 @@ UnitFrame unit_frame(const M& mesh);
 UnitFrame far_unit_frame(const std::vector<Vec3>& points);
 template <class M>
 UnitFrame far_unit_frame(const M& mesh);
+
+/// The frames of a mesh spread over ranks, each holding a part: the frames of the whole mesh,
+/// the same bits on every rank (from every rank's bounding box).
+template <class M>
+UnitFrame unit_frame(const M& mesh, const dist::Communicator& comm);
+template <class M>
+UnitFrame far_unit_frame(const M& mesh, const dist::Communicator& comm);
 
 /// The mesh with every point moved into (from) the frame; the same topology.
 template <class M>

@@ -13,6 +13,7 @@
 // Deterministic: Jacobi sweeps, per-cell decisions, fixed orders.
 #pragma once
 
+#include "hexadapt/dist/block.h"
 #include "hexadapt/mesh/fractions.h"
 #include "hexadapt/reconstruct/pixel_mesh.h"
 
@@ -33,6 +34,19 @@ struct GreedyResult {
 /// every free pixel.
 GreedyResult greedy_assign(PixelMesh& pixels, const Fractions& fractions,
                            const GreedyOptions& options = {});
+
+/// The same on the part of a mesh one rank holds (`where.block`, in the ids of the cells the
+/// pixels were built on): every rank assigns the free blocks it holds, and after each round
+/// the ghost blocks take their owner's state, so the owned blocks end as on one rank holding
+/// the whole mesh, given greedy_ghost_layers() layers of ghost cells around them. Counts are
+/// of the whole mesh. Every rank calls it.
+GreedyResult greedy_assign(PixelMesh& pixels, const Fractions& fractions,
+                           const GreedyOptions& options, const dist::Distribution& where);
+
+/// The layers of ghost cells greedy_assign on ranks needs around the owned cells, for pixels of
+/// nsub per axis: one more than the cells a round's diffusion reaches into, and at least two
+/// (a cell's pixels depend on its neighbours' neighbours).
+int greedy_ghost_layers(int nsub, const GreedyOptions& options);
 
 /// Bytes greedy_assign needs per free pixel with n_materials materials.
 double greedy_bytes_per_free_pixel(int n_materials, int dim);

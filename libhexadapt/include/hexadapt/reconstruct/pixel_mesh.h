@@ -22,6 +22,7 @@
 
 #include "hexadapt/core/geometry.h"
 #include "hexadapt/core/ids.h"
+#include "hexadapt/dist/block.h"
 #include "hexadapt/mesh/fractions.h"
 
 namespace hexadapt::reconstruct {
@@ -72,6 +73,8 @@ class PixelMesh {
   int n_materials() const { return n_materials_; }
   index_t pixels_per_block() const { return ppb_; }
   index_t n_blocks() const { return static_cast<index_t>(cells_.size()); }
+  /// The cells of the mesh the pixels were built on.
+  index_t n_cells() const { return static_cast<index_t>(cell_block_.size()); }
   std::int64_t n_pixels() const { return static_cast<std::int64_t>(label_.size()); }
 
   CellId block_cell(index_t b) const { return cells_[static_cast<std::size_t>(b)]; }
@@ -124,6 +127,9 @@ class PixelMesh {
   double mean_width_ = 1;
 };
 
+/// nsub when PixelOptions::nsub is 0: 10 in 2D, 4 in 3D.
+int default_nsub(int dim);
+
 /// Counts pixels and estimates memory without allocating them. `assignment` gives each
 /// coarse cell's material. Throws InputError when sizes or materials are inconsistent,
 /// OptionError for nsub out of [1, 64].
@@ -137,6 +143,12 @@ template <class M>
 PixelMesh build_pixel_mesh(const M& mesh, const Fractions& fractions,
                            const CellMaterials& assignment, const PixelOptions& options,
                            PixelPlan* plan = nullptr);
+
+/// The plan of the pixels of a mesh spread over ranks (`pixels` built on this rank's part):
+/// the blocks of the cells every rank owns, and the estimate of one process holding them all.
+/// Every rank calls it.
+PixelPlan whole_plan(const PixelMesh& pixels, const PixelOptions& options,
+                     const dist::Distribution& where);
 
 /// The face link from local face lf of coarse cell c to its neighbour (block left at -1).
 template <class M>

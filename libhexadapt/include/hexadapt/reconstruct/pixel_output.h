@@ -5,12 +5,16 @@
 // conforming mesh. Cells without pixels are not in it.
 #pragma once
 
+#include "hexadapt/dist/block.h"
 #include "hexadapt/io/mesh_data.h"
 #include "hexadapt/reconstruct/pixel_mesh.h"
 
 namespace hexadapt::reconstruct {
 
 io::MeshData pixel_mesh_data(const PixelMesh& pixels);
+/// The pixels of the cells `block` owns, `parent` naming global cells: the pieces of the ranks
+/// a mesh is spread over, concatenated in rank order, are the pixels of the whole mesh.
+io::MeshData pixel_mesh_data(const PixelMesh& pixels, const dist::Block& block);
 
 /// Bytes pixel_mesh_data and a writer need per pixel (for the memory estimate).
 double pixel_output_bytes_per_pixel(int dim);

@@ -64,6 +64,15 @@ struct Reconstruction {
 template <class M>
 Reconstruction reconstruct(const M& mesh, const Fractions& fractions,
                            const CellMaterials& assignment, const ReconstructOptions& options);
+/// The same on the part of a mesh one rank holds (`where`): the pixels of the held cells, the
+/// owned ones assigned as on one process holding the whole mesh when the part has
+/// greedy_ghost_layers() layers of ghost cells around the owned ones; the result's figures
+/// are the whole mesh's. Greedy only, without the model, on more than one rank (OptionError).
+/// Every rank calls it.
+template <class M>
+Reconstruction reconstruct(const M& mesh, const Fractions& fractions,
+                           const CellMaterials& assignment, const ReconstructOptions& options,
+                           const dist::Distribution& where);
 /// The same on an assigned grid (io::to_assigned_grid); InputError when it has no material.
 Reconstruction reconstruct(const AssignedGrid& grid, const ReconstructOptions& options);
 
