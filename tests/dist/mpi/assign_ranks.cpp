@@ -3,8 +3,6 @@
 // the failure must be those of one rank assigning the whole grid.
 #include <gtest/gtest.h>
 
-#include <random>
-
 #include "../../assign/assign_test_cases.h"
 #include "hexadapt/assign/assign.h"
 #include "hexadapt/dist/mpi_communicator.h"
@@ -12,13 +10,6 @@
 
 namespace hexadapt {
 namespace {
-
-// Gathers in rounds of 1000 bytes over all ranks: the larger gathers here take several rounds,
-// each rank's part split unevenly (the tools' default, 256 MiB, is covered by the tool test).
-const dist::Communicator& world() {
-  static const dist::MpiCommunicator comm(1000);
-  return comm;
-}
 
 // Buffers of different sizes, an empty one on rank 0, come back whole and in order, on every
 // rank or on the root only.
@@ -28,39 +19,19 @@ TEST(MpiCommunicator, GathersInRoundsKeepEachRanksBytesInOrder) {
     for (std::size_t i = 0; i < b.size(); ++i) b[i] = static_cast<std::uint8_t>(rank * 7 + i);
     return b;
   };
-  const auto mine = bytes_of(world().rank());
-  const auto all = world().all_gather(mine);
-  ASSERT_EQ(all.size(), static_cast<std::size_t>(world().size()));
-  for (int r = 0; r < world().size(); ++r) EXPECT_EQ(all[static_cast<std::size_t>(r)], bytes_of(r));
-  const int root = world().size() - 1;
-  const auto at_root = world().gather(mine, root);
-  if (world().rank() == root) {
-    ASSERT_EQ(at_root.size(), static_cast<std::size_t>(world().size()));
-    for (int r = 0; r < world().size(); ++r)
+  const auto mine = bytes_of(test::world().rank());
+  const auto all = test::world().all_gather(mine);
+  ASSERT_EQ(all.size(), static_cast<std::size_t>(test::world().size()));
+  for (int r = 0; r < test::world().size(); ++r) EXPECT_EQ(all[static_cast<std::size_t>(r)], bytes_of(r));
+  const int root = test::world().size() - 1;
+  const auto at_root = test::world().gather(mine, root);
+  if (test::world().rank() == root) {
+    ASSERT_EQ(at_root.size(), static_cast<std::size_t>(test::world().size()));
+    for (int r = 0; r < test::world().size(); ++r)
       EXPECT_EQ(at_root[static_cast<std::size_t>(r)], bytes_of(r));
   } else {
     EXPECT_TRUE(at_root.empty());
   }
-}
-
-/// A grid of `cells` with its nodes moved at random (cells of many volumes), the same on
-/// every rank.
-template <class M>
-M jittered_grid(const std::array<int, 3>& cells, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> shift(-0.15, 0.15);
-  std::vector<Vec3> points;
-  const int nz = M::dim == 3 ? cells[2] : 0;
-  for (int k = 0; k <= nz; ++k)
-    for (int j = 0; j <= cells[1]; ++j)
-      for (int i = 0; i <= cells[0]; ++i) {
-        Vec3 p(i + shift(rng), j + shift(rng), M::dim == 3 ? k + shift(rng) : 0.0);
-        points.push_back(p);
-      }
-  if constexpr (M::dim == 3)
-    return make_hex_grid(cells[0], cells[1], cells[2], std::move(points));
-  else
-    return make_quad_grid(cells[0], cells[1], std::move(points));
 }
 
 template <class M>
@@ -68,15 +39,15 @@ void expect_same_as_one_rank(const M& whole, const Fractions& fractions,
                              const std::array<int, 3>& cells,
                              const assign::AssignOptions& options) {
   const assign::AssignResult one = assign::assign_materials(whole, fractions, options);
-  const dist::Slab slab = dist::structured_slab(cells, M::dim, world().rank(), world().size(), 2);
+  const dist::Slab slab = dist::structured_slab(cells, M::dim, test::world().rank(), test::world().size(), 2);
   const auto [mesh, part] = test::held_part(whole, fractions, cells, slab);
-  const dist::Distribution where{world(), slab.block};
+  const dist::Distribution where{test::world(), slab.block};
   const assign::AssignResult r = assign::assign_materials(mesh, part, options, where);
 
   std::vector<int> owned;
   for (index_t c = slab.block.owned_cell_first; c < slab.block.owned_cell_end; ++c)
     owned.push_back(r.correction.labels[CellId(c)]);
-  const std::vector<int> gathered = dist::all_gather_values(world(), owned);
+  const std::vector<int> gathered = dist::all_gather_values(test::world(), owned);
   ASSERT_EQ(gathered.size(), static_cast<std::size_t>(whole.n_cells()));
   index_t differ = 0;
   for (CellId c : id_range<CellId>(whole.n_cells()))
@@ -113,7 +84,7 @@ void expect_same_as_one_rank(const M& whole, const Fractions& fractions,
 
 TEST(AssignOnRanks, NoisyHexFractionsAsOnOneRank) {
   const std::array<int, 3> cells{9, 8, 12};
-  const auto mesh = jittered_grid<HexMesh>(cells, 3);
+  const auto mesh = test::jittered_grid<HexMesh>(cells, 3);
   const Fractions f = test::random_fractions(mesh.n_cells(), 3, 3, 11);
   const assign::AssignResult one = assign::assign_materials(mesh, f);
   ASSERT_GT(one.correction.non_manifold_initial, 50);  // many nodes, many rounds
@@ -131,7 +102,7 @@ TEST(AssignOnRanks, BallsInAHexGridAsOnOneRank) {
 
 TEST(AssignOnRanks, NoisyQuadFractionsAsOnOneRank) {
   const std::array<int, 3> cells{23, 17, 1};
-  const auto mesh = jittered_grid<QuadMesh>(cells, 5);
+  const auto mesh = test::jittered_grid<QuadMesh>(cells, 5);
   const Fractions f = test::random_fractions(mesh.n_cells(), 4, 3, 2);
   expect_same_as_one_rank(mesh, f, cells, {});
 }
@@ -140,7 +111,7 @@ TEST(AssignOnRanks, NoisyQuadFractionsAsOnOneRank) {
 // chosen among every rank's, as on one rank.
 TEST(AssignOnRanks, KeptMaterialsAsOnOneRank) {
   const std::array<int, 3> cells{9, 8, 12};
-  const auto mesh = jittered_grid<HexMesh>(cells, 6);
+  const auto mesh = test::jittered_grid<HexMesh>(cells, 6);
   Fractions f = test::random_fractions(mesh.n_cells(), 3, 3, 8);
   for (CellId c : id_range<CellId>(f.n_cells())) {
     f(c, 0) += 0.7 * f(c, 2);
@@ -152,10 +123,10 @@ TEST(AssignOnRanks, KeptMaterialsAsOnOneRank) {
   ASSERT_EQ(one.kept.size(), 1u);
   ASSERT_GT(one.kept[0].cells, 20);
   expect_same_as_one_rank(mesh, f, cells, options);
-  const dist::Slab slab = dist::structured_slab(cells, 3, world().rank(), world().size(), 2);
+  const dist::Slab slab = dist::structured_slab(cells, 3, test::world().rank(), test::world().size(), 2);
   const auto [part_mesh, part] = test::held_part(mesh, f, cells, slab);
   const assign::AssignResult r =
-      assign::assign_materials(part_mesh, part, options, {world(), slab.block});
+      assign::assign_materials(part_mesh, part, options, {test::world(), slab.block});
   ASSERT_EQ(r.kept.size(), 1u);
   EXPECT_EQ(r.kept[0].material, one.kept[0].material);
   EXPECT_EQ(r.kept[0].cells, one.kept[0].cells);
@@ -163,7 +134,7 @@ TEST(AssignOnRanks, KeptMaterialsAsOnOneRank) {
 
 TEST(AssignOnRanks, AFailureIsTheOneOfOneRank) {
   const std::array<int, 3> cells{9, 8, 12};
-  const auto mesh = jittered_grid<HexMesh>(cells, 4);
+  const auto mesh = test::jittered_grid<HexMesh>(cells, 4);
   const Fractions f = test::random_fractions(mesh.n_cells(), 4, 4, 5);
   assign::AssignOptions options;
   options.correction.keep = 1;
@@ -176,17 +147,17 @@ TEST(AssignOnRanks, AFailureIsTheOneOfOneRank) {
 // ranks, and the cells reassigned, the figures and what follows are those of one rank.
 TEST(AssignOnRanks, SmallPiecesAsOnOneRank) {
   const std::array<int, 3> cells{9, 8, 12};
-  const auto mesh = jittered_grid<HexMesh>(cells, 9);
+  const auto mesh = test::jittered_grid<HexMesh>(cells, 9);
   const Fractions f = test::random_fractions(mesh.n_cells(), 3, 2, 21);
   assign::AssignOptions options;
   options.min_island = 6;
   const assign::AssignResult one = assign::assign_materials(mesh, f, options);
   ASSERT_GT(one.islands.islands, 20);
   expect_same_as_one_rank(mesh, f, cells, options);
-  const dist::Slab slab = dist::structured_slab(cells, 3, world().rank(), world().size(), 2);
+  const dist::Slab slab = dist::structured_slab(cells, 3, test::world().rank(), test::world().size(), 2);
   const auto [part_mesh, part] = test::held_part(mesh, f, cells, slab);
   const assign::AssignResult r =
-      assign::assign_materials(part_mesh, part, options, {world(), slab.block});
+      assign::assign_materials(part_mesh, part, options, {test::world(), slab.block});
   EXPECT_EQ(r.islands.islands, one.islands.islands);
   EXPECT_EQ(r.islands.cells, one.islands.cells);
   EXPECT_EQ(r.islands.left, one.islands.left);
