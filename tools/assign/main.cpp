@@ -237,13 +237,7 @@ int finish(const CLI::App& app, const Options& o, const assign::AssignResult& r,
     report["assign"]["failure"] = failure_json(*r.correction.failure, fractions);
   report["exit_code"] = r.correction.failure ? cli::target_missed : cli::ok;
   report["times"] = cli::phase_times_json(times);
-  if (comm.size() > 1)
-    report["ranks"] = {
-        {"count", comm.size()},
-        {"bytes_sent",
-         dist::all_gather_values(comm, std::vector<std::uint64_t>{comm.bytes_sent()})},
-        {"peak_memory",
-         dist::all_gather_values(comm, std::vector<std::uint64_t>{cli::peak_resident_bytes()})}};
+  if (comm.size() > 1) report["ranks"] = cli::ranks_json(comm);
   cli::write_report(o.common, report);
   if (r.correction.failure) {
     log(LogLevel::error,
@@ -298,19 +292,6 @@ io::FractionReport whole_report(const dist::Communicator& comm, io::FractionRepo
   return fr;
 }
 
-// The labels of a label map over the whole grid: every rank's, merged, increasing.
-std::vector<std::int64_t> grid_labels(const dist::Communicator& comm, const CLI::App& app,
-                                      const Options& o, const cli::RankInput& in) {
-  std::vector<std::int64_t> mine;
-  cli::on_every_rank(comm, app, [&] {
-    mine = io::label_values(in.data, o.in.fractions, o.input, in.slab.block.cell_offset);
-  });
-  std::vector<std::int64_t> all = dist::all_gather_values(comm, mine);
-  std::sort(all.begin(), all.end());
-  all.erase(std::unique(all.begin(), all.end()), all.end());
-  return all;
-}
-
 // On the ranks of an MPI job: each reads its slab (two ghost layers: the correction looks
 // two cells around the nodes it owns) and writes the cells it owns.
 int run_assign_on_ranks(const CLI::App& app, Options& o, const dist::Communicator& comm) {
@@ -333,7 +314,7 @@ int run_assign_on_ranks(const CLI::App& app, Options& o, const dist::Communicato
   t.restart();
   io::FractionReport fr;
   AssignedGrid grid;
-  if (!o.in.fractions.labels.empty()) o.in.fractions.label_values = grid_labels(comm, app, o, in);
+  if (!o.in.fractions.labels.empty()) o.in.fractions.label_values = cli::grid_labels(comm, app, o.in, o.input, in);
   cli::on_every_rank(comm, app, [&] {
     grid = io::to_assigned_grid(in.data, o.in.grid(io::MaterialSource::none), o.input, &fr,
                                 &in.slab.block);

@@ -5,6 +5,7 @@
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/vtk_xml.h"
 #include "hexadapt/mesh/structured.h"
+#include "ranks.h"
 
 namespace hexadapt::cli {
 
@@ -102,6 +103,47 @@ void write_structured_pieces(const dist::Communicator& comm, const CLI::App& app
   });
 }
 
+/// Rank 0's whole mesh from every rank's piece of a mesh whose pieces share no point: the
+/// pieces in rank order, node ids shifted by the points of the ranks before, with rank 0's
+/// metadata and array names and types.
+io::MeshData gathered_disjoint(const dist::Communicator& comm, const io::MeshData& piece) {
+  dist::Buffer mine;
+  std::vector<double> xyz;
+  xyz.reserve(3 * piece.points.size());
+  for (const Vec3& p : piece.points) xyz.insert(xyz.end(), p.data(), p.data() + 3);
+  mine.put_vector(xyz);
+  mine.put(static_cast<std::uint64_t>(piece.cells.size()));
+  mine.put_values(piece.cells.data(), piece.cells.size());
+  for (const io::DataArray& a : piece.cell_data) mine.put_vector(a.values);
+  for (const io::DataArray& a : piece.point_data) mine.put_vector(a.values);
+  std::vector<dist::Buffer> all = dist::gather(comm, mine, 0);
+  io::MeshData whole;
+  if (comm.rank() != 0) return whole;
+  whole.dim = piece.dim;
+  whole.metadata = piece.metadata;
+  whole.cell_data = piece.cell_data;
+  whole.point_data = piece.point_data;
+  for (io::DataArray& a : whole.cell_data) a.values.clear();
+  for (io::DataArray& a : whole.point_data) a.values.clear();
+  for (dist::Buffer& b : all) {
+    const auto shift = static_cast<index_t>(whole.points.size());
+    const std::vector<double> p = b.get_vector<double>();
+    for (std::size_t i = 0; i + 2 < p.size(); i += 3) whole.points.emplace_back(p[i], p[i + 1], p[i + 2]);
+    const std::size_t first = whole.cells.size();
+    whole.cells.resize(first + b.get<std::uint64_t>());
+    b.get_values(whole.cells.data() + first, whole.cells.size() - first);
+    for (std::size_t i = first; i < whole.cells.size(); ++i)
+      whole.cells[i] = NodeId(whole.cells[i].value() + shift);
+    for (auto* arrays : {&whole.cell_data, &whole.point_data})
+      for (io::DataArray& a : *arrays) {
+        const std::vector<double> v = b.get_vector<double>();
+        a.values.insert(a.values.end(), v.begin(), v.end());
+      }
+    b = dist::Buffer();  // the received bytes go as soon as they are copied
+  }
+  return whole;
+}
+
 }  // namespace
 
 RankInput read_on_ranks(const dist::Communicator& comm, const CLI::App& app,
@@ -118,12 +160,67 @@ RankInput read_on_ranks(const dist::Communicator& comm, const CLI::App& app,
   return in;
 }
 
-void check_rank_output(const std::string& flag, const std::string& path, bool gather) {
-  if (!gather && !path.empty() && !ends_with(path, ".pvtu") && !ends_with(path, ".pvts"))
-    throw OptionError(flag + " " + path +
-                      ": on several ranks the output is one piece per rank and the parallel file "
-                      "that names them: give a .pvtu (.vtu pieces) or a .pvts (.vts pieces), or "
-                      "--gather for one file of the whole grid");
+std::vector<std::int64_t> grid_labels(const dist::Communicator& comm, const CLI::App& app,
+                                      const InputOptions& input, const std::string& path,
+                                      const RankInput& in) {
+  std::vector<std::int64_t> mine;
+  on_every_rank(comm, app, [&] {
+    mine = io::label_values(in.data, input.fractions, path, in.slab.block.cell_offset);
+  });
+  std::vector<std::int64_t> all = dist::all_gather_values(comm, mine);
+  std::sort(all.begin(), all.end());
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  return all;
+}
+
+Json ranks_json(const dist::Communicator& comm) {
+  return {{"count", comm.size()},
+          {"bytes_sent",
+           dist::all_gather_values(comm, std::vector<std::uint64_t>{comm.bytes_sent()})},
+          {"peak_memory",
+           dist::all_gather_values(comm, std::vector<std::uint64_t>{peak_resident_bytes()})}};
+}
+
+void check_rank_output(const std::string& flag, const std::string& path, bool gather,
+                       bool structured) {
+  if (gather || path.empty() || ends_with(path, ".pvtu") || (structured && ends_with(path, ".pvts")))
+    return;
+  throw OptionError(flag + " " + path +
+                    (structured ? ": on several ranks the output is one piece per rank and the "
+                                  "parallel file that names them: give a .pvtu (.vtu pieces) or "
+                                  "a .pvts (.vts pieces), or --gather for one file of the whole "
+                                  "grid"
+                                : ": on several ranks the output is one piece per rank and the "
+                                  "parallel file that names them: give a .pvtu (.vtu pieces), or "
+                                  "--gather for one file of the whole mesh"));
+}
+
+void write_disjoint_pieces(const dist::Communicator& comm, const CLI::App& app,
+                           const io::MeshData& piece, const std::string& path, bool gather,
+                           const io::WriteOptions& options) {
+  if (gather) {
+    const io::MeshData whole = gathered_disjoint(comm, piece);
+    on_every_rank(comm, app, [&] {
+      if (comm.rank() == 0) io::write_mesh(whole, path, options);
+    });
+    return;
+  }
+  // Ranks without cells write no piece; the first rank with cells writes the .pvtu (a rank
+  // without any would fail in write_vtu, as one process does).
+  const std::vector<std::int64_t> cells = dist::all_gather_values(
+      comm, std::vector<std::int64_t>{static_cast<std::int64_t>(piece.n_cells())});
+  std::vector<std::string> pieces;
+  int first = -1;
+  for (int r = 0; r < comm.size(); ++r)
+    if (cells[static_cast<std::size_t>(r)] > 0) {
+      pieces.push_back(base_name(io::piece_path(path, r)));
+      if (first < 0) first = r;
+    }
+  on_every_rank(comm, app, [&] {
+    if (piece.n_cells() > 0 || (first < 0 && comm.rank() == 0))
+      io::write_vtu(piece, io::piece_path(path, comm.rank()), options);
+    if (comm.rank() == first) io::write_pvtu(piece, pieces, path);
+  });
 }
 
 void write_on_ranks(const dist::Communicator& comm, const CLI::App& app, io::MeshData held,

@@ -26,6 +26,12 @@ struct RankInput {
 RankInput read_on_ranks(const dist::Communicator& comm, const CLI::App& app,
                         const std::string& path, io::ReadOptions options, int ghost_layers);
 
+/// The labels of the label map `input` reads (--labels), over the whole grid: every rank's,
+/// merged, increasing. Errors are common to every rank.
+std::vector<std::int64_t> grid_labels(const dist::Communicator& comm, const CLI::App& app,
+                                      const InputOptions& input, const std::string& path,
+                                      const RankInput& in);
+
 /// Writes the owned part of every rank's `held` data (the layers of `input.slab`) to `path`:
 /// a .pvtu naming one .vtu piece per rank (`<path without .pvtu>_<rank>.vtu`, written by
 /// their ranks), or with `gather` one file of the whole grid in any format, written by
@@ -34,8 +40,22 @@ void write_on_ranks(const dist::Communicator& comm, const CLI::App& app, io::Mes
                     const RankInput& input, const std::string& path, bool gather,
                     const io::WriteOptions& options);
 
-/// Throws OptionError when `path` cannot take what write_on_ranks writes (a .pvtu, unless
-/// `gather`); `flag` names the option that gave it.
-void check_rank_output(const std::string& flag, const std::string& path, bool gather);
+/// Writes every rank's `piece`, the part of one unstructured mesh whose cells the rank owns (no
+/// point shared with another piece, the whole being the pieces in rank order), to `path`: a
+/// .pvtu naming one .vtu per rank that has cells, or with `gather` one file written by
+/// rank 0 with the bytes of one process writing the whole mesh. Errors are common to every
+/// rank.
+void write_disjoint_pieces(const dist::Communicator& comm, const CLI::App& app,
+                           const io::MeshData& piece, const std::string& path, bool gather,
+                           const io::WriteOptions& options);
+
+/// The report's `ranks` block: the rank count, and per rank the bytes sent and the peak
+/// resident memory. Every rank calls it.
+Json ranks_json(const dist::Communicator& comm);
+
+/// Throws OptionError when `path` cannot take what write_on_ranks writes (a .pvtu, or a .pvts
+/// when `structured`, unless `gather`); `flag` names the option that gave it.
+void check_rank_output(const std::string& flag, const std::string& path, bool gather,
+                       bool structured = true);
 
 }  // namespace hexadapt::cli

@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "cli.h"
+#include "rank_files.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/assigned_grid_file.h"
 #include "hexadapt/io/fractions_reader.h"
@@ -23,19 +24,22 @@ struct Options {
   std::string input, model, model_format = "om";
   cli::InputOptions in;
   bool majority = false;
+  bool gather = false;  ///< on ranks: one output file written by rank 0
   reconstruct::ReconstructOptions lib;
   std::string method = reconstruct::to_string(lib.method);  ///< --method, parsed into lib
   double read_seconds = 0;                                  ///< reading the input, for the report
 };
 
-AssignedGrid read_grid(const io::MeshData& data, const Options& o) {
+// `block`: the data is one rank's block of the grid.
+AssignedGrid read_grid(const io::MeshData& data, const Options& o,
+                       const dist::Block* block = nullptr) {
   if (!o.majority && !data.find_cell_array("material"))
     throw InputError(o.input, "",
                      "no `material` cell array: run hexadapt-assign first, or "
                      "pass --majority to use the majority material");
   return io::to_assigned_grid(
       data, o.in.grid(o.majority ? io::MaterialSource::majority : io::MaterialSource::array),
-      o.input);
+      o.input, nullptr, block);
 }
 
 std::string model_stem(std::string path) {
@@ -76,52 +80,31 @@ cli::Json method_json(const reconstruct::ReconstructResult& r, Method m) {
   return j;
 }
 
-template <class M>
-int run(const M& mesh, const Fractions& f, const CellMaterials& assignment, Options& o,
-        const cli::CommonOptions& common, const CLI::App& app) {
+// The library's options from the flags, for a grid of dimension `dim`.
+void set_options(Options& o, const cli::CommonOptions& common, int dim) {
   auto& lib = o.lib;
   lib.method = reconstruct::parse_method(o.method);
   lib.pixels.max_memory = common.memory_limit();
-  lib.pixels.output_bytes_per_pixel = reconstruct::pixel_output_bytes_per_pixel(M::dim);
+  lib.pixels.output_bytes_per_pixel = reconstruct::pixel_output_bytes_per_pixel(dim);
   lib.extract_model = !o.model.empty();
   lib.progress = cli::terminal_progress(common);
-  if (!common.quiet) {
-    // The estimate is shown before anything big is allocated (the build refuses beyond
-    // --max-memory).
-    auto po = lib.pixels;
-    const auto plan = reconstruct::plan_pixels(mesh, f, assignment, po);
-    std::cerr << app.get_name() << ": " << plan.n_pixels << " pixels (" << plan.n_free_pixels
-              << " free) in " << plan.n_blocks << " cells, nsub " << plan.nsub
-              << "; pixel memory estimate " << plan.bytes / 1e6 << " MB plus the " << o.method
-              << " working arrays\n";
-  }
-  const auto rec = reconstruct::reconstruct(mesh, f, assignment, lib);
-  const auto& r = rec.result;
-  Timer t;
-  io::MeshData out = reconstruct::pixel_mesh_data(rec.pixels);
+}
+
+// The pixel mesh as written: its cells, with the provenance and the material names.
+io::MeshData output_data(const reconstruct::Reconstruction& rec, const dist::Block& block,
+                         const Fractions& f, const CLI::App& app) {
+  io::MeshData out = reconstruct::pixel_mesh_data(rec.pixels, block);
   out.metadata = cli::provenance(app);
   io::set_material_names(out, f.names());
-  io::write_mesh(out, common.output, common.write_options());
-  std::vector<std::string> files{common.output};
-  if (!o.model.empty()) {
-    const std::string stem = model_stem(o.model);
-    reconstruct::write_model_vtk(rec.model, f.names(), stem + ".vtk");
-    files.push_back(stem + ".vtk");
-    if (M::dim == 3)
-      for (const auto& p :
-           reconstruct::write_model_openmesh(rec.model, f.names(), stem, o.model_format))
-        files.push_back(p);
-  }
-  PhaseTimes times{{"read", o.read_seconds}};
-  times.insert(times.end(), r.times.begin(), r.times.end());
-  times.emplace_back("write", t.seconds());
+  return out;
+}
+
+cli::Json report(const CLI::App& app, const Options& o, const reconstruct::Reconstruction& rec,
+                 const std::vector<std::string>& files, const PhaseTimes& times) {
+  const auto& r = rec.result;
   const double total = r.discrepancy + r.unpixelated_discrepancy;
   log_info("method " + o.method + " (" + r.status + "): edgecut " + std::to_string(r.edgecut) +
            ", discrepancy " + std::to_string(total));
-  if (lib.method == Method::mip && r.mip.status == reconstruct::MipStatus::timed_out_no_solution)
-    log_warning(
-        "the MIP found no solution within the time limit: the pixels keep the "
-        "largest-remainder fill");
   cli::Json j = cli::report_header(app);
   j["input"] = o.input;
   j["method"] = o.method;
@@ -137,7 +120,7 @@ int run(const M& mesh, const Fractions& f, const CellMaterials& assignment, Opti
   j["discrepancy_pixelated"] = r.discrepancy;
   j["discrepancy_unpixelated"] = r.unpixelated_discrepancy;
   j["relative_discrepancy"] = r.relative_discrepancy;
-  j["method_stats"] = method_json(r, lib.method);
+  j["method_stats"] = method_json(r, o.lib.method);
   if (!o.model.empty()) {
     j["model"] = {{"points", rec.model.points.size()},
                   {"facets", rec.model.facets.size()},
@@ -147,7 +130,47 @@ int run(const M& mesh, const Fractions& f, const CellMaterials& assignment, Opti
   j["files"] = files;
   j["exit_code"] = cli::ok;
   j["times"] = cli::phase_times_json(times);
-  cli::write_report(common, j);
+  return j;
+}
+
+template <class M>
+int run(const M& mesh, const Fractions& f, const CellMaterials& assignment, Options& o,
+        const cli::CommonOptions& common, const CLI::App& app) {
+  set_options(o, common, M::dim);
+  auto& lib = o.lib;
+  if (!common.quiet) {
+    // The estimate is shown before anything big is allocated (the build refuses beyond
+    // --max-memory).
+    auto po = lib.pixels;
+    const auto plan = reconstruct::plan_pixels(mesh, f, assignment, po);
+    std::cerr << app.get_name() << ": " << plan.n_pixels << " pixels (" << plan.n_free_pixels
+              << " free) in " << plan.n_blocks << " cells, nsub " << plan.nsub
+              << "; pixel memory estimate " << plan.bytes / 1e6 << " MB plus the " << o.method
+              << " working arrays\n";
+  }
+  const auto rec = reconstruct::reconstruct(mesh, f, assignment, lib);
+  const auto& r = rec.result;
+  Timer t;
+  io::write_mesh(output_data(rec, dist::Block::whole(mesh.n_cells(), mesh.n_nodes()), f, app),
+                 common.output, common.write_options());
+  std::vector<std::string> files{common.output};
+  if (!o.model.empty()) {
+    const std::string stem = model_stem(o.model);
+    reconstruct::write_model_vtk(rec.model, f.names(), stem + ".vtk");
+    files.push_back(stem + ".vtk");
+    if (M::dim == 3)
+      for (const auto& p :
+           reconstruct::write_model_openmesh(rec.model, f.names(), stem, o.model_format))
+        files.push_back(p);
+  }
+  PhaseTimes times{{"read", o.read_seconds}};
+  times.insert(times.end(), r.times.begin(), r.times.end());
+  times.emplace_back("write", t.seconds());
+  if (lib.method == Method::mip && r.mip.status == reconstruct::MipStatus::timed_out_no_solution)
+    log_warning(
+        "the MIP found no solution within the time limit: the pixels keep the "
+        "largest-remainder fill");
+  cli::write_report(common, report(app, o, rec, files, times));
   return cli::ok;
 }
 
@@ -183,6 +206,9 @@ void add_options(CLI::App& app, Options& o, cli::CommonOptions& common) {
       ->capture_default_str();
   app.add_option("--time-limit", lib.mip.time_limit, "MIP: seconds given to GLPK")
       ->capture_default_str();
+  app.add_flag("--gather", o.gather,
+               "Under mpirun on several ranks: write one file of the whole pixel mesh (any "
+               "format) instead of a .vtu piece per rank and the .pvtu naming them");
 }
 
 // Reads the assigned grid and reconstructs it.
@@ -201,6 +227,56 @@ int run_reconstruct(const CLI::App& app, Options& o, const cli::CommonOptions& c
       grid.mesh);
 }
 
+// On the ranks of an MPI job: each reads its slab of a structured grid with the ghost layers
+// greedy needs, pixelates it and writes the pixels of the cells it owns.
+int run_reconstruct_on_ranks(const CLI::App& app, Options& o, cli::CommonOptions& common,
+                             const dist::Communicator& comm) {
+  cli::on_every_rank(comm, app, [&] {
+    cli::check_files({{"input", o.input}},
+                     {{"-o", common.output, true, true}, {"--json", common.json}});
+    cli::check_rank_output("-o", common.output, o.gather, false);
+    if (!o.model.empty())
+      throw OptionError("--model: the geometric model of the whole grid is built on one process");
+    if (o.method != reconstruct::to_string(Method::greedy))
+      throw OptionError("--method " + o.method + " runs on one process: on several ranks, greedy");
+  });
+  const Timer read;
+  const int nsub = o.lib.pixels.nsub ? o.lib.pixels.nsub
+                                     : std::min(reconstruct::default_nsub(2), reconstruct::default_nsub(3));
+  cli::RankInput in = cli::read_on_ranks(comm, app, o.input, o.in.read_options(),
+                                         reconstruct::greedy_ghost_layers(nsub, o.lib.greedy));
+  if (!o.in.fractions.labels.empty())
+    o.in.fractions.label_values = cli::grid_labels(comm, app, o.in, o.input, in);
+  AssignedGrid grid;
+  cli::on_every_rank(comm, app, [&] {
+    grid = read_grid(in.data, o, &in.slab.block);
+    set_options(o, common, in.shape.dim);
+    std::visit([&](const auto& m) {
+      reconstruct::check_pixel_memory(
+          reconstruct::plan_pixels(m, grid.fractions, grid.material, o.lib.pixels), o.lib.pixels);
+    }, grid.mesh);
+  });
+  o.read_seconds = read.seconds();
+  if (comm.rank() != 0) o.lib.progress = nullptr;
+  const dist::Distribution where{comm, in.slab.block};
+  const auto rec = std::visit(
+      [&](const auto& m) {
+        return reconstruct::reconstruct(m, grid.fractions, grid.material, o.lib, where);
+      },
+      grid.mesh);
+  Timer t;
+  cli::write_disjoint_pieces(comm, app, output_data(rec, in.slab.block, grid.fractions, app),
+                             common.output, o.gather, common.write_options());
+  PhaseTimes times{{"read", o.read_seconds}};
+  times.insert(times.end(), rec.result.times.begin(), rec.result.times.end());
+  times.emplace_back("write", t.seconds());
+  cli::Json j = report(app, o, rec, {common.output}, times);
+  j["ranks"] = cli::ranks_json(comm);
+  if (comm.rank() != 0) common.json.clear();  // rank 0 writes the report
+  cli::write_report(common, j);
+  return cli::ok;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -209,5 +285,8 @@ int main(int argc, char** argv) {
   Options o;
   cli::CommonOptions common;
   add_options(app, o, common);
-  return cli::run(app, argc, argv, common, [&] { return run_reconstruct(app, o, common); });
+  return cli::run_on_ranks(app, argc, argv, common, [&](const dist::Communicator& comm) {
+    return comm.size() > 1 ? run_reconstruct_on_ranks(app, o, common, comm)
+                           : run_reconstruct(app, o, common);
+  });
 }

@@ -11,10 +11,12 @@ namespace hexadapt::io {
 namespace {
 
 CellMaterials materials_of(const MeshData& data, const Fractions& fractions,
-                           const AssignedGridOptions& options, const std::string& file) {
+                           const AssignedGridOptions& options, const std::string& file,
+                           const dist::Block* block) {
   switch (options.material) {
     case MaterialSource::array:
-      return read_material_array(data, fractions.n_materials(), file, options.material_array);
+      return read_material_array(data, fractions.n_materials(), file, options.material_array,
+                                 block ? block->cell_offset : 0);
     case MaterialSource::majority:
       return majority_materials(fractions);
     case MaterialSource::none:
@@ -30,7 +32,7 @@ AssignedGrid to_assigned_grid(const MeshData& data, const AssignedGridOptions& o
                               const dist::Block* block) {
   AssignedGrid grid;
   grid.fractions = extract_fractions(data, options.fractions, report, file, block);
-  grid.material = materials_of(data, grid.fractions, options, file);
+  grid.material = materials_of(data, grid.fractions, options, file, block);
   grid.mesh = to_mesh(data, file);
   return grid;
 }
@@ -60,7 +62,7 @@ MeshData to_mesh_data(const AssignedGrid& grid) {
 }
 
 CellMaterials read_material_array(const MeshData& data, int n_materials, const std::string& file,
-                                  const std::string& array) {
+                                  const std::string& array, std::int64_t first_cell) {
   const DataArray* a = data.find_cell_array(array);
   if (a == nullptr)
     throw InputError(file, "cell data",
@@ -74,7 +76,7 @@ CellMaterials read_material_array(const MeshData& data, int n_materials, const s
   for (CellId c : id_range<CellId>(data.n_cells())) {
     const double v = a->values[c.idx()];
     if (!(v >= 0 && v < n_materials && v == std::floor(v)))
-      throw InputError(file, "cell " + std::to_string(c.value()),
+      throw InputError(file, "cell " + std::to_string(first_cell + c.value()),
                        "'" + array + "' is " + std::to_string(v) +
                            ", expected a material index in [0, " + std::to_string(n_materials) +
                            ")");

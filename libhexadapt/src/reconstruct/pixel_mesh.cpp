@@ -210,6 +210,14 @@ PixelPlan plan_pixels(const M& mesh, const Fractions& fractions, const CellMater
   return plan_of(mesh, pixelated_cells(mesh, fractions), options);
 }
 
+void check_pixel_memory(const PixelPlan& plan, const PixelOptions& options) {
+  if (plan.bytes > options.max_memory)
+    throw ResourceError("the sub-pixel mesh needs about " + megabytes(plan.bytes) + " (" +
+                        std::to_string(plan.n_pixels) + " pixels, nsub " +
+                        std::to_string(plan.nsub) + "), more than the allowed " +
+                        megabytes(options.max_memory) + ": lower {nsub} or raise {max_memory}");
+}
+
 PixelPlan whole_plan(const PixelMesh& pixels, const PixelOptions& options,
                      const dist::Distribution& where) {
   std::int64_t counts[2] = {0, 0};
@@ -275,11 +283,7 @@ PixelMesh build_pixel_mesh(const M& mesh, const Fractions& fractions,
   log_info("pixels: " + std::to_string(plan.n_pixels) + " in " + std::to_string(plan.n_blocks) +
            " cells (" + std::to_string(plan.n_free_pixels) + " free), nsub " +
            std::to_string(plan.nsub) + ", estimated memory " + megabytes(plan.bytes));
-  if (plan.bytes > options.max_memory)
-    throw ResourceError("the sub-pixel mesh needs about " + megabytes(plan.bytes) + " (" +
-                        std::to_string(plan.n_pixels) + " pixels, nsub " +
-                        std::to_string(plan.nsub) + "), more than the allowed " +
-                        megabytes(options.max_memory) + ": lower {nsub} or raise {max_memory}");
+  check_pixel_memory(plan, options);
   std::vector<CellId> cells;
   std::vector<std::uint8_t> free;
   for (CellId c : id_range<CellId>(mesh.n_cells()))

@@ -72,7 +72,7 @@ class Buffer {
   template <class T>
   void put_vector(const std::vector<T>& v) {
     put(static_cast<std::uint64_t>(v.size()));
-    for (const T& x : v) put(x);
+    put_values(v.data(), v.size());
   }
 
   /// n values from `first` in one copy (read back by get_values, into n values).
@@ -104,9 +104,8 @@ class Buffer {
   std::vector<T> get_vector() {
     const auto n = get<std::uint64_t>();
     check(n * sizeof(T));
-    std::vector<T> v;
-    v.reserve(n);
-    for (std::uint64_t i = 0; i < n; ++i) v.push_back(get<T>());
+    std::vector<T> v(n);
+    get_values(v.data(), n);
     return v;
   }
 

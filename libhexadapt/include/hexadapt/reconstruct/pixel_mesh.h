@@ -144,6 +144,9 @@ PixelMesh build_pixel_mesh(const M& mesh, const Fractions& fractions,
                            const CellMaterials& assignment, const PixelOptions& options,
                            PixelPlan* plan = nullptr);
 
+/// Throws ResourceError when the plan needs more than options.max_memory (as build_pixel_mesh).
+void check_pixel_memory(const PixelPlan& plan, const PixelOptions& options);
+
 /// The plan of the pixels of a mesh spread over ranks (`pixels` built on this rank's part):
 /// the blocks of the cells every rank owns, and the estimate of one process holding them all.
 /// Every rank calls it.

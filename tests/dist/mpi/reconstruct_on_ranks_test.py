@@ -1,0 +1,197 @@
+#!/usr/bin/python3
+"""hexadapt-reconstruct under mpirun on 2 and 3 ranks, on parallel files VTK wrote and on the
+.pvts of hexadapt-assign on ranks: the gathered pixel mesh is the bytes of the run on one
+process and the report its figures (default nsub, 1 and 2); the .pvtu of pieces reads in VTK
+as the same pixels; what runs on one process only, and a bad input, stop every rank with one
+message and no output.
+
+usage: reconstruct_on_ranks_test.py TOOLS_DIR WORK_DIR MPIEXEC
+"""
+import filecmp
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+import vtk
+from vtk.util import numpy_support as ns
+
+TOOLS, WORK, MPIEXEC = sys.argv[1], sys.argv[2], sys.argv[3]
+shutil.rmtree(WORK, ignore_errors=True)
+os.makedirs(WORK)
+failures = []
+
+
+def check(ok, message):
+    if not ok:
+        failures.append(message)
+        print("FAIL:", message)
+
+
+def path(*names):
+    return os.path.join(WORK, *names)
+
+
+def run(tool, folder, ranks, *args):
+    """hexadapt-TOOL ARGS in WORK/folder, on `ranks` MPI ranks (0: without mpirun)."""
+    os.makedirs(path(folder), exist_ok=True)
+    command = [os.path.join(TOOLS, "hexadapt-" + tool), *args]
+    if ranks:
+        command = [MPIEXEC, "-np", str(ranks), "--oversubscribe", *command]
+    r = subprocess.run(command, cwd=path(folder), capture_output=True, text=True)
+    return r.returncode, r.stderr
+
+
+def fractions(g, centre, flat):
+    """Three materials: a rough ball, a slab below it, the matrix around."""
+    centres = vtk.vtkCellCenters()
+    centres.SetInputData(g)
+    centres.Update()
+    c = ns.vtk_to_numpy(centres.GetOutput().GetPoints().GetData())
+    r = np.linalg.norm(c - centre, axis=1)
+    r += np.random.default_rng(7).uniform(-1, 1, len(r)) * (1.5 if flat else 0.7)
+    ball = np.clip(4.3 - r, 0, 1)
+    slab = np.clip(2.6 - c[:, 1] + centre[1] - 5.5, 0, 1) * (1 - ball)
+    for name, v in (("vf_ball", ball), ("vf_slab", slab), ("vf_matrix", 1 - ball - slab)):
+        a = ns.numpy_to_vtk(v, deep=1)
+        a.SetName(name)
+        g.GetCellData().AddArray(a)
+    return g
+
+
+def rectilinear(n, flat=False):
+    """A rectilinear grid of n cells per axis (2D when flat)."""
+    axes = [np.linspace(0, 1, k + 1) ** 1.1 * k for k in n[:2]]
+    axes.append(np.array([0.0]) if flat else np.linspace(0, n[2], n[2] + 1))
+    g = vtk.vtkRectilinearGrid()
+    g.SetDimensions(*[len(a) for a in axes])
+    for setter, a in zip((g.SetXCoordinates, g.SetYCoordinates, g.SetZCoordinates), axes):
+        setter(ns.numpy_to_vtk(a, deep=1))
+    return fractions(g, [n[0] / 2, n[1] / 2, 0 if flat else n[2] / 2], flat)
+
+
+def jittered(n, offset):
+    """A structured grid of n cells per axis, its nodes moved at random (cells of many
+    volumes), the whole moved by `offset`."""
+    rng = np.random.default_rng(3)
+    k, j, i = np.meshgrid(*[np.arange(m + 1, dtype=float) for m in n[::-1]], indexing="ij")
+    p = np.stack([i.ravel(), j.ravel(), k.ravel()], axis=1)
+    p += rng.uniform(-0.2, 0.2, p.shape)
+    g = vtk.vtkStructuredGrid()
+    g.SetDimensions(*[m + 1 for m in n])
+    points = vtk.vtkPoints()
+    points.SetData(ns.numpy_to_vtk(p + offset, deep=1))
+    g.SetPoints(points)
+    return fractions(g, np.array([n[0] / 2, n[1] / 2, n[2] / 2]) + offset, False)
+
+
+def write_pieces(g, name, pieces, writer):
+    w = writer()
+    w.SetFileName(path(name))
+    w.SetInputData(g)
+    w.SetNumberOfPieces(pieces)
+    w.SetStartPiece(0)
+    w.SetEndPiece(pieces - 1)
+    w.Write()
+
+
+def report(folder, ranks=None):
+    """The report without what depends on the ranks (checked here when ranks is given)."""
+    with open(path(folder, "out.json")) as f:
+        r = json.load(f)
+    r.pop("times")
+    on = r.pop("ranks", None)
+    if ranks:
+        check(on["count"] == ranks and len(on["bytes_sent"]) == ranks
+              and all(b > 0 for b in on["bytes_sent"]) and len(on["peak_memory"]) == ranks,
+              "%s: the report's ranks are %r" % (folder, on))
+    return r
+
+
+def as_serial(case, source, *options):
+    """Reconstructs `source` with `options` on one process, then on 2 and 3 ranks with
+    --gather: each gathered file must have the serial bytes, each report the serial figures.
+    Returns the serial report."""
+    args = ("../" + source, "-o", "out.vtu", "--gather", "--json", "out.json") + options
+    code, err = run("reconstruct", case + "_serial", 0, *args)
+    check(code == 0, "%s: the serial run exits %d: %s" % (case, code, err))
+    for ranks in (2, 3):
+        folder = "%s_%d" % (case, ranks)
+        code, err = run("reconstruct", folder, ranks, *args)
+        check(code == 0, "%s on %d ranks exits %d: %s" % (case, ranks, code, err))
+        check(filecmp.cmp(path(case + "_serial", "out.vtu"), path(folder, "out.vtu"),
+                          shallow=False),
+              "%s on %d ranks: the gathered file differs from the serial one" % (case, ranks))
+        check(report(case + "_serial") == report(folder, ranks),
+              "%s on %d ranks: the report differs from the serial one" % (case, ranks))
+    return report(case + "_serial")
+
+
+def pixels(name, reader):
+    """(centre, parent) -> (material, free) of every pixel VTK reads in `name`."""
+    r = reader()
+    r.SetFileName(path(name))
+    r.Update()
+    data = r.GetOutput()
+    centres = vtk.vtkCellCenters()
+    centres.SetInputData(data)
+    centres.Update()
+    c = ns.vtk_to_numpy(centres.GetOutput().GetPoints().GetData())
+    arrays = [ns.vtk_to_numpy(data.GetCellData().GetArray(a)) for a in ("parent", "material", "free")]
+    return {(tuple(np.round(p, 6)), int(par)): (int(m), int(f))
+            for p, par, m, f in zip(c, *arrays)}
+
+
+write_pieces(rectilinear((13, 11, 17)), "hex.pvtr", 4, vtk.vtkXMLPRectilinearGridWriter)
+write_pieces(rectilinear((19, 15, 0), flat=True), "quad.pvtr", 3, vtk.vtkXMLPRectilinearGridWriter)
+write_pieces(jittered((9, 8, 14), np.array([1e6, -2e5, 3e5])), "far.pvts", 3,
+             vtk.vtkXMLPStructuredGridWriter)
+
+for case, source, options in (("hex", "hex.pvtr", ()), ("hex_nsub1", "hex.pvtr", ("--nsub", "1")),
+                              ("hex_nsub2", "hex.pvtr", ("--nsub", "2")),
+                              ("quad", "quad.pvtr", ()), ("quad_nsub2", "quad.pvtr", ("--nsub", "2")),
+                              ("far", "far.pvts", ("--nsub", "3"))):
+    r = as_serial(case, source, "--majority", *options)
+    check(r.get("mixed_cells", 0) > 30 and r["method_stats"]["rounds"] > 3,
+          "%s: %r mixed cells, too few to test the ranks" % (case, r.get("mixed_cells")))
+
+# The chain on ranks: assign writes .vts pieces, reconstruct reads them on other ranks.
+code, err = run("assign", "chain", 3, "../hex.pvtr", "-o", "assigned.pvts")
+check(code == 0, "assign on 3 ranks exits %d: %s" % (code, err))
+as_serial("chain", "chain/assigned.pvts")
+
+# Pieces: one .vtu per rank, read by VTK as the pixels of one process.
+serial = pixels("hex_serial/out.vtu", vtk.vtkXMLUnstructuredGridReader)
+for ranks in (2, 3):
+    folder = "hex_%d" % ranks
+    code, err = run("reconstruct", folder, ranks, "../hex.pvtr", "--majority", "-o", "pieces.pvtu")
+    check(code == 0, "hex on %d ranks, pieces: exit %d: %s" % (ranks, code, err))
+    check(sorted(f for f in os.listdir(path(folder)) if f.startswith("pieces")) ==
+          ["pieces.pvtu"] + ["pieces_%d.vtu" % r for r in range(ranks)],
+          "hex on %d ranks: not one piece per rank" % ranks)
+    got = pixels(folder + "/pieces.pvtu", vtk.vtkXMLPUnstructuredGridReader)
+    check(got == serial, "hex on %d ranks: VTK reads other pixels in the .pvtu (%d, serial %d)"
+          % (ranks, len(got), len(serial)))
+
+# Refused on several ranks before any work, with one message and no output.
+for args, code_wanted, words in (
+        (("--model", "m.vtk"), 1, ["--model", "one process"]),
+        (("--method", "annealing"), 1, ["--method annealing", "greedy"]),
+        (("-o", "x.pvts"), 1, [".pvtu"]),
+        (("-o", "out.vtu"), 1, [".pvtu", "--gather"])):
+    full = ("../hex.pvtr", "--majority") + (args if "-o" in args else args + ("-o", "out.pvtu"))
+    code, err = run("reconstruct", "usage", 2, *full)
+    check(code == code_wanted and err.count("error") == 1 and all(w in err for w in words),
+          "%r on 2 ranks: exit %d, %r" % (args, code, err))
+code, err = run("reconstruct", "usage", 2, "../hex.pvtr", "-o", "out.pvtu")
+check(code == 2 and "material" in err and "--majority" in err and err.count("error") == 1,
+      "no material array on 2 ranks: exit %d, %r" % (code, err))
+code, err = run("reconstruct", "usage", 2, "../hex_serial/out.vtu", "--majority", "-o", "out.pvtu")
+check(code != 0 and code != 4 and err.count("error") == 1,
+      "an unstructured input on 2 ranks: exit %d, %r" % (code, err))
+check(not os.listdir(path("usage")), "outputs left behind: %s" % os.listdir(path("usage")))
+
+print("%d failure(s)" % len(failures))
+sys.exit(1 if failures else 0)
