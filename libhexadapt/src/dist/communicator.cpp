@@ -15,6 +15,12 @@ void SerialCommunicator::abort(int code) const {
   std::exit(code);
 }
 
+std::vector<std::vector<std::uint8_t>> SerialCommunicator::exchange(
+    const std::vector<int>& peers, const std::vector<std::vector<std::uint8_t>>& to) const {
+  if (!peers.empty() || !to.empty()) throw InternalError("one rank exchanges with a peer");
+  return {};
+}
+
 void Buffer::check(std::uint64_t n) const {
   if (n > bytes_.size() - read_)
     throw InternalError("a rank's message ends after " + std::to_string(bytes_.size()) +
@@ -39,6 +45,15 @@ double exact_sum(const Communicator& comm, const ExactSum& mine) {
     total.add(ExactSum::from(digits, r.get<double>()));
   }
   return total.value();
+}
+
+std::vector<Buffer> exchange(const Communicator& comm, const std::vector<int>& peers,
+                             const std::vector<Buffer>& to) {
+  std::vector<std::vector<std::uint8_t>> bytes;
+  for (const Buffer& b : to) bytes.push_back(b.bytes());
+  std::vector<Buffer> out;
+  for (auto& b : comm.exchange(peers, bytes)) out.emplace_back(std::move(b));
+  return out;
 }
 
 std::vector<Buffer> gather(const Communicator& comm, const Buffer& mine, int root) {

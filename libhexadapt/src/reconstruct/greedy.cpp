@@ -72,9 +72,11 @@ class Greedy {
     out.put_values(vf_.data() + s * ppb * nm, ppb * nm);
     out.put_values(owed_.data() + s * nm, nm);
   }
-  std::size_t packed_bytes() const {
+  /// Every pixel of the block is assigned: its state changes no more.
+  bool complete(index_t slot) const {
     const auto [ppb, nm] = sizes();
-    return ppb * sizeof(int) + (ppb * nm + nm) * sizeof(double);
+    const auto first = slot_label_.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(slot) * ppb);
+    return std::all_of(first, first + static_cast<std::ptrdiff_t>(ppb), [](int m) { return m >= 0; });
   }
   /// Takes a block's state from pack().
   void unpack(index_t slot, dist::Buffer& in) {
@@ -239,67 +241,81 @@ class Greedy {
 };
 
 // The free blocks a rank holds but another owns change as their owner assigns them: after
-// every round each rank sends the state of its owned free blocks that other ranks hold, and
-// takes that of its ghost ones, with the count of pixels it fixed. On one rank it only counts.
+// every round each rank sends the state of its owned free blocks to the ranks that hold them
+// (its neighbours), and takes that of its ghost ones. A block goes once more after its last
+// pixel is assigned, then never. On one rank nothing travels.
 class GhostRefresh {
  public:
   GhostRefresh(const Greedy& g, const PixelMesh& px, const dist::Distribution& where)
       : px_(px), where_(where) {
+    const dist::Block& mine = where.block;
+    if (mine.held_cells != px.n_cells())
+      throw InternalError("greedy: the block does not hold the cells of the pixels");
     owned_.resize(static_cast<std::size_t>(g.n_free_blocks()));
     for (index_t s = 0; s < g.n_free_blocks(); ++s)
-      owned_[static_cast<std::size_t>(s)] = where.block.owns(px.block_cell(g.block_of_slot(s)));
+      owned_[static_cast<std::size_t>(s)] = mine.owns(px.block_cell(g.block_of_slot(s))) ? 1 : 0;
     if (where.comm.size() == 1) return;
-    const dist::Block& mine = where.block;
-    const std::vector<std::int64_t> held = dist::all_gather_values(
-        where.comm, std::vector<std::int64_t>{mine.cell_offset, mine.cell_offset + mine.held_cells});
-    for (index_t s = 0; s < g.n_free_blocks(); ++s) {
-      if (!owned_[static_cast<std::size_t>(s)]) continue;
-      const std::int64_t id = mine.global(px.block_cell(g.block_of_slot(s)));
-      for (int r = 0; r < where.comm.size(); ++r)
-        if (r != where.comm.rank() && id >= held[2 * static_cast<std::size_t>(r)] &&
-            id < held[2 * static_cast<std::size_t>(r) + 1]) {
-          shared_.push_back(s);
-          break;
-        }
+    // Every rank's held and owned cells, as global ranges.
+    const std::vector<std::int64_t> ranges = dist::all_gather_values(
+        where.comm, std::vector<std::int64_t>{mine.cell_offset, mine.cell_offset + mine.held_cells,
+                                              mine.cell_offset + mine.owned_cell_first,
+                                              mine.cell_offset + mine.owned_cell_end});
+    const auto range = [&](int r, int which) {
+      const auto at = 4 * static_cast<std::size_t>(r) + 2 * static_cast<std::size_t>(which);
+      return std::make_pair(ranges[at], ranges[at + 1]);
+    };
+    const auto meet = [](std::pair<std::int64_t, std::int64_t> a, std::pair<std::int64_t, std::int64_t> b) {
+      return a.first < b.second && b.first < a.second;
+    };
+    const int me = where.comm.rank();
+    for (int r = 0; r < where.comm.size(); ++r) {
+      if (r == me || !(meet(range(r, 0), range(me, 1)) || meet(range(r, 1), range(me, 0))))
+        continue;
+      peers_.push_back(r);
+      sent_.emplace_back();
+      const auto [first, end] = range(r, 0);
+      for (index_t s = 0; s < g.n_free_blocks(); ++s) {
+        const std::int64_t id = mine.global(px.block_cell(g.block_of_slot(s)));
+        if (owned_[static_cast<std::size_t>(s)] && id >= first && id < end) sent_.back().push_back(s);
+      }
     }
   }
 
-  bool owned(index_t slot) const { return owned_[static_cast<std::size_t>(slot)]; }
+  bool owned(index_t slot) const { return owned_[static_cast<std::size_t>(slot)] != 0; }
 
-  /// Exchanges the shared blocks' states; returns the sum over the ranks of `fixed`.
-  std::int64_t operator()(Greedy& g, std::int64_t fixed) const {
+  /// Exchanges the blocks' states; returns the sum over the ranks of `fixed`.
+  std::int64_t operator()(Greedy& g, std::int64_t fixed) {
     if (where_.comm.size() == 1) return fixed;
-    dist::Buffer out;
-    out.put(fixed);
-    out.put(static_cast<std::uint64_t>(shared_.size()));
-    for (index_t s : shared_) {
-      out.put(where_.block.global(px_.block_cell(g.block_of_slot(s))));
-      g.pack(s, out);
+    std::vector<dist::Buffer> out(peers_.size());
+    for (std::size_t i = 0; i < peers_.size(); ++i) {
+      std::vector<index_t>& slots = sent_[i];
+      out[i].put(static_cast<std::uint64_t>(slots.size()));
+      for (index_t s : slots) {
+        out[i].put(where_.block.global(px_.block_cell(g.block_of_slot(s))));
+        g.pack(s, out[i]);
+      }
+      slots.erase(std::remove_if(slots.begin(), slots.end(), [&](index_t s) { return g.complete(s); }),
+                  slots.end());
     }
-    std::int64_t sum = 0;
-    for (dist::Buffer& in : dist::all_gather(where_.comm, out)) {
-      sum += in.get<std::int64_t>();
+    for (dist::Buffer& in : dist::exchange(where_.comm, peers_, out)) {
       const auto n = in.get<std::uint64_t>();
       for (std::uint64_t i = 0; i < n; ++i) {
         const CellId c = where_.block.local_cell(in.get<std::int64_t>());
-        if (!c.valid() || where_.block.owns(c)) {
-          in.skip(g.packed_bytes());
-          continue;
-        }
-        const index_t b = px_.cell_block(c);
+        const index_t b = c.valid() && !where_.block.owns(c) ? px_.cell_block(c) : -1;
         if (b < 0 || g.slot_of_block(b) < 0)
-          throw InternalError("greedy: a mixed cell held by two ranks is not free on both");
+          throw InternalError("greedy: a rank sent a block this rank does not hold as a free ghost");
         g.unpack(g.slot_of_block(b), in);
       }
     }
-    return sum;
+    return dist::sum_in_rank_order(where_.comm, fixed);
   }
 
  private:
   const PixelMesh& px_;
   const dist::Distribution& where_;
-  std::vector<bool> owned_;
-  std::vector<index_t> shared_;
+  std::vector<std::uint8_t> owned_;
+  std::vector<int> peers_;                  ///< the ranks holding cells this rank owns, or owning cells it holds
+  std::vector<std::vector<index_t>> sent_;  ///< per peer, the slots of the owned blocks it holds
 };
 
 }  // namespace
@@ -320,7 +336,7 @@ GreedyResult greedy_assign(PixelMesh& pixels, const Fractions& fractions,
   if (options.rounds_per_threshold < 1 || options.diffusion_sweeps < 0)
     throw OptionError("greedy: rounds per threshold >= 1 and diffusion sweeps >= 0");
   Greedy g(pixels, fractions);
-  const GhostRefresh refresh(g, pixels, where);
+  GhostRefresh refresh(g, pixels, where);
   GreedyResult result;
   const index_t nb = g.n_free_blocks();
   std::vector<std::int64_t> fixed(static_cast<std::size_t>(nb));

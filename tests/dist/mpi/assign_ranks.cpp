@@ -3,6 +3,8 @@
 // the failure must be those of one rank assigning the whole grid.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "../../assign/assign_test_cases.h"
 #include "hexadapt/assign/assign.h"
 #include "hexadapt/dist/mpi_communicator.h"
@@ -32,6 +34,27 @@ TEST(MpiCommunicator, GathersInRoundsKeepEachRanksBytesInOrder) {
   } else {
     EXPECT_TRUE(at_root.empty());
   }
+}
+
+// Each rank exchanges with the ranks next to it, in an order of peers that differs between
+// ranks: messages of several rounds (over 1000 bytes), an empty one, each from the right rank.
+TEST(MpiCommunicator, ExchangesWithPeersInAnyOrder) {
+  const int me = test::world().rank(), n = test::world().size();
+  const auto bytes_from_to = [](int from, int to) {
+    std::vector<std::uint8_t> b(from == 0 ? 0 : static_cast<std::size_t>(700 * from + 31 * to));
+    for (std::size_t i = 0; i < b.size(); ++i) b[i] = static_cast<std::uint8_t>(from * 13 + to + i);
+    return b;
+  };
+  std::vector<int> peers;
+  for (int r : {me + 1, me - 1})
+    if (r >= 0 && r < n) peers.push_back(r);
+  if (me % 2 == 1) std::reverse(peers.begin(), peers.end());
+  std::vector<std::vector<std::uint8_t>> to;
+  for (int r : peers) to.push_back(bytes_from_to(me, r));
+  const auto got = test::world().exchange(peers, to);
+  ASSERT_EQ(got.size(), peers.size());
+  for (std::size_t i = 0; i < peers.size(); ++i) EXPECT_EQ(got[i], bytes_from_to(peers[i], me));
+  EXPECT_THROW(dist::serial().exchange({1}, {{}}), InternalError);
 }
 
 template <class M>

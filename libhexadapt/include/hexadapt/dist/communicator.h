@@ -1,5 +1,6 @@
-// The ranks a computation is spread over, as the stages see them: a rank number, a count and
-// one collective, the gather of every rank's bytes on every rank. The stages are written
+// The ranks a computation is spread over, as the stages see them: a rank number, a count, the
+// gather of every rank's bytes (on every rank or on one), and the exchange of bytes between
+// neighbouring ranks. The stages are written
 // against this interface only; SerialCommunicator is the one-rank case every serial call
 // uses, and MpiCommunicator (dist/mpi_communicator.h, in the separate hexadapt::mpi
 // library) spreads them over MPI processes.
@@ -29,6 +30,11 @@ class Communicator {
   /// On rank `root`, every rank's `mine`, indexed by rank; on the others, nothing.
   virtual std::vector<std::vector<std::uint8_t>> gather(const std::vector<std::uint8_t>& mine,
                                                         int root) const = 0;
+  /// Sends to[i] to rank peers[i] and returns what each peers[i] sent to this rank, in the
+  /// same order. Rank r lists s exactly when s lists r; no rank lists itself or one rank twice.
+  /// Only the ranks that list each other wait for each other.
+  virtual std::vector<std::vector<std::uint8_t>> exchange(
+      const std::vector<int>& peers, const std::vector<std::vector<std::uint8_t>>& to) const = 0;
   /// Bytes this rank has sent so far.
   virtual std::uint64_t bytes_sent() const = 0;
   /// Ends every rank of the job with exit code `code`: what a rank does when it fails where
@@ -49,6 +55,10 @@ class SerialCommunicator final : public Communicator {
                                                 int) const override {
     return {mine};
   }
+  /// One rank has no peer: throws InternalError when given one.
+  std::vector<std::vector<std::uint8_t>> exchange(
+      const std::vector<int>& peers,
+      const std::vector<std::vector<std::uint8_t>>& to) const override;
   std::uint64_t bytes_sent() const override { return 0; }
   [[noreturn]] void abort(int code) const override;
 };
@@ -85,11 +95,6 @@ class Buffer {
   }
 
   bool done() const { return read_ == bytes_.size(); }
-  /// Passes over n bytes.
-  void skip(std::size_t n) {
-    check(n);
-    read_ += n;
-  }
   /// Throws InternalError when the bytes run out (a rank sent something else).
   template <class T>
   T get() {
@@ -127,6 +132,9 @@ class Buffer {
 
 /// Every rank's buffer, in rank order.
 std::vector<Buffer> all_gather(const Communicator& comm, const Buffer& mine);
+/// What each of `peers` sent, in the order of `peers` (Communicator::exchange).
+std::vector<Buffer> exchange(const Communicator& comm, const std::vector<int>& peers,
+                             const std::vector<Buffer>& to);
 /// On rank `root`, every rank's buffer in rank order; on the others, none.
 std::vector<Buffer> gather(const Communicator& comm, const Buffer& mine, int root);
 

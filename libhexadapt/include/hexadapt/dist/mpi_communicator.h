@@ -18,7 +18,9 @@ class MpiSession {
 };
 
 /// The gathers carry any size: they go in rounds of at most `round_bytes` bytes over all
-/// ranks (MPI counts are int), each rank's bytes arriving in order.
+/// ranks (MPI counts are int), each rank's bytes arriving in order; the exchange sends each
+/// peer's bytes in messages of at most `round_bytes`, all of a round posted at once
+/// (non-blocking), so no order of the peers can deadlock.
 class MpiCommunicator final : public Communicator {
  public:
   static constexpr std::uint64_t default_round_bytes = std::uint64_t(1) << 28;  // 256 MiB
@@ -30,6 +32,9 @@ class MpiCommunicator final : public Communicator {
       const std::vector<std::uint8_t>& mine) const override;
   std::vector<std::vector<std::uint8_t>> gather(const std::vector<std::uint8_t>& mine,
                                                 int root) const override;
+  std::vector<std::vector<std::uint8_t>> exchange(
+      const std::vector<int>& peers,
+      const std::vector<std::vector<std::uint8_t>>& to) const override;
   std::uint64_t bytes_sent() const override { return sent_; }
   [[noreturn]] void abort(int code) const override;
 

@@ -96,4 +96,55 @@ std::vector<std::vector<std::uint8_t>> MpiCommunicator::gather_rounds(
   return out;
 }
 
+std::vector<std::vector<std::uint8_t>> MpiCommunicator::exchange(
+    const std::vector<int>& peers, const std::vector<std::vector<std::uint8_t>>& to) const {
+  if (to.size() != peers.size()) throw InternalError("exchange: one buffer per peer");
+  const std::size_t n = peers.size();
+  std::vector<std::uint64_t> counts(n), sizes(n);
+  std::vector<MPI_Request> requests;
+  requests.reserve(2 * n);
+  const auto wait = [&] {
+    check(MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE),
+          "MPI_Waitall");
+    requests.clear();
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    sizes[i] = to[i].size();
+    requests.emplace_back();
+    check(MPI_Irecv(&counts[i], 1, MPI_UINT64_T, peers[i], 1, MPI_COMM_WORLD, &requests.back()),
+          "MPI_Irecv");
+    requests.emplace_back();
+    check(MPI_Isend(&sizes[i], 1, MPI_UINT64_T, peers[i], 1, MPI_COMM_WORLD, &requests.back()),
+          "MPI_Isend");
+  }
+  wait();
+  std::vector<std::vector<std::uint8_t>> out(n);
+  std::uint64_t largest = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    out[i].resize(counts[i]);
+    largest = std::max({largest, counts[i], sizes[i]});
+    sent_ += sizeof(std::uint64_t) + sizes[i];
+  }
+  // Message k to or from a peer carries bytes [k R, (k + 1) R); messages between two ranks
+  // with one tag arrive in the order they were sent.
+  for (std::uint64_t done = 0; done < largest; done += round_bytes_) {
+    for (std::size_t i = 0; i < n; ++i) {
+      if (counts[i] > done) {
+        requests.emplace_back();
+        check(MPI_Irecv(out[i].data() + done, static_cast<int>(std::min(round_bytes_, counts[i] - done)),
+                        MPI_BYTE, peers[i], 2, MPI_COMM_WORLD, &requests.back()),
+              "MPI_Irecv");
+      }
+      if (sizes[i] > done) {
+        requests.emplace_back();
+        check(MPI_Isend(to[i].data() + done, static_cast<int>(std::min(round_bytes_, sizes[i] - done)),
+                        MPI_BYTE, peers[i], 2, MPI_COMM_WORLD, &requests.back()),
+              "MPI_Isend");
+      }
+    }
+    wait();
+  }
+  return out;
+}
+
 }  // namespace hexadapt::dist
