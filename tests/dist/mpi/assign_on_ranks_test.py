@@ -8,66 +8,21 @@ output.
 usage: assign_on_ranks_test.py TOOLS_DIR WORK_DIR MPIEXEC
 """
 import filecmp
-import json
 import os
-import shutil
-import subprocess
 import sys
 
 import numpy as np
 import vtk
 from vtk.util import numpy_support as ns
 
-TOOLS, WORK, MPIEXEC = sys.argv[1], sys.argv[2], sys.argv[3]
-ASSIGN = os.path.join(TOOLS, "hexadapt-assign")
-shutil.rmtree(WORK, ignore_errors=True)
-os.makedirs(WORK)
-failures = []
+from tool_runs import ToolRuns, grid
 
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-        print("FAIL:", message)
-
-
-def path(*names):
-    return os.path.join(WORK, *names)
+RUNS = ToolRuns(*sys.argv[1:4])
+check, path, report = RUNS.check, RUNS.path, RUNS.report
 
 
 def run(folder, ranks, *args):
-    """hexadapt-assign ARGS in WORK/folder, on `ranks` MPI ranks (0: without mpirun)."""
-    os.makedirs(path(folder), exist_ok=True)
-    command = [ASSIGN, *args]
-    if ranks:
-        command = [MPIEXEC, "-np", str(ranks), "--oversubscribe", *command]
-    r = subprocess.run(command, cwd=path(folder), capture_output=True, text=True)
-    return r.returncode, r.stderr
-
-
-def grid(n, flat=False):
-    """A rectilinear grid of n cells per axis (nz = 0: 2D) with three materials."""
-    axes = [np.linspace(0, 1, k + 1) ** 1.1 * k for k in n[:2]]
-    axes.append(np.array([0.0]) if flat else np.linspace(0, n[2], n[2] + 1))
-    g = vtk.vtkRectilinearGrid()
-    g.SetDimensions(*[len(a) for a in axes])
-    for setter, a in zip((g.SetXCoordinates, g.SetYCoordinates, g.SetZCoordinates), axes):
-        setter(ns.numpy_to_vtk(a, deep=1))
-    centres = vtk.vtkCellCenters()
-    centres.SetInputData(g)
-    centres.Update()
-    c = ns.vtk_to_numpy(centres.GetOutput().GetPoints().GetData())
-    r = np.linalg.norm(c - [n[0] / 2, n[1] / 2, 0 if flat else n[2] / 2], axis=1)
-    # A rough ball: its majority cells pinch at nodes, which the correction must mend,
-    # across the ranks' borders too.
-    r += np.random.default_rng(7).uniform(-1.5, 1.5, len(r)) * (2.5 if flat else 1)
-    ball = np.clip(4.3 - r, 0, 1)
-    slab = np.clip(2.6 - c[:, 1], 0, 1) * (1 - ball)
-    for name, v in (("vf_ball", ball), ("vf_slab", slab), ("vf_matrix", 1 - ball - slab)):
-        a = ns.numpy_to_vtk(v, deep=1)
-        a.SetName(name)
-        g.GetCellData().AddArray(a)
-    return g
+    return RUNS.run("assign", folder, ranks, *args)
 
 
 def write_pieces(g, name, pieces, ghost=0):
@@ -79,21 +34,6 @@ def write_pieces(g, name, pieces, ghost=0):
     w.SetEndPiece(pieces - 1)
     w.SetGhostLevel(ghost)
     w.Write()
-
-
-def report(folder, ranks=None):
-    """The report without what depends on the ranks (checked here when ranks is given)."""
-    with open(path(folder, "out.json")) as f:
-        r = json.load(f)
-    r.pop("times")
-    on = r.pop("ranks", None)  # the ranks, the bytes they sent and the memory they held
-    if ranks:
-        check(on["count"] == ranks and len(on["bytes_sent"]) == ranks
-              and len(on["peak_memory"]) == ranks,
-              "%s: the report's ranks are %r" % (folder, on))
-        check(all(2 ** 20 < m < 2 ** 32 for m in on["peak_memory"]),
-              "%s: peak memory per rank %r" % (folder, on["peak_memory"]))
-    return r
 
 
 def as_serial(case, pvtr, *options):
@@ -253,5 +193,4 @@ check(code == 2 and "hex_2.vtr" in err and err.count("error") == 1,
       "a missing piece on 3 ranks: exit %d, %r" % (code, err))
 check(not [f for f in os.listdir(path("usage")) if f.startswith("out")], "outputs left behind")
 
-print("%d failure(s)" % len(failures))
-sys.exit(1 if failures else 0)
+sys.exit(RUNS.finish())

@@ -8,68 +8,17 @@ message and no output.
 usage: reconstruct_on_ranks_test.py TOOLS_DIR WORK_DIR MPIEXEC
 """
 import filecmp
-import json
 import os
-import shutil
-import subprocess
 import sys
 
 import numpy as np
 import vtk
 from vtk.util import numpy_support as ns
 
-TOOLS, WORK, MPIEXEC = sys.argv[1], sys.argv[2], sys.argv[3]
-shutil.rmtree(WORK, ignore_errors=True)
-os.makedirs(WORK)
-failures = []
+from tool_runs import ToolRuns, add_materials, grid
 
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-        print("FAIL:", message)
-
-
-def path(*names):
-    return os.path.join(WORK, *names)
-
-
-def run(tool, folder, ranks, *args):
-    """hexadapt-TOOL ARGS in WORK/folder, on `ranks` MPI ranks (0: without mpirun)."""
-    os.makedirs(path(folder), exist_ok=True)
-    command = [os.path.join(TOOLS, "hexadapt-" + tool), *args]
-    if ranks:
-        command = [MPIEXEC, "-np", str(ranks), "--oversubscribe", *command]
-    r = subprocess.run(command, cwd=path(folder), capture_output=True, text=True)
-    return r.returncode, r.stderr
-
-
-def fractions(g, centre, flat):
-    """Three materials: a rough ball, a slab below it, the matrix around."""
-    centres = vtk.vtkCellCenters()
-    centres.SetInputData(g)
-    centres.Update()
-    c = ns.vtk_to_numpy(centres.GetOutput().GetPoints().GetData())
-    r = np.linalg.norm(c - centre, axis=1)
-    r += np.random.default_rng(7).uniform(-1, 1, len(r)) * (1.5 if flat else 0.7)
-    ball = np.clip(4.3 - r, 0, 1)
-    slab = np.clip(2.6 - c[:, 1] + centre[1] - 5.5, 0, 1) * (1 - ball)
-    for name, v in (("vf_ball", ball), ("vf_slab", slab), ("vf_matrix", 1 - ball - slab)):
-        a = ns.numpy_to_vtk(v, deep=1)
-        a.SetName(name)
-        g.GetCellData().AddArray(a)
-    return g
-
-
-def rectilinear(n, flat=False):
-    """A rectilinear grid of n cells per axis (2D when flat)."""
-    axes = [np.linspace(0, 1, k + 1) ** 1.1 * k for k in n[:2]]
-    axes.append(np.array([0.0]) if flat else np.linspace(0, n[2], n[2] + 1))
-    g = vtk.vtkRectilinearGrid()
-    g.SetDimensions(*[len(a) for a in axes])
-    for setter, a in zip((g.SetXCoordinates, g.SetYCoordinates, g.SetZCoordinates), axes):
-        setter(ns.numpy_to_vtk(a, deep=1))
-    return fractions(g, [n[0] / 2, n[1] / 2, 0 if flat else n[2] / 2], flat)
+RUNS = ToolRuns(*sys.argv[1:4])
+check, path, run, report = RUNS.check, RUNS.path, RUNS.run, RUNS.report
 
 
 def jittered(n, offset):
@@ -84,7 +33,7 @@ def jittered(n, offset):
     points = vtk.vtkPoints()
     points.SetData(ns.numpy_to_vtk(p + offset, deep=1))
     g.SetPoints(points)
-    return fractions(g, np.array([n[0] / 2, n[1] / 2, n[2] / 2]) + offset, False)
+    return add_materials(g, n, origin=offset)
 
 
 def write_pieces(g, name, pieces, writer):
@@ -95,19 +44,6 @@ def write_pieces(g, name, pieces, writer):
     w.SetStartPiece(0)
     w.SetEndPiece(pieces - 1)
     w.Write()
-
-
-def report(folder, ranks=None):
-    """The report without what depends on the ranks (checked here when ranks is given)."""
-    with open(path(folder, "out.json")) as f:
-        r = json.load(f)
-    r.pop("times")
-    on = r.pop("ranks", None)
-    if ranks:
-        check(on["count"] == ranks and len(on["bytes_sent"]) == ranks
-              and all(b > 0 for b in on["bytes_sent"]) and len(on["peak_memory"]) == ranks,
-              "%s: the report's ranks are %r" % (folder, on))
-    return r
 
 
 def as_serial(case, source, *options):
@@ -144,8 +80,8 @@ def pixels(name, reader):
             for p, par, m, f in zip(c, *arrays)}
 
 
-write_pieces(rectilinear((13, 11, 17)), "hex.pvtr", 4, vtk.vtkXMLPRectilinearGridWriter)
-write_pieces(rectilinear((19, 15, 0), flat=True), "quad.pvtr", 3, vtk.vtkXMLPRectilinearGridWriter)
+write_pieces(grid((13, 11, 17)), "hex.pvtr", 4, vtk.vtkXMLPRectilinearGridWriter)
+write_pieces(grid((19, 15, 0), flat=True), "quad.pvtr", 3, vtk.vtkXMLPRectilinearGridWriter)
 write_pieces(jittered((9, 8, 14), np.array([1e6, -2e5, 3e5])), "far.pvts", 3,
              vtk.vtkXMLPStructuredGridWriter)
 
@@ -193,5 +129,4 @@ check(code != 0 and code != 4 and err.count("error") == 1,
       "an unstructured input on 2 ranks: exit %d, %r" % (code, err))
 check(not os.listdir(path("usage")), "outputs left behind: %s" % os.listdir(path("usage")))
 
-print("%d failure(s)" % len(failures))
-sys.exit(1 if failures else 0)
+sys.exit(RUNS.finish())

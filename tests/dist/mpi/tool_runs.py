@@ -1,0 +1,84 @@
+"""What the tool tests under mpirun share: a clean work folder, the failures found, a tool run
+on some ranks, the report of a run without what depends on the ranks, and grids of three
+materials."""
+import json
+import os
+import shutil
+import subprocess
+
+import numpy as np
+import vtk
+from vtk.util import numpy_support as ns
+
+
+class ToolRuns:
+    def __init__(self, tools, work, mpiexec):
+        self.tools, self.work, self.mpiexec = tools, work, mpiexec
+        shutil.rmtree(work, ignore_errors=True)
+        os.makedirs(work)
+        self.failures = []
+
+    def check(self, ok, message):
+        if not ok:
+            self.failures.append(message)
+            print("FAIL:", message)
+
+    def path(self, *names):
+        return os.path.join(self.work, *names)
+
+    def run(self, tool, folder, ranks, *args):
+        """hexadapt-TOOL ARGS in WORK/folder, on `ranks` MPI ranks (0: without mpirun)."""
+        os.makedirs(self.path(folder), exist_ok=True)
+        command = [os.path.join(self.tools, "hexadapt-" + tool), *args]
+        if ranks:
+            command = [self.mpiexec, "-np", str(ranks), "--oversubscribe", *command]
+        r = subprocess.run(command, cwd=self.path(folder), capture_output=True, text=True)
+        return r.returncode, r.stderr
+
+    def report(self, folder, ranks=None):
+        """WORK/folder/out.json without its times and ranks (checked when ranks is given: the
+        count, and the bytes sent and peak memory of each)."""
+        with open(self.path(folder, "out.json")) as f:
+            r = json.load(f)
+        r.pop("times")
+        on = r.pop("ranks", None)
+        if ranks:
+            self.check(on["count"] == ranks and len(on["bytes_sent"]) == ranks
+                       and len(on["peak_memory"]) == ranks
+                       and all(2 ** 20 < m < 2 ** 32 for m in on["peak_memory"]),
+                       "%s: the report's ranks are %r" % (folder, on))
+        return r
+
+    def finish(self):
+        print("%d failure(s)" % len(self.failures))
+        return 1 if self.failures else 0
+
+
+def add_materials(g, n, flat=False, origin=(0.0, 0.0, 0.0)):
+    """Three materials in `g`, a grid of n cells per axis from `origin`: a rough ball (its
+    majority cells pinch at nodes, which assign's correction must mend, across the ranks'
+    borders too), a slab below it, the matrix around."""
+    centres = vtk.vtkCellCenters()
+    centres.SetInputData(g)
+    centres.Update()
+    c = ns.vtk_to_numpy(centres.GetOutput().GetPoints().GetData()) - origin
+    r = np.linalg.norm(c - [n[0] / 2, n[1] / 2, 0 if flat else n[2] / 2], axis=1)
+    r += np.random.default_rng(7).uniform(-1.5, 1.5, len(r)) * (2.5 if flat else 1)
+    ball = np.clip(4.3 - r, 0, 1)
+    slab = np.clip(2.6 - c[:, 1], 0, 1) * (1 - ball)
+    for name, v in (("vf_ball", ball), ("vf_slab", slab), ("vf_matrix", 1 - ball - slab)):
+        a = ns.numpy_to_vtk(v, deep=1)
+        a.SetName(name)
+        g.GetCellData().AddArray(a)
+    return g
+
+
+def grid(n, flat=False):
+    """A rectilinear grid of n cells per axis (nz = 0: 2D) with add_materials' three."""
+    axes = [np.linspace(0, 1, k + 1) ** 1.1 * k for k in n[:2]]
+    axes.append(np.array([0.0]) if flat else np.linspace(0, n[2], n[2] + 1))
+    g = vtk.vtkRectilinearGrid()
+    g.SetDimensions(*[len(a) for a in axes])
+    for setter, a in zip((g.SetXCoordinates, g.SetYCoordinates, g.SetZCoordinates), axes):
+        setter(ns.numpy_to_vtk(a, deep=1))
+    return add_materials(g, n, flat)
