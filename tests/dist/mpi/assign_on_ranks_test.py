@@ -18,41 +18,11 @@ from vtk.util import numpy_support as ns
 from tool_runs import ToolRuns, grid
 
 RUNS = ToolRuns(*sys.argv[1:4])
-check, path, report = RUNS.check, RUNS.path, RUNS.report
+check, path, report, write_pieces = RUNS.check, RUNS.path, RUNS.report, RUNS.write_pieces
 
 
 def run(folder, ranks, *args):
     return RUNS.run("assign", folder, ranks, *args)
-
-
-def write_pieces(g, name, pieces, ghost=0):
-    w = vtk.vtkXMLPRectilinearGridWriter()
-    w.SetFileName(path(name))
-    w.SetInputData(g)
-    w.SetNumberOfPieces(pieces)
-    w.SetStartPiece(0)
-    w.SetEndPiece(pieces - 1)
-    w.SetGhostLevel(ghost)
-    w.Write()
-
-
-def as_serial(case, pvtr, *options):
-    """Runs `pvtr` with `options` on one process, then on 2 and 3 ranks with --gather: each
-    gathered file must have the serial bytes, each report the serial figures. Returns the
-    serial report."""
-    args = ("../" + pvtr, "-o", "out.vtu", "--gather", "--json", "out.json") + options
-    code, err = run(case + "_serial", 0, *args)
-    check(code == 0, "%s: the serial run exits %d: %s" % (case, code, err))
-    for ranks in (2, 3):
-        folder = "%s_%d" % (case, ranks)
-        code, err = run(folder, ranks, *args)
-        check(code == 0, "%s on %d ranks exits %d: %s" % (case, ranks, code, err))
-        check(filecmp.cmp(path(case + "_serial", "out.vtu"), path(folder, "out.vtu"),
-                          shallow=False),
-              "%s on %d ranks: the gathered file differs from the serial one" % (case, ranks))
-        check(report(case + "_serial") == report(folder, ranks),
-              "%s on %d ranks: the report differs from the serial one" % (case, ranks))
-    return report(case + "_serial")
 
 
 def by_centre(data):
@@ -130,12 +100,12 @@ slab_vf *= 0.3
 thin.GetCellData().GetArray("vf_slab").Modified()
 thin.GetCellData().GetArray("vf_matrix").Modified()
 write_pieces(thin, "thin.pvtr", 4)
-kept = as_serial("thin", "thin.pvtr", "--keep-materials")["assign"]["kept"]
+kept = RUNS.as_serial("assign", "thin", "thin.pvtr", "--keep-materials")["assign"]["kept"]
 check(len(kept) == 1 and kept[0]["name"] == "slab" and kept[0]["cells"] > 10,
       "kept material: the serial run keeps %r" % kept)
 
 # Small pieces (--min-island) joined across the ranks' borders: the serial file and report.
-islands = as_serial("islands", "hex.pvtr", "--min-island", "8")["assign"]["islands"]
+islands = RUNS.as_serial("assign", "islands", "hex.pvtr", "--min-island", "8")["assign"]["islands"]
 check(islands["reassigned"] > 3, "--min-island: the serial run reassigns %r" % islands)
 
 # A label map: its materials are the values of the whole grid, one of them (42) only in the

@@ -7,7 +7,6 @@ message and no output.
 
 usage: reconstruct_on_ranks_test.py TOOLS_DIR WORK_DIR MPIEXEC
 """
-import filecmp
 import os
 import sys
 
@@ -19,6 +18,7 @@ from tool_runs import ToolRuns, add_materials, grid
 
 RUNS = ToolRuns(*sys.argv[1:4])
 check, path, run, report = RUNS.check, RUNS.path, RUNS.run, RUNS.report
+write_pieces = RUNS.write_pieces
 
 
 def jittered(n, offset):
@@ -36,35 +36,6 @@ def jittered(n, offset):
     return add_materials(g, n, origin=offset)
 
 
-def write_pieces(g, name, pieces, writer):
-    w = writer()
-    w.SetFileName(path(name))
-    w.SetInputData(g)
-    w.SetNumberOfPieces(pieces)
-    w.SetStartPiece(0)
-    w.SetEndPiece(pieces - 1)
-    w.Write()
-
-
-def as_serial(case, source, *options):
-    """Reconstructs `source` with `options` on one process, then on 2 and 3 ranks with
-    --gather: each gathered file must have the serial bytes, each report the serial figures.
-    Returns the serial report."""
-    args = ("../" + source, "-o", "out.vtu", "--gather", "--json", "out.json") + options
-    code, err = run("reconstruct", case + "_serial", 0, *args)
-    check(code == 0, "%s: the serial run exits %d: %s" % (case, code, err))
-    for ranks in (2, 3):
-        folder = "%s_%d" % (case, ranks)
-        code, err = run("reconstruct", folder, ranks, *args)
-        check(code == 0, "%s on %d ranks exits %d: %s" % (case, ranks, code, err))
-        check(filecmp.cmp(path(case + "_serial", "out.vtu"), path(folder, "out.vtu"),
-                          shallow=False),
-              "%s on %d ranks: the gathered file differs from the serial one" % (case, ranks))
-        check(report(case + "_serial") == report(folder, ranks),
-              "%s on %d ranks: the report differs from the serial one" % (case, ranks))
-    return report(case + "_serial")
-
-
 def pixels(name, reader):
     """(centre, parent) -> (material, free) of every pixel VTK reads in `name`."""
     r = reader()
@@ -80,23 +51,22 @@ def pixels(name, reader):
             for p, par, m, f in zip(c, *arrays)}
 
 
-write_pieces(grid((13, 11, 17)), "hex.pvtr", 4, vtk.vtkXMLPRectilinearGridWriter)
-write_pieces(grid((19, 15, 0), flat=True), "quad.pvtr", 3, vtk.vtkXMLPRectilinearGridWriter)
-write_pieces(jittered((9, 8, 14), np.array([1e6, -2e5, 3e5])), "far.pvts", 3,
-             vtk.vtkXMLPStructuredGridWriter)
+write_pieces(grid((13, 11, 17)), "hex.pvtr", 4)
+write_pieces(grid((19, 15, 0), flat=True), "quad.pvtr", 3)
+write_pieces(jittered((9, 8, 14), np.array([1e6, -2e5, 3e5])), "far.pvts", 3)
 
 for case, source, options in (("hex", "hex.pvtr", ()), ("hex_nsub1", "hex.pvtr", ("--nsub", "1")),
                               ("hex_nsub2", "hex.pvtr", ("--nsub", "2")),
                               ("quad", "quad.pvtr", ()), ("quad_nsub2", "quad.pvtr", ("--nsub", "2")),
                               ("far", "far.pvts", ("--nsub", "3"))):
-    r = as_serial(case, source, "--majority", *options)
+    r = RUNS.as_serial("reconstruct", case, source, "--majority", *options)
     check(r.get("mixed_cells", 0) > 30 and r["method_stats"]["rounds"] > 3,
           "%s: %r mixed cells, too few to test the ranks" % (case, r.get("mixed_cells")))
 
 # The chain on ranks: assign writes .vts pieces, reconstruct reads them on other ranks.
 code, err = run("assign", "chain", 3, "../hex.pvtr", "-o", "assigned.pvts")
 check(code == 0, "assign on 3 ranks exits %d: %s" % (code, err))
-as_serial("chain", "chain/assigned.pvts")
+RUNS.as_serial("reconstruct", "chain", "chain/assigned.pvts")
 
 # Pieces: one .vtu per rank, read by VTK as the pixels of one process.
 serial = pixels("hex_serial/out.vtu", vtk.vtkXMLUnstructuredGridReader)

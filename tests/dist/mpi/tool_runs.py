@@ -1,6 +1,7 @@
 """What the tool tests under mpirun share: a clean work folder, the failures found, a tool run
 on some ranks, the report of a run without what depends on the ranks, and grids of three
 materials."""
+import filecmp
 import json
 import os
 import shutil
@@ -48,6 +49,37 @@ class ToolRuns:
                        and all(2 ** 20 < m < 2 ** 32 for m in on["peak_memory"]),
                        "%s: the report's ranks are %r" % (folder, on))
         return r
+
+    def as_serial(self, tool, case, source, *options):
+        """Runs hexadapt-TOOL on `source` (in WORK) with `options` on one process, then on 2
+        and 3 ranks with --gather: each gathered file must have the serial bytes, each report
+        the serial figures. Returns the serial report."""
+        args = ("../" + source, "-o", "out.vtu", "--gather", "--json", "out.json") + options
+        code, err = self.run(tool, case + "_serial", 0, *args)
+        self.check(code == 0, "%s: the serial run exits %d: %s" % (case, code, err))
+        for ranks in (2, 3):
+            folder = "%s_%d" % (case, ranks)
+            code, err = self.run(tool, folder, ranks, *args)
+            self.check(code == 0, "%s on %d ranks exits %d: %s" % (case, ranks, code, err))
+            self.check(filecmp.cmp(self.path(case + "_serial", "out.vtu"),
+                                   self.path(folder, "out.vtu"), shallow=False),
+                       "%s on %d ranks: the gathered file differs from the serial one"
+                       % (case, ranks))
+            self.check(self.report(case + "_serial") == self.report(folder, ranks),
+                       "%s on %d ranks: the report differs from the serial one" % (case, ranks))
+        return self.report(case + "_serial")
+
+    def write_pieces(self, g, name, pieces, ghost=0):
+        """`g` in WORK/name as `pieces` pieces, by VTK's parallel writer for its kind."""
+        kind = g.GetClassName().replace("vtk", "")
+        w = getattr(vtk, "vtkXMLP" + kind + "Writer")()
+        w.SetFileName(self.path(name))
+        w.SetInputData(g)
+        w.SetNumberOfPieces(pieces)
+        w.SetStartPiece(0)
+        w.SetEndPiece(pieces - 1)
+        w.SetGhostLevel(ghost)
+        w.Write()
 
     def finish(self):
         print("%d failure(s)" % len(self.failures))
