@@ -80,6 +80,31 @@ for ranks in (2, 3):
     check(got == serial, "hex on %d ranks: VTK reads other pixels in the .pvtu (%d, serial %d)"
           % (ranks, len(got), len(serial)))
 
+# Mixed cells only in the top layers: the ranks below have no pixel and write no piece.
+top = vtk.vtkRectilinearGrid()
+top.SetDimensions(9, 8, 13)
+for setter, n in zip((top.SetXCoordinates, top.SetYCoordinates, top.SetZCoordinates), (9, 8, 13)):
+    setter(ns.numpy_to_vtk(np.arange(float(n)), deep=1))
+centres = vtk.vtkCellCenters()
+centres.SetInputData(top)
+centres.Update()
+ball = np.linalg.norm(ns.vtk_to_numpy(centres.GetOutput().GetPoints().GetData()) - [4, 3.5, 12],
+                      axis=1)
+for name, v in (("vf_ball", np.clip(2.5 - ball, 0, 1)), ("vf_rest", 1 - np.clip(2.5 - ball, 0, 1))):
+    a = ns.numpy_to_vtk(v, deep=1)
+    a.SetName(name)
+    top.GetCellData().AddArray(a)
+write_pieces(top, "top.pvtr", 3)
+for ranks in (0, 3):
+    code, err = run("reconstruct", "top_%d" % ranks, ranks, "../top.pvtr", "--majority", "-o",
+                    "p.pvtu")
+    check(code == 0, "top on %d ranks: exit %d: %s" % (ranks, code, err))
+check(sorted(os.listdir(path("top_3"))) == ["p.pvtu", "p_2.vtu"],
+      "top on 3 ranks: pieces %r, not the last rank's alone" % os.listdir(path("top_3")))
+got, want = (pixels("top_%d/p.pvtu" % r, vtk.vtkXMLPUnstructuredGridReader) for r in (3, 0))
+check(len(want) > 1000 and got == want, "top on 3 ranks: other pixels (%d, serial %d)"
+      % (len(got), len(want)))
+
 # Refused on several ranks before any work, with one message and no output.
 for args, code_wanted, words in (
         (("--model", "m.vtk"), 1, ["--model", "one process"]),
