@@ -128,7 +128,8 @@ io::MeshData gathered_disjoint(const dist::Communicator& comm, const io::MeshDat
   for (dist::Buffer& b : all) {
     const auto shift = static_cast<index_t>(whole.points.size());
     const std::vector<double> p = b.get_vector<double>();
-    for (std::size_t i = 0; i + 2 < p.size(); i += 3) whole.points.emplace_back(p[i], p[i + 1], p[i + 2]);
+    for (std::size_t i = 0; i + 2 < p.size(); i += 3)
+      whole.points.emplace_back(p[i], p[i + 1], p[i + 2]);
     const std::size_t first = whole.cells.size();
     whole.cells.resize(first + b.get<std::uint64_t>());
     b.get_values(whole.cells.data() + first, whole.cells.size() - first);
@@ -174,25 +175,25 @@ std::vector<std::int64_t> grid_labels(const dist::Communicator& comm, const CLI:
 }
 
 Json ranks_json(const dist::Communicator& comm) {
-  return {{"count", comm.size()},
-          {"bytes_sent",
-           dist::all_gather_values(comm, std::vector<std::uint64_t>{comm.bytes_sent()})},
-          {"peak_memory",
-           dist::all_gather_values(comm, std::vector<std::uint64_t>{peak_resident_bytes()})}};
+  return {
+      {"count", comm.size()},
+      {"bytes_sent", dist::all_gather_values(comm, std::vector<std::uint64_t>{comm.bytes_sent()})},
+      {"peak_memory",
+       dist::all_gather_values(comm, std::vector<std::uint64_t>{peak_resident_bytes()})}};
 }
 
 void check_rank_output(const std::string& flag, const std::string& path, bool gather,
                        bool structured) {
-  if (gather || path.empty() || ends_with(path, ".pvtu") || (structured && ends_with(path, ".pvts")))
+  if (gather || path.empty() || ends_with(path, ".pvtu") ||
+      (structured && ends_with(path, ".pvts")))
     return;
+  const std::string formats =
+      structured ? "a .pvtu (.vtu pieces) or a .pvts (.vts pieces)" : "a .pvtu (.vtu pieces)";
   throw OptionError(flag + " " + path +
-                    (structured ? ": on several ranks the output is one piece per rank and the "
-                                  "parallel file that names them: give a .pvtu (.vtu pieces) or "
-                                  "a .pvts (.vts pieces), or --gather for one file of the whole "
-                                  "grid"
-                                : ": on several ranks the output is one piece per rank and the "
-                                  "parallel file that names them: give a .pvtu (.vtu pieces), or "
-                                  "--gather for one file of the whole mesh"));
+                    ": on several ranks the output is one piece per rank and the parallel file "
+                    "that names them: give " +
+                    formats + ", or --gather for one file of the whole " +
+                    (structured ? "grid" : "mesh"));
 }
 
 void write_disjoint_pieces(const dist::Communicator& comm, const CLI::App& app,

@@ -6,7 +6,6 @@
 #include <variant>
 
 #include "cli.h"
-#include "rank_files.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/assigned_grid_file.h"
 #include "hexadapt/io/fractions_reader.h"
@@ -14,6 +13,7 @@
 #include "hexadapt/reconstruct/model_io.h"
 #include "hexadapt/reconstruct/pixel_output.h"
 #include "hexadapt/reconstruct/reconstruct.h"
+#include "rank_files.h"
 
 namespace {
 
@@ -241,8 +241,9 @@ int run_reconstruct_on_ranks(const CLI::App& app, Options& o, cli::CommonOptions
       throw OptionError("--method " + o.method + " runs on one process: on several ranks, greedy");
   });
   const Timer read;
-  const int nsub = o.lib.pixels.nsub ? o.lib.pixels.nsub
-                                     : std::min(reconstruct::default_nsub(2), reconstruct::default_nsub(3));
+  const int nsub = o.lib.pixels.nsub
+                       ? o.lib.pixels.nsub
+                       : std::min(reconstruct::default_nsub(2), reconstruct::default_nsub(3));
   cli::RankInput in = cli::read_on_ranks(comm, app, o.input, o.in.read_options(),
                                          reconstruct::greedy_ghost_layers(nsub, o.lib.greedy));
   if (!o.in.fractions.labels.empty())
@@ -251,10 +252,13 @@ int run_reconstruct_on_ranks(const CLI::App& app, Options& o, cli::CommonOptions
   cli::on_every_rank(comm, app, [&] {
     grid = read_grid(in.data, o, &in.slab.block);
     set_options(o, common, in.shape.dim);
-    std::visit([&](const auto& m) {
-      reconstruct::check_pixel_memory(
-          reconstruct::plan_pixels(m, grid.fractions, grid.material, o.lib.pixels), o.lib.pixels);
-    }, grid.mesh);
+    std::visit(
+        [&](const auto& m) {
+          reconstruct::check_pixel_memory(
+              reconstruct::plan_pixels(m, grid.fractions, grid.material, o.lib.pixels),
+              o.lib.pixels);
+        },
+        grid.mesh);
   });
   o.read_seconds = read.seconds();
   if (comm.rank() != 0) o.lib.progress = nullptr;

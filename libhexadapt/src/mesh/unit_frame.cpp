@@ -29,7 +29,9 @@ UnitFrame frame_of(std::size_t n, const Point& point) {
   return f;
 }
 
-UnitFrame only_far(const UnitFrame& f) { return std::abs(f.exponent) > 64 ? f : UnitFrame{}; }
+UnitFrame only_far(const UnitFrame& f) {
+  return std::abs(f.exponent) > 64 ? f : UnitFrame{};
+}
 
 template <class M, class Move>
 M moved(const M& mesh, const Move& move) {
@@ -57,7 +59,9 @@ UnitFrame unit_frame(const M& mesh) {
                   [&](std::size_t i) { return mesh.point(NodeId(static_cast<index_t>(i))); });
 }
 
-UnitFrame far_unit_frame(const std::vector<Vec3>& points) { return only_far(unit_frame(points)); }
+UnitFrame far_unit_frame(const std::vector<Vec3>& points) {
+  return only_far(unit_frame(points));
+}
 
 template <class M>
 UnitFrame far_unit_frame(const M& mesh) {

@@ -26,7 +26,8 @@ class Greedy {
     next_ = vf_;
     // Neighbours of the free pixels, looked up once for all the diffusion sweeps.
     const int nf = px.faces_per_pixel();
-    const std::int64_t n_free = static_cast<std::int64_t>(slot_of_block_.size()) * px.pixels_per_block();
+    const std::int64_t n_free =
+        static_cast<std::int64_t>(slot_of_block_.size()) * px.pixels_per_block();
     nbr_.resize(static_cast<std::size_t>(n_free * nf));
     // Codes: >= 0 the free index of a free neighbour, -1 none, <= -2 a fixed pixel of
     // material -code - 2.
@@ -40,7 +41,8 @@ class Greedy {
           const index_t qb = px.pixel_block(q);
           code = px.block_free(qb)
                      ? static_cast<std::int64_t>(free_index_[static_cast<std::size_t>(qb)]) *
-                               px.pixels_per_block() + (q - px.first_pixel(qb))
+                               px.pixels_per_block() +
+                           (q - px.first_pixel(qb))
                      : -2 - px.label(q);
         }
         nbr_[static_cast<std::size_t>(i * nf + lf)] = code;
@@ -60,7 +62,9 @@ class Greedy {
   }
 
   index_t n_free_blocks() const { return static_cast<index_t>(slot_of_block_.size()); }
-  index_t block_of_slot(index_t slot) const { return slot_of_block_[static_cast<std::size_t>(slot)]; }
+  index_t block_of_slot(index_t slot) const {
+    return slot_of_block_[static_cast<std::size_t>(slot)];
+  }
   /// The slot of a free block, -1 for a fixed one.
   index_t slot_of_block(index_t b) const { return free_index_[static_cast<std::size_t>(b)]; }
 
@@ -75,8 +79,10 @@ class Greedy {
   /// Every pixel of the block is assigned: its state changes no more.
   bool complete(index_t slot) const {
     const auto [ppb, nm] = sizes();
-    const auto first = slot_label_.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(slot) * ppb);
-    return std::all_of(first, first + static_cast<std::ptrdiff_t>(ppb), [](int m) { return m >= 0; });
+    const auto first =
+        slot_label_.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(slot) * ppb);
+    return std::all_of(first, first + static_cast<std::ptrdiff_t>(ppb),
+                       [](int m) { return m >= 0; });
   }
   /// Takes a block's state from pack().
   void unpack(index_t slot, dist::Buffer& in) {
@@ -91,7 +97,8 @@ class Greedy {
   }
 
   void diffuse(int sweeps) {
-    const std::int64_t n = static_cast<std::int64_t>(slot_of_block_.size()) * px_.pixels_per_block();
+    const std::int64_t n =
+        static_cast<std::int64_t>(slot_of_block_.size()) * px_.pixels_per_block();
     for (int s = 0; s < sweeps; ++s) {
       parallel_for(n, [&](std::int64_t i) { smooth_one(i); });
       std::swap(vf_, next_);
@@ -176,7 +183,8 @@ class Greedy {
     return px_.first_pixel(slot_of_block_[slot]) + i % px_.pixels_per_block();
   }
   double& owed(index_t slot, int m) {
-    return owed_[static_cast<std::size_t>(slot) * static_cast<std::size_t>(nm_) + static_cast<std::size_t>(m)];
+    return owed_[static_cast<std::size_t>(slot) * static_cast<std::size_t>(nm_) +
+                 static_cast<std::size_t>(m)];
   }
   void assign(index_t slot, std::int64_t p, int m) {
     px_.set_label(p, m);
@@ -212,7 +220,8 @@ class Greedy {
       const std::int64_t code = nbr_[static_cast<std::size_t>(i * nf + lf)];
       if (code == -1) continue;
       ++n;
-      const int fixed = code <= -2 ? static_cast<int>(-2 - code) : slot_label_[static_cast<std::size_t>(code)];
+      const int fixed =
+          code <= -2 ? static_cast<int>(-2 - code) : slot_label_[static_cast<std::size_t>(code)];
       if (fixed >= 0) {
         out[fixed] += 1.0;
       } else {
@@ -264,7 +273,8 @@ class GhostRefresh {
       const auto at = 4 * static_cast<std::size_t>(r) + 2 * static_cast<std::size_t>(which);
       return std::make_pair(ranges[at], ranges[at + 1]);
     };
-    const auto meet = [](std::pair<std::int64_t, std::int64_t> a, std::pair<std::int64_t, std::int64_t> b) {
+    const auto meet = [](std::pair<std::int64_t, std::int64_t> a,
+                         std::pair<std::int64_t, std::int64_t> b) {
       return a.first < b.second && b.first < a.second;
     };
     const int me = where.comm.rank();
@@ -276,7 +286,8 @@ class GhostRefresh {
       const auto [first, end] = range(r, 0);
       for (index_t s = 0; s < g.n_free_blocks(); ++s) {
         const std::int64_t id = mine.global(px.block_cell(g.block_of_slot(s)));
-        if (owned_[static_cast<std::size_t>(s)] && id >= first && id < end) sent_.back().push_back(s);
+        if (owned_[static_cast<std::size_t>(s)] && id >= first && id < end)
+          sent_.back().push_back(s);
       }
     }
   }
@@ -294,8 +305,9 @@ class GhostRefresh {
         out[i].put(where_.block.global(px_.block_cell(g.block_of_slot(s))));
         g.pack(s, out[i]);
       }
-      slots.erase(std::remove_if(slots.begin(), slots.end(), [&](index_t s) { return g.complete(s); }),
-                  slots.end());
+      slots.erase(
+          std::remove_if(slots.begin(), slots.end(), [&](index_t s) { return g.complete(s); }),
+          slots.end());
     }
     for (dist::Buffer& in : dist::exchange(where_.comm, peers_, out)) {
       const auto n = in.get<std::uint64_t>();
@@ -303,7 +315,8 @@ class GhostRefresh {
         const CellId c = where_.block.local_cell(in.get<std::int64_t>());
         const index_t b = c.valid() && !where_.block.owns(c) ? px_.cell_block(c) : -1;
         if (b < 0 || g.slot_of_block(b) < 0)
-          throw InternalError("greedy: a rank sent a block this rank does not hold as a free ghost");
+          throw InternalError(
+              "greedy: a rank sent a block this rank does not hold as a free ghost");
         g.unpack(g.slot_of_block(b), in);
       }
     }
@@ -314,7 +327,7 @@ class GhostRefresh {
   const PixelMesh& px_;
   const dist::Distribution& where_;
   std::vector<std::uint8_t> owned_;
-  std::vector<int> peers_;                  ///< the ranks holding cells this rank owns, or owning cells it holds
+  std::vector<int> peers_;  ///< the ranks holding cells this rank owns, or owning cells it holds
   std::vector<std::vector<index_t>> sent_;  ///< per peer, the slots of the owned blocks it holds
 };
 
@@ -366,7 +379,9 @@ GreedyResult greedy_assign(PixelMesh& pixels, const Fractions& fractions,
       rounds_here = 0;
     }
   }
-  parallel_for(nb, [&](std::int64_t s) { fixed[static_cast<std::size_t>(s)] = g.finish(static_cast<index_t>(s)); });
+  parallel_for(nb, [&](std::int64_t s) {
+    fixed[static_cast<std::size_t>(s)] = g.finish(static_cast<index_t>(s));
+  });
   result.fallback_pixels = dist::sum_in_rank_order(where.comm, owned_sum());
   return result;
 }

@@ -89,7 +89,9 @@ Vec3 PixelMesh::centre(std::int64_t p) const {
   return lattice_point(pixel_block(p), {{L[0] + 0.5, L[1] + 0.5, dim_ == 3 ? L[2] + 0.5 : 0.0}});
 }
 
-int default_nsub(int dim) { return dim == 3 ? 4 : 10; }
+int default_nsub(int dim) {
+  return dim == 3 ? 4 : 10;
+}
 
 namespace {
 
@@ -229,7 +231,8 @@ PixelPlan whole_plan(const PixelMesh& pixels, const PixelOptions& options,
   const std::int64_t owned = where.block.owned_cell_end - where.block.owned_cell_first;
   return counted_plan(pixels.dim(), pixels.nsub(), dist::sum_in_rank_order(where.comm, owned),
                       static_cast<index_t>(dist::sum_in_rank_order(where.comm, counts[0])),
-                      static_cast<index_t>(dist::sum_in_rank_order(where.comm, counts[1])), options);
+                      static_cast<index_t>(dist::sum_in_rank_order(where.comm, counts[1])),
+                      options);
 }
 
 template <class M>

@@ -24,7 +24,8 @@ TEST(MpiCommunicator, GathersInRoundsKeepEachRanksBytesInOrder) {
   const auto mine = bytes_of(test::world().rank());
   const auto all = test::world().all_gather(mine);
   ASSERT_EQ(all.size(), static_cast<std::size_t>(test::world().size()));
-  for (int r = 0; r < test::world().size(); ++r) EXPECT_EQ(all[static_cast<std::size_t>(r)], bytes_of(r));
+  for (int r = 0; r < test::world().size(); ++r)
+    EXPECT_EQ(all[static_cast<std::size_t>(r)], bytes_of(r));
   const int root = test::world().size() - 1;
   const auto at_root = test::world().gather(mine, root);
   if (test::world().rank() == root) {
@@ -62,7 +63,8 @@ void expect_same_as_one_rank(const M& whole, const Fractions& fractions,
                              const std::array<int, 3>& cells,
                              const assign::AssignOptions& options) {
   const assign::AssignResult one = assign::assign_materials(whole, fractions, options);
-  const dist::Slab slab = dist::structured_slab(cells, M::dim, test::world().rank(), test::world().size(), 2);
+  const dist::Slab slab =
+      dist::structured_slab(cells, M::dim, test::world().rank(), test::world().size(), 2);
   const auto [mesh, part] = test::held_part(whole, fractions, cells, slab);
   const dist::Distribution where{test::world(), slab.block};
   const assign::AssignResult r = assign::assign_materials(mesh, part, options, where);
@@ -146,7 +148,8 @@ TEST(AssignOnRanks, KeptMaterialsAsOnOneRank) {
   ASSERT_EQ(one.kept.size(), 1u);
   ASSERT_GT(one.kept[0].cells, 20);
   expect_same_as_one_rank(mesh, f, cells, options);
-  const dist::Slab slab = dist::structured_slab(cells, 3, test::world().rank(), test::world().size(), 2);
+  const dist::Slab slab =
+      dist::structured_slab(cells, 3, test::world().rank(), test::world().size(), 2);
   const auto [part_mesh, part] = test::held_part(mesh, f, cells, slab);
   const assign::AssignResult r =
       assign::assign_materials(part_mesh, part, options, {test::world(), slab.block});
@@ -177,7 +180,8 @@ TEST(AssignOnRanks, SmallPiecesAsOnOneRank) {
   const assign::AssignResult one = assign::assign_materials(mesh, f, options);
   ASSERT_GT(one.islands.islands, 20);
   expect_same_as_one_rank(mesh, f, cells, options);
-  const dist::Slab slab = dist::structured_slab(cells, 3, test::world().rank(), test::world().size(), 2);
+  const dist::Slab slab =
+      dist::structured_slab(cells, 3, test::world().rank(), test::world().size(), 2);
   const auto [part_mesh, part] = test::held_part(mesh, f, cells, slab);
   const assign::AssignResult r =
       assign::assign_materials(part_mesh, part, options, {test::world(), slab.block});

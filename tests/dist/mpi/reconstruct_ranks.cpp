@@ -46,8 +46,8 @@ template <class M>
 Reconstruction on_ranks(const M& whole, const Fractions& fractions, const CellMaterials& material,
                         const std::array<int, 3>& cells, const ReconstructOptions& options,
                         int ghost_layers, dist::Block* block) {
-  const dist::Slab slab =
-      dist::structured_slab(cells, M::dim, test::world().rank(), test::world().size(), ghost_layers);
+  const dist::Slab slab = dist::structured_slab(cells, M::dim, test::world().rank(),
+                                                test::world().size(), ghost_layers);
   const auto [mesh, part] = test::held_part(whole, fractions, cells, slab);
   CellMaterials held(static_cast<std::size_t>(slab.block.held_cells));
   for (CellId c : id_range<CellId>(slab.block.held_cells))
@@ -104,8 +104,8 @@ void expect_same_as_one_rank(const M& whole, const Fractions& fractions,
 
 // Three balls crossing every rank border of a grid of many cell shapes.
 Fractions three_balls(const HexMesh& mesh) {
-  return test::ball_fractions(mesh, {{Vec3(3.2, 3.1, 2.9), 2.6}, {Vec3(5.5, 4.4, 6.3), 2.9},
-                                     {Vec3(4.1, 4.3, 9.4), 2.2}});
+  return test::ball_fractions(
+      mesh, {{Vec3(3.2, 3.1, 2.9), 2.6}, {Vec3(5.5, 4.4, 6.3), 2.9}, {Vec3(4.1, 4.3, 9.4), 2.2}});
 }
 
 ReconstructOptions with_nsub(int nsub, int sweeps = 3) {
@@ -130,8 +130,7 @@ TEST(ReconstructOnRanks, NoisyQuadFractionsAsOnOneRank) {
   const std::array<int, 3> cells{23, 17, 1};
   const auto mesh = test::jittered_grid<QuadMesh>(cells, 5);
   const Fractions f = test::random_fractions(mesh.n_cells(), 4, 3, 2);
-  for (int nsub : {0, 1, 2})
-    expect_same_as_one_rank(mesh, f, cells, with_nsub(nsub));
+  for (int nsub : {0, 1, 2}) expect_same_as_one_rank(mesh, f, cells, with_nsub(nsub));
 }
 
 // Cells of 1/8 far from the origin: each slab alone would have another frame.
@@ -142,8 +141,8 @@ TEST(ReconstructOnRanks, AGridFarFromTheOriginAsOnOneRank) {
   std::vector<Vec3> points;
   for (NodeId n : id_range<NodeId>(jittered.n_nodes()))
     points.push_back(jittered.point(n) * 0.125 + Vec3(1e6, -3e5, 7e5));
-  expect_same_as_one_rank(make_hex_grid(cells[0], cells[1], cells[2], std::move(points)), f,
-                          cells, with_nsub(0));
+  expect_same_as_one_rank(make_hex_grid(cells[0], cells[1], cells[2], std::move(points)), f, cells,
+                          with_nsub(0));
 }
 
 // Mixed cells only in the top layers: the lower ranks have no free pixel, some no pixel.
@@ -185,8 +184,7 @@ TEST(ReconstructOnRanks, OtherMethodsAndTheModelAreRefusedOnSeveralRanks) {
   const ReconstructOptions model;
   dist::Block block;
   for (const ReconstructOptions& o : {annealing, model})
-    EXPECT_THROW(on_ranks(mesh, f, majority_materials(f), cells, o, 2, &block),
-                 OptionError);
+    EXPECT_THROW(on_ranks(mesh, f, majority_materials(f), cells, o, 2, &block), OptionError);
 }
 
 }  // namespace

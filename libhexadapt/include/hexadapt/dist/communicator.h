@@ -1,9 +1,9 @@
 // The ranks a computation is spread over, as the stages see them: a rank number, a count, the
 // gather of every rank's bytes (on every rank or on one), and the exchange of bytes between
-// neighbouring ranks. The stages are written
-// against this interface only; SerialCommunicator is the one-rank case every serial call
-// uses, and MpiCommunicator (dist/mpi_communicator.h, in the separate hexadapt::mpi
-// library) spreads them over MPI processes.
+// neighbouring ranks. The stages are written against this interface only;
+// SerialCommunicator is the one-rank case every serial call uses, and MpiCommunicator
+// (dist/mpi_communicator.h, in the separate hexadapt::mpi library) spreads them over MPI
+// processes.
 //
 // Collectives are called by every rank in the same order. Results are ordered by rank, so a
 // computation that combines them in that order gives the same bits on every rank.

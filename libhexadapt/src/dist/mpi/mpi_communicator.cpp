@@ -131,14 +131,16 @@ std::vector<std::vector<std::uint8_t>> MpiCommunicator::exchange(
     for (std::size_t i = 0; i < n; ++i) {
       if (counts[i] > done) {
         requests.emplace_back();
-        check(MPI_Irecv(out[i].data() + done, static_cast<int>(std::min(round_bytes_, counts[i] - done)),
-                        MPI_BYTE, peers[i], 2, MPI_COMM_WORLD, &requests.back()),
+        check(MPI_Irecv(out[i].data() + done,
+                        static_cast<int>(std::min(round_bytes_, counts[i] - done)), MPI_BYTE,
+                        peers[i], 2, MPI_COMM_WORLD, &requests.back()),
               "MPI_Irecv");
       }
       if (sizes[i] > done) {
         requests.emplace_back();
-        check(MPI_Isend(to[i].data() + done, static_cast<int>(std::min(round_bytes_, sizes[i] - done)),
-                        MPI_BYTE, peers[i], 2, MPI_COMM_WORLD, &requests.back()),
+        check(MPI_Isend(to[i].data() + done,
+                        static_cast<int>(std::min(round_bytes_, sizes[i] - done)), MPI_BYTE,
+                        peers[i], 2, MPI_COMM_WORLD, &requests.back()),
               "MPI_Isend");
       }
     }
