@@ -99,9 +99,13 @@ io::MeshData output_data(const reconstruct::Reconstruction& rec, const dist::Blo
   return out;
 }
 
+// The report; `write_seconds`: the time the outputs took, after the stage's own phases.
 cli::Json report(const CLI::App& app, const Options& o, const reconstruct::Reconstruction& rec,
-                 const std::vector<std::string>& files, const PhaseTimes& times) {
+                 const std::vector<std::string>& files, double write_seconds) {
   const auto& r = rec.result;
+  PhaseTimes times{{"read", o.read_seconds}};
+  times.insert(times.end(), r.times.begin(), r.times.end());
+  times.emplace_back("write", write_seconds);
   const double total = r.discrepancy + r.unpixelated_discrepancy;
   log_info("method " + o.method + " (" + r.status + "): edgecut " + std::to_string(r.edgecut) +
            ", discrepancy " + std::to_string(total));
@@ -163,14 +167,11 @@ int run(const M& mesh, const Fractions& f, const CellMaterials& assignment, Opti
            reconstruct::write_model_openmesh(rec.model, f.names(), stem, o.model_format))
         files.push_back(p);
   }
-  PhaseTimes times{{"read", o.read_seconds}};
-  times.insert(times.end(), r.times.begin(), r.times.end());
-  times.emplace_back("write", t.seconds());
+  cli::write_report(common, report(app, o, rec, files, t.seconds()));
   if (lib.method == Method::mip && r.mip.status == reconstruct::MipStatus::timed_out_no_solution)
     log_warning(
         "the MIP found no solution within the time limit: the pixels keep the "
         "largest-remainder fill");
-  cli::write_report(common, report(app, o, rec, files, times));
   return cli::ok;
 }
 
@@ -271,10 +272,7 @@ int run_reconstruct_on_ranks(const CLI::App& app, Options& o, cli::CommonOptions
   Timer t;
   cli::write_disjoint_pieces(comm, app, output_data(rec, in.slab.block, grid.fractions, app),
                              common.output, o.gather, common.write_options());
-  PhaseTimes times{{"read", o.read_seconds}};
-  times.insert(times.end(), rec.result.times.begin(), rec.result.times.end());
-  times.emplace_back("write", t.seconds());
-  cli::Json j = report(app, o, rec, {common.output}, times);
+  cli::Json j = report(app, o, rec, {common.output}, t.seconds());
   j["ranks"] = cli::ranks_json(comm);
   if (comm.rank() != 0) common.json.clear();  // rank 0 writes the report
   cli::write_report(common, j);
