@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <vector>
+
 #include "hexadapt/assign/correction.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/dist/communicator.h"
@@ -44,6 +47,67 @@ TEST(StructuredSlab, TwoDimensionsCutAcrossY) {
 TEST(StructuredSlab, MoreRanksThanLayersAreRefused) {
   EXPECT_THROW(structured_slab({4, 4, 3}, 3, 0, 4, 1), OptionError);
   EXPECT_THROW(structured_slab({0, 4, 3}, 3, 0, 1, 1), OptionError);
+}
+
+// The layers each rank owns in a cut of `weights` over `size` ranks.
+std::vector<std::array<int, 2>> owned_layers(const std::array<int, 3>& cells, int size,
+                                             const std::vector<double>& weights) {
+  std::vector<std::array<int, 2>> out;
+  for (int r = 0; r < size; ++r)
+    out.push_back(weighted_slab(cells, 3, r, size, 1, weights).owned_layers);
+  return out;
+}
+
+using Layers = std::vector<std::array<int, 2>>;
+
+TEST(WeightedSlab, EqualWeightsGiveEveryRankAtMostItsShareOfLayers) {
+  const std::array<int, 3> cells{3, 2, 10};
+  for (int size = 1; size <= 10; ++size) {
+    const Layers cut = owned_layers(cells, size, std::vector<double>(10, 2.5));
+    int next = 0;
+    for (const auto& [first, end] : cut) {
+      EXPECT_EQ(first, next) << size << " ranks";
+      EXPECT_GE(end - first, 1) << size << " ranks";
+      EXPECT_LE(end - first, (10 + size - 1) / size) << size << " ranks";
+      next = end;
+    }
+    EXPECT_EQ(next, 10);
+  }
+}
+
+TEST(WeightedSlab, TheHeaviestRankIsAsLightAsACutAllows) {
+  const std::array<int, 3> cells{2, 2, 8};
+  // Most of the weight in layer 5: it goes to the second rank (14 against 17 the other way).
+  EXPECT_EQ(owned_layers(cells, 2, {1, 1, 1, 1, 1, 12, 1, 1}), (Layers{{0, 5}, {5, 8}}));
+  EXPECT_EQ(owned_layers(cells, 2, {1, 1, 1, 1, 1, 9, 1, 1}), (Layers{{0, 5}, {5, 8}}));
+  EXPECT_EQ(owned_layers(cells, 2, {1, 1, 1, 1, 1, 1, 1, 7}), (Layers{{0, 7}, {7, 8}}));
+  // A belt in the middle: the middle ranks own one layer each, the ends three.
+  EXPECT_EQ(owned_layers(cells, 4, {1, 1, 1, 10, 10, 1, 1, 1}),
+            (Layers{{0, 3}, {3, 4}, {4, 5}, {5, 8}}));
+  // Everything in layer 0: every rank still owns a layer, the first takes the rest it can.
+  EXPECT_EQ(owned_layers(cells, 3, {5, 0, 0, 0, 0, 0, 0, 0}), (Layers{{0, 6}, {6, 7}, {7, 8}}));
+  // All weights zero: as equal weights.
+  EXPECT_EQ(owned_layers(cells, 2, std::vector<double>(8, 0.0)), (Layers{{0, 4}, {4, 8}}));
+  // The slab holds its ghost layers around the owned ones.
+  const Slab s = weighted_slab(cells, 3, 2, 4, 1, {1, 1, 1, 10, 10, 1, 1, 1});
+  EXPECT_EQ(s.first_layer, 3);
+  EXPECT_EQ(s.held[2], 3);
+  EXPECT_EQ(s.block.owned_cell_first, 4);
+  EXPECT_EQ(s.block.owned_cell_end, 8);
+}
+
+TEST(WeightedSlab, BadWeightsAreRefused) {
+  const std::array<int, 3> cells{2, 2, 3};
+  EXPECT_THROW(weighted_slab(cells, 3, 0, 2, 1, {1, -1, 1}), OptionError);
+  EXPECT_THROW(weighted_slab(cells, 3, 0, 2, 1, {1, std::nan(""), 1}), OptionError);
+  EXPECT_THROW(weighted_slab(cells, 3, 0, 2, 1, {1, 1}), InternalError);
+  EXPECT_THROW(weighted_slab(cells, 3, 0, 4, 1, {1, 1, 1}), OptionError);
+}
+
+TEST(LayerSums, OneRankSumsEachLayerOfItsCells) {
+  const Slab s = structured_slab({2, 1, 3}, 3, 0, 1, 1);
+  EXPECT_EQ(layer_sums(serial(), s, {1, 2, 3, 4, 5, 6}), (std::vector<double>{3, 7, 11}));
+  EXPECT_THROW(layer_sums(serial(), s, {1, 2}), InternalError);
 }
 
 TEST(DistBuffer, ValuesComeBackInOrderAndAShortMessageIsABug) {

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "hexadapt/core/error.h"
 #include "reconstruct/cases.h"
 
@@ -107,6 +109,33 @@ TEST(PixelMesh, RefusesBeyondTheMemoryLimitBeforeAllocating) {
   EXPECT_EQ(plan.nsub, 4);
   EXPECT_EQ(plan.n_pixels, 64 * plan.n_blocks);
   EXPECT_GT(plan.bytes, 12.0 * static_cast<double>(plan.n_pixels));
+}
+
+TEST(PixelMesh, CellSharesOfTheEstimateAddUpToThePlan) {
+  const auto c = testcase::sphere(10, 2.2);
+  PixelOptions o;
+  o.method_bytes_per_free_pixel = 40;
+  o.output_bytes_per_pixel = 100;
+  const PixelPlan plan = plan_pixels(c.mesh, c.fractions, c.majority, o);
+  const auto whole = dist::Block::whole(c.mesh.n_cells(), c.mesh.n_nodes());
+  const std::vector<double> shares = owned_cell_bytes(c.mesh, c.fractions, c.majority, o, whole);
+  ASSERT_EQ(shares.size(), static_cast<std::size_t>(c.mesh.n_cells()));
+  double sum = 0;
+  for (double b : shares) sum += b;
+  EXPECT_NEAR(sum, plan.bytes, 1e-9 * plan.bytes);
+  // A plain cell, a pixelated pure one, a mixed one: 4 bytes, then its pixels, then the method's.
+  std::vector<double> kinds(shares);
+  std::sort(kinds.begin(), kinds.end());
+  kinds.erase(std::unique(kinds.begin(), kinds.end()), kinds.end());
+  ASSERT_EQ(kinds.size(), 3u);
+  EXPECT_EQ(kinds[0], 4.0);
+  EXPECT_EQ(kinds[2] - kinds[1], 40.0 * 64);
+  // A part: the shares of the cells it owns.
+  dist::Block part = whole;
+  part.owned_cell_first = 10;
+  part.owned_cell_end = 30;
+  EXPECT_EQ(owned_cell_bytes(c.mesh, c.fractions, c.majority, o, part),
+            std::vector<double>(shares.begin() + 10, shares.begin() + 30));
 }
 
 TEST(PixelMesh, RejectsBadAssignments) {

@@ -210,7 +210,7 @@ void log_result(const assign::AssignResult& r, const Options& o, const Fractions
 int finish(const CLI::App& app, const Options& o, const assign::AssignResult& r,
            const io::FractionReport& fr, const Fractions& fractions, int dimension,
            std::int64_t cells, const std::string& out, PhaseTimes times,
-           const dist::Communicator& comm = dist::serial()) {
+           const cli::Json& ranks = nullptr) {
   cli::Json report = cli::report_header(app);
   report["input"] = o.input;
   report["output"] = out;
@@ -237,7 +237,7 @@ int finish(const CLI::App& app, const Options& o, const assign::AssignResult& r,
     report["assign"]["failure"] = failure_json(*r.correction.failure, fractions);
   report["exit_code"] = r.correction.failure ? cli::target_missed : cli::ok;
   report["times"] = cli::phase_times_json(times);
-  if (comm.size() > 1) report["ranks"] = cli::ranks_json(comm);
+  if (!ranks.is_null()) report["ranks"] = ranks;
   cli::write_report(o.common, report);
   if (r.correction.failure) {
     log(LogLevel::error,
@@ -314,7 +314,8 @@ int run_assign_on_ranks(const CLI::App& app, Options& o, const dist::Communicato
   t.restart();
   io::FractionReport fr;
   AssignedGrid grid;
-  if (!o.in.fractions.labels.empty()) o.in.fractions.label_values = cli::grid_labels(comm, app, o.in, o.input, in);
+  if (!o.in.fractions.labels.empty())
+    o.in.fractions.label_values = cli::grid_labels(comm, app, o.in, o.input, in);
   cli::on_every_rank(comm, app, [&] {
     grid = io::to_assigned_grid(in.data, o.in.grid(io::MaterialSource::none), o.input, &fr,
                                 &in.slab.block);
@@ -340,8 +341,9 @@ int run_assign_on_ranks(const CLI::App& app, Options& o, const dist::Communicato
   times.emplace_back("write", t.seconds());
   std::int64_t cells = 1;
   for (int a = 0; a < in.shape.dim; ++a) cells *= in.shape.cells[static_cast<std::size_t>(a)];
+  const cli::Json ranks = cli::ranks_json(comm, in.slab);
   if (comm.rank() != 0) o.common.json.clear();  // rank 0 writes the report
-  return finish(app, o, r, fr, fractions, in.shape.dim, cells, out, times, comm);
+  return finish(app, o, r, fr, fractions, in.shape.dim, cells, out, times, ranks);
 }
 
 // One process or ranks: the options the flags set, then the run.

@@ -148,12 +148,15 @@ io::MeshData gathered_disjoint(const dist::Communicator& comm, const io::MeshDat
 }  // namespace
 
 RankInput read_on_ranks(const dist::Communicator& comm, const CLI::App& app,
-                        const std::string& path, io::ReadOptions options, int ghost_layers) {
+                        const std::string& path, io::ReadOptions options, int ghost_layers,
+                        const std::vector<double>& layer_weights) {
   RankInput in;
   on_every_rank(comm, app, [&] {
     in.shape = io::structured_shape(path, options);
-    in.slab =
-        dist::structured_slab(in.shape.cells, in.shape.dim, comm.rank(), comm.size(), ghost_layers);
+    in.slab = layer_weights.empty() ? dist::structured_slab(in.shape.cells, in.shape.dim,
+                                                            comm.rank(), comm.size(), ghost_layers)
+                                    : dist::weighted_slab(in.shape.cells, in.shape.dim, comm.rank(),
+                                                          comm.size(), ghost_layers, layer_weights);
   });
   const auto axis = static_cast<std::size_t>(in.shape.dim - 1);
   options.layers = {in.slab.first_layer, in.slab.first_layer + in.slab.held[axis]};
@@ -174,9 +177,14 @@ std::vector<std::int64_t> grid_labels(const dist::Communicator& comm, const CLI:
   return all;
 }
 
-Json ranks_json(const dist::Communicator& comm) {
+Json ranks_json(const dist::Communicator& comm, const dist::Slab& slab) {
+  const std::vector<int> owned(slab.owned_layers.begin(), slab.owned_layers.end());
+  const std::vector<int> all = dist::all_gather_values(comm, owned);
+  Json layers = Json::array();
+  for (std::size_t r = 0; r + 1 < all.size(); r += 2) layers.push_back({all[r], all[r + 1]});
   return {
       {"count", comm.size()},
+      {"layers", layers},
       {"bytes_sent", dist::all_gather_values(comm, std::vector<std::uint64_t>{comm.bytes_sent()})},
       {"peak_memory",
        dist::all_gather_values(comm, std::vector<std::uint64_t>{peak_resident_bytes()})}};

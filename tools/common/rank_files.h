@@ -20,11 +20,13 @@ struct RankInput {
 };
 
 /// Every rank's slab of the structured grid in `path`, holding `ghost_layers` layers of
-/// cells beyond the ones it owns. A parallel file's pieces outside a slab are not read by its
-/// rank; a single file is read whole by every rank, then cut. Errors are common to every
-/// rank (on_every_rank).
+/// cells beyond the ones it owns; cut by layer counts, or by `layer_weights` (one per layer
+/// across the cut axis: dist::weighted_slab) when given. A parallel file's pieces outside a slab
+/// are not read by its rank; a single file is read whole by every rank, then cut. Errors are common
+/// to every rank (on_every_rank).
 RankInput read_on_ranks(const dist::Communicator& comm, const CLI::App& app,
-                        const std::string& path, io::ReadOptions options, int ghost_layers);
+                        const std::string& path, io::ReadOptions options, int ghost_layers,
+                        const std::vector<double>& layer_weights = {});
 
 /// The labels of the label map `input` reads (--labels), over the whole grid: every rank's,
 /// merged, increasing. Errors are common to every rank.
@@ -51,7 +53,7 @@ void write_disjoint_pieces(const dist::Communicator& comm, const CLI::App& app,
 
 /// The report's `ranks` block: the rank count, and per rank the bytes sent and the peak
 /// resident memory. Every rank calls it.
-Json ranks_json(const dist::Communicator& comm);
+Json ranks_json(const dist::Communicator& comm, const dist::Slab& slab);
 
 /// Throws OptionError when `path` cannot take what write_on_ranks writes (a .pvtu, or a .pvts
 /// when `structured`, unless `gather`); `flag` names the option that gave it.

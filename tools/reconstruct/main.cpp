@@ -228,8 +228,27 @@ int run_reconstruct(const CLI::App& app, Options& o, const cli::CommonOptions& c
       grid.mesh);
 }
 
-// On the ranks of an MPI job: each reads its slab of a structured grid with the ghost layers
-// greedy needs, pixelates it and writes the pixels of the cells it owns.
+// The bytes each layer of the grid needs on a rank: the grid's own per cell and the pixels'
+// share (owned_cell_bytes), from `in` read with one ghost layer at least.
+std::vector<double> layer_bytes(const CLI::App& app, const Options& o,
+                                const dist::Communicator& comm, const cli::RankInput& in) {
+  std::vector<double> owned;
+  cli::on_every_rank(comm, app, [&] {
+    const AssignedGrid grid = read_grid(in.data, o, &in.slab.block);
+    owned = std::visit(
+        [&](const auto& m) {
+          return reconstruct::owned_cell_bytes(m, grid.fractions, grid.material, o.lib.pixels,
+                                               in.slab.block);
+        },
+        grid.mesh);
+  });
+  for (double& b : owned) b += cli::reconstruct_grid_bytes_per_cell;
+  return dist::layer_sums(comm, in.slab, owned);
+}
+
+// On the ranks of an MPI job: the grid is read once cut by layer counts to weigh its layers
+// (the pixels follow the mixed cells), then again cut by those weights with the ghost layers
+// greedy needs; each rank pixelates its slab and writes the pixels of the cells it owns.
 int run_reconstruct_on_ranks(const CLI::App& app, Options& o, cli::CommonOptions& common,
                              const dist::Communicator& comm) {
   cli::on_every_rank(comm, app, [&] {
@@ -245,14 +264,20 @@ int run_reconstruct_on_ranks(const CLI::App& app, Options& o, cli::CommonOptions
   const int nsub = o.lib.pixels.nsub
                        ? o.lib.pixels.nsub
                        : std::min(reconstruct::default_nsub(2), reconstruct::default_nsub(3));
-  cli::RankInput in = cli::read_on_ranks(comm, app, o.input, o.in.read_options(),
-                                         reconstruct::greedy_ghost_layers(nsub, o.lib.greedy));
-  if (!o.in.fractions.labels.empty())
-    o.in.fractions.label_values = cli::grid_labels(comm, app, o.in, o.input, in);
+  std::vector<double> weights;
+  {
+    const cli::RankInput probe = cli::read_on_ranks(comm, app, o.input, o.in.read_options(), 1);
+    if (!o.in.fractions.labels.empty())
+      o.in.fractions.label_values = cli::grid_labels(comm, app, o.in, o.input, probe);
+    set_options(o, common, probe.shape.dim);
+    weights = layer_bytes(app, o, comm, probe);
+  }
+  cli::RankInput in =
+      cli::read_on_ranks(comm, app, o.input, o.in.read_options(),
+                         reconstruct::greedy_ghost_layers(nsub, o.lib.greedy), weights);
   AssignedGrid grid;
   cli::on_every_rank(comm, app, [&] {
     grid = read_grid(in.data, o, &in.slab.block);
-    set_options(o, common, in.shape.dim);
     std::visit(
         [&](const auto& m) {
           reconstruct::check_pixel_memory(
@@ -273,7 +298,7 @@ int run_reconstruct_on_ranks(const CLI::App& app, Options& o, cli::CommonOptions
   cli::write_disjoint_pieces(comm, app, output_data(rec, in.slab.block, grid.fractions, app),
                              common.output, o.gather, common.write_options());
   cli::Json j = report(app, o, rec, {common.output}, t.seconds());
-  j["ranks"] = cli::ranks_json(comm);
+  j["ranks"] = cli::ranks_json(comm, in.slab);
   if (comm.rank() != 0) common.json.clear();  // rank 0 writes the report
   cli::write_report(common, j);
   return cli::ok;

@@ -164,12 +164,17 @@ PixelPlan counted_plan(int dim, int nsub, std::int64_t n_cells, index_t n_blocks
   return plan;
 }
 
+int checked_nsub(int dim, const PixelOptions& options) {
+  const int nsub = options.nsub == 0 ? default_nsub(dim) : options.nsub;
+  if (nsub < 1 || nsub > 64)
+    throw OptionError("nsub must be in [1, 64], got " + std::to_string(nsub));
+  return nsub;
+}
+
 template <class M>
 PixelPlan plan_of(const M& mesh, const std::vector<std::uint8_t>& pix,
                   const PixelOptions& options) {
-  const int nsub = options.nsub == 0 ? default_nsub(M::dim) : options.nsub;
-  if (nsub < 1 || nsub > 64)
-    throw OptionError("nsub must be in [1, 64], got " + std::to_string(nsub));
+  const int nsub = checked_nsub(M::dim, options);
   index_t n_blocks = 0, n_free_blocks = 0;
   for (auto v : pix) {
     n_blocks += v ? 1 : 0;
@@ -210,6 +215,23 @@ PixelPlan plan_pixels(const M& mesh, const Fractions& fractions, const CellMater
                       const PixelOptions& options) {
   check_inputs(mesh, fractions, assignment);
   return plan_of(mesh, pixelated_cells(mesh, fractions), options);
+}
+
+template <class M>
+std::vector<double> owned_cell_bytes(const M& mesh, const Fractions& fractions,
+                                     const CellMaterials& assignment, const PixelOptions& options,
+                                     const dist::Block& block) {
+  check_inputs(mesh, fractions, assignment);
+  const int nsub = checked_nsub(M::dim, options);
+  double bytes[3];  // a plain cell, a pixelated pure one, a mixed one
+  for (int kind = 0; kind < 3; ++kind)
+    bytes[kind] = counted_plan(M::dim, nsub, 1, kind > 0 ? 1 : 0, kind == 2 ? 1 : 0, options).bytes;
+  const std::vector<std::uint8_t> kind = pixelated_cells(mesh, fractions);
+  std::vector<double> out;
+  out.reserve(static_cast<std::size_t>(block.owned_cell_end - block.owned_cell_first));
+  for (index_t c = block.owned_cell_first; c < block.owned_cell_end; ++c)
+    out.push_back(bytes[kind[static_cast<std::size_t>(c)]]);
+  return out;
 }
 
 void check_pixel_memory(const PixelPlan& plan, const PixelOptions& options) {
@@ -345,6 +367,12 @@ template PixelPlan plan_pixels(const QuadMesh&, const Fractions&, const CellMate
                                const PixelOptions&);
 template PixelPlan plan_pixels(const HexMesh&, const Fractions&, const CellMaterials&,
                                const PixelOptions&);
+template std::vector<double> owned_cell_bytes(const QuadMesh&, const Fractions&,
+                                              const CellMaterials&, const PixelOptions&,
+                                              const dist::Block&);
+template std::vector<double> owned_cell_bytes(const HexMesh&, const Fractions&,
+                                              const CellMaterials&, const PixelOptions&,
+                                              const dist::Block&);
 template PixelMesh build_pixel_mesh(const QuadMesh&, const Fractions&, const CellMaterials&,
                                     const PixelOptions&, PixelPlan*);
 template PixelMesh build_pixel_mesh(const HexMesh&, const Fractions&, const CellMaterials&,

@@ -7,6 +7,7 @@ message and no output.
 
 usage: reconstruct_on_ranks_test.py TOOLS_DIR WORK_DIR MPIEXEC
 """
+import json
 import os
 import sys
 
@@ -80,7 +81,8 @@ for ranks in (2, 3):
     check(got == serial, "hex on %d ranks: VTK reads other pixels in the .pvtu (%d, serial %d)"
           % (ranks, len(got), len(serial)))
 
-# Mixed cells only in the top layers: the ranks below have no pixel and write no piece.
+# Mixed cells only in the top layers: the grid is cut by the pixels' memory, so the first rank
+# owns most layers, the others a layer of pixels each; a rank without pixels writes no piece.
 top = vtk.vtkRectilinearGrid()
 top.SetDimensions(9, 8, 13)
 for setter, n in zip((top.SetXCoordinates, top.SetYCoordinates, top.SetZCoordinates), (9, 8, 13)):
@@ -95,15 +97,24 @@ for name, v in (("vf_ball", np.clip(2.5 - ball, 0, 1)), ("vf_rest", 1 - np.clip(
     a.SetName(name)
     top.GetCellData().AddArray(a)
 write_pieces(top, "top.pvtr", 3)
-for ranks in (0, 3):
+for ranks in (0, 4):
     code, err = run("reconstruct", "top_%d" % ranks, ranks, "../top.pvtr", "--majority", "-o",
-                    "p.pvtu")
+                    "p.pvtu", "--json", "out.json")
     check(code == 0, "top on %d ranks: exit %d: %s" % (ranks, code, err))
-check(sorted(os.listdir(path("top_3"))) == ["p.pvtu", "p_2.vtu"],
-      "top on 3 ranks: pieces %r, not the last rank's alone" % os.listdir(path("top_3")))
-got, want = (pixels("top_%d/p.pvtu" % r, vtk.vtkXMLPUnstructuredGridReader) for r in (3, 0))
-check(len(want) > 1000 and got == want, "top on 3 ranks: other pixels (%d, serial %d)"
+got, want = (pixels("top_%d/p.pvtu" % r, vtk.vtkXMLPUnstructuredGridReader) for r in (4, 0))
+check(len(want) > 1000 and got == want, "top on 4 ranks: other pixels (%d, serial %d)"
       % (len(got), len(want)))
+with open(path("top_4", "out.json")) as f:
+    layers = json.load(f)["ranks"]["layers"]
+pixel_layers = {parent // (8 * 7) for _, parent in want}
+with_pixels = [r for r, (first, end) in enumerate(layers) if pixel_layers & set(range(first, end))]
+check([first for first, _ in layers] == [0] + [end for _, end in layers[:-1]] and
+      layers[-1][1] == 12 and layers[0][1] > 6 and with_pixels == [1, 2, 3],
+      "top on 4 ranks: owned layers %r, not cut by the pixels (pixels in layers %r)"
+      % (layers, sorted(pixel_layers)))
+check(sorted(os.listdir(path("top_4"))) == ["out.json", "p.pvtu"] +
+      ["p_%d.vtu" % r for r in with_pixels],
+      "top on 4 ranks: pieces %r, not those of the ranks with pixels" % os.listdir(path("top_4")))
 
 # Refused on several ranks before any work, with one message and no output.
 for args, code_wanted, words in (

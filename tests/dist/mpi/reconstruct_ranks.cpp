@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "../../assign/assign_test_cases.h"
+#include "hexadapt/reconstruct/pixel_mesh.h"
 #include "hexadapt/reconstruct/pixel_output.h"
 #include "hexadapt/reconstruct/reconstruct.h"
 #include "slab_case.h"
@@ -45,9 +46,13 @@ io::MeshData gathered(const io::MeshData& piece) {
 template <class M>
 Reconstruction on_ranks(const M& whole, const Fractions& fractions, const CellMaterials& material,
                         const std::array<int, 3>& cells, const ReconstructOptions& options,
-                        int ghost_layers, dist::Block* block) {
-  const dist::Slab slab = dist::structured_slab(cells, M::dim, test::world().rank(),
-                                                test::world().size(), ghost_layers);
+                        int ghost_layers, dist::Block* block,
+                        const std::vector<double>& layer_weights = {}) {
+  const int rank = test::world().rank(), size = test::world().size();
+  const dist::Slab slab =
+      layer_weights.empty()
+          ? dist::structured_slab(cells, M::dim, rank, size, ghost_layers)
+          : dist::weighted_slab(cells, M::dim, rank, size, ghost_layers, layer_weights);
   const auto [mesh, part] = test::held_part(whole, fractions, cells, slab);
   CellMaterials held(static_cast<std::size_t>(slab.block.held_cells));
   for (CellId c : id_range<CellId>(slab.block.held_cells))
@@ -64,14 +69,15 @@ int ghost_layers_for(const ReconstructOptions& options) {
 
 template <class M>
 void expect_same_as_one_rank(const M& whole, const Fractions& fractions,
-                             const std::array<int, 3>& cells, ReconstructOptions options) {
+                             const std::array<int, 3>& cells, ReconstructOptions options,
+                             const std::vector<double>& layer_weights = {}) {
   options.extract_model = false;
   const CellMaterials material = majority_materials(fractions);
   const Reconstruction one = reconstruct::reconstruct(whole, fractions, material, options);
   ASSERT_GT(one.result.plan.n_free_blocks, 0);
   dist::Block block;
-  const Reconstruction r =
-      on_ranks(whole, fractions, material, cells, options, ghost_layers_for<M>(options), &block);
+  const Reconstruction r = on_ranks(whole, fractions, material, cells, options,
+                                    ghost_layers_for<M>(options), &block, layer_weights);
 
   const io::MeshData serial = reconstruct::pixel_mesh_data(one.pixels);
   const io::MeshData all = gathered(reconstruct::pixel_mesh_data(r.pixels, block));
@@ -151,6 +157,34 @@ TEST(ReconstructOnRanks, RanksWithoutMixedCellsAsOnOneRank) {
   const auto mesh = test::jittered_grid<HexMesh>(cells, 2);
   const Fractions f = test::ball_fractions(mesh, {{Vec3(3, 2.5, 12), 1.8}});
   expect_same_as_one_rank(mesh, f, cells, with_nsub(2));
+}
+
+// The tool's cut: every layer weighed by its cells' pixel bytes from slabs of equal layer
+// counts with one ghost layer, then slabs of equal weights. The weights are those of the
+// whole grid on one rank, to the bit, and the pixels those of one rank.
+TEST(ReconstructOnRanks, ACutByPixelBytesAsOnOneRank) {
+  const std::array<int, 3> cells{6, 5, 16};
+  const auto mesh = test::jittered_grid<HexMesh>(cells, 2);
+  const Fractions f = test::ball_fractions(mesh, {{Vec3(3, 2.5, 11), 2.1}});
+  const CellMaterials material = majority_materials(f);
+  const ReconstructOptions options = with_nsub(2);
+  const dist::Slab probe =
+      dist::structured_slab(cells, 3, test::world().rank(), test::world().size(), 1);
+  const auto [held, part] = test::held_part(mesh, f, cells, probe);
+  CellMaterials held_material(static_cast<std::size_t>(probe.block.held_cells));
+  for (CellId c : id_range<CellId>(probe.block.held_cells))
+    held_material[c] = material[CellId(static_cast<index_t>(probe.block.global(c)))];
+  const std::vector<double> weights = dist::layer_sums(
+      test::world(), probe,
+      reconstruct::owned_cell_bytes(held, part, held_material, options.pixels, probe.block));
+
+  const dist::Slab whole = dist::structured_slab(cells, 3, 0, 1, 0);
+  const std::vector<double> serial = dist::layer_sums(
+      dist::serial(), whole,
+      reconstruct::owned_cell_bytes(mesh, f, material, options.pixels, whole.block));
+  EXPECT_EQ(weights, serial);
+  EXPECT_GT(weights[11], 10 * weights[0]);  // the ball's layers weigh the most
+  expect_same_as_one_rank(mesh, f, cells, options, weights);
 }
 
 // One ghost layer is too few (a pure cell's pixels depend on its neighbours' neighbours):

@@ -38,13 +38,14 @@ class ToolRuns:
 
     def report(self, folder, ranks=None):
         """WORK/folder/out.json without its times and ranks (checked when ranks is given: the
-        count, and the bytes sent and peak memory of each)."""
+        count, and the layers owned, bytes sent and peak memory of each)."""
         with open(self.path(folder, "out.json")) as f:
             r = json.load(f)
         r.pop("times")
         on = r.pop("ranks", None)
         if ranks:
             self.check(on["count"] == ranks and len(on["bytes_sent"]) == ranks
+                       and len(on["layers"]) == ranks
                        and len(on["peak_memory"]) == ranks
                        and all(2 ** 20 < m < 2 ** 32 for m in on["peak_memory"]),
                        "%s: the report's ranks are %r" % (folder, on))

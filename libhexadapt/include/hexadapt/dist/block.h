@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <vector>
 
 #include "hexadapt/core/ids.h"
 #include "hexadapt/dist/communicator.h"
@@ -51,8 +52,9 @@ struct Distribution {
 /// axis (z in 3D, y in 2D) into `size` slabs of nearly equal layer counts.
 struct Slab {
   Block block;
-  std::array<int, 3> held{};  ///< cells per axis of the part held (owned and ghost layers)
-  int first_layer = 0;        ///< global index of the first layer held, along the cut axis
+  std::array<int, 3> held{};          ///< cells per axis of the part held (owned and ghost layers)
+  int first_layer = 0;                ///< global index of the first layer held, along the cut axis
+  std::array<int, 2> owned_layers{};  ///< global indices [first, end) of the layers owned
 };
 
 /// Rank `rank`'s slab of `size`, holding `ghost_layers` layers of cells beyond its own on each
@@ -61,5 +63,19 @@ struct Slab {
 /// own no layer (more ranks than layers) or the grid is empty.
 Slab structured_slab(const std::array<int, 3>& cells, int dim, int rank, int size,
                      int ghost_layers);
+
+/// The same, cut by `layer_weights` (one finite weight >= 0 per layer across the last axis,
+/// e.g. the bytes a stage needs for the layer) instead of layer counts: the heaviest rank's
+/// sum of weights is as small as a cut into contiguous layers allows, every rank owning at
+/// least one layer; the earlier ranks take what they can. Throws OptionError as
+/// structured_slab does and on a negative or non-finite weight.
+Slab weighted_slab(const std::array<int, 3>& cells, int dim, int rank, int size, int ghost_layers,
+                   const std::vector<double>& layer_weights);
+
+/// Every layer's sum of `owned` (one value per cell this rank owns in `slab`, in cell order)
+/// over the whole grid, on every rank. A layer is summed in cell order by the rank owning
+/// it, so the sums do not depend on the number of ranks or the cut.
+std::vector<double> layer_sums(const Communicator& comm, const Slab& slab,
+                               const std::vector<double>& owned);
 
 }  // namespace hexadapt::dist

@@ -137,6 +137,16 @@ template <class M>
 PixelPlan plan_pixels(const M& mesh, const Fractions& fractions, const CellMaterials& assignment,
                       const PixelOptions& options);
 
+/// The plan's estimate split over the cells `block` owns, in their order: a cell's share of
+/// the bytes (its pixels and block arrays when pixelated, the method's arrays too when
+/// mixed). On the whole mesh they add up to plan_pixels' bytes; on a rank's part, the
+/// owned cells' shares are exact when the part holds one layer of cells around them (which
+/// cells are pixelated depends on their neighbours). Throws as plan_pixels.
+template <class M>
+std::vector<double> owned_cell_bytes(const M& mesh, const Fractions& fractions,
+                                     const CellMaterials& assignment, const PixelOptions& options,
+                                     const dist::Block& block);
+
 /// Builds the pixel mesh; fixed pixels get their cell's assigned material, free ones
 /// PixelMesh::unassigned. Throws ResourceError when the plan exceeds options.max_memory.
 template <class M>
