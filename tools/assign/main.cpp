@@ -337,7 +337,7 @@ int run_assign_on_ranks(const CLI::App& app, Options& o, const dist::Communicato
     cli::write_on_ranks(
         comm, app,
         output_data(std::move(in.data), grid, r.majority, app, cli::input_record(o.in, fr)), in,
-        out, o.gather, o.common.write_options());
+        out, o.gather, o.common.write_options(), o.common.memory_limit());
   times.emplace_back("write", t.seconds());
   std::int64_t cells = 1;
   for (int a = 0; a < in.shape.dim; ++a) cells *= in.shape.cells[static_cast<std::size_t>(a)];

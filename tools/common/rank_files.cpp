@@ -5,6 +5,7 @@
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/vtk_xml.h"
 #include "hexadapt/mesh/structured.h"
+#include "memory.h"
 #include "ranks.h"
 
 namespace hexadapt::cli {
@@ -106,6 +107,26 @@ void write_structured_pieces(const dist::Communicator& comm, const CLI::App& app
 /// Rank 0's whole mesh from every rank's piece of a mesh whose pieces share no point: the
 /// pieces in rank order, node ids shifted by the points of the ranks before, with rank 0's
 /// metadata and array names and types.
+// The bytes of a mesh's points, cells and arrays in memory.
+double data_bytes(const io::MeshData& d) {
+  double bytes =
+      24.0 * static_cast<double>(d.points.size()) + 4.0 * static_cast<double>(d.cells.size());
+  for (const auto* arrays : {&d.cell_data, &d.point_data})
+    for (const io::DataArray& a : *arrays) bytes += 8.0 * static_cast<double>(a.values.size());
+  return bytes;
+}
+
+// Rank 0 holds every rank's piece twice while gathering (the messages, then the whole mesh):
+// beyond the limit every rank stops before anything travels.
+void check_gather_memory(const dist::Communicator& comm, const CLI::App& app,
+                         const io::MeshData& piece, double limit) {
+  const double whole = dist::sum_in_rank_order(comm, data_bytes(piece));
+  on_every_rank(comm, app, [&] {
+    check_memory("gathering the whole mesh (" + size_text(whole) + ") on rank 0 for --gather",
+                 2 * whole, limit);
+  });
+}
+
 io::MeshData gathered_disjoint(const dist::Communicator& comm, const io::MeshData& piece) {
   dist::Buffer mine;
   std::vector<double> xyz;
@@ -206,8 +227,9 @@ void check_rank_output(const std::string& flag, const std::string& path, bool ga
 
 void write_disjoint_pieces(const dist::Communicator& comm, const CLI::App& app,
                            const io::MeshData& piece, const std::string& path, bool gather,
-                           const io::WriteOptions& options) {
+                           const io::WriteOptions& options, double memory_limit) {
   if (gather) {
+    check_gather_memory(comm, app, piece, memory_limit);
     const io::MeshData whole = gathered_disjoint(comm, piece);
     on_every_rank(comm, app, [&] {
       if (comm.rank() == 0) io::write_mesh(whole, path, options);
@@ -234,9 +256,10 @@ void write_disjoint_pieces(const dist::Communicator& comm, const CLI::App& app,
 
 void write_on_ranks(const dist::Communicator& comm, const CLI::App& app, io::MeshData held,
                     const RankInput& input, const std::string& path, bool gather,
-                    const io::WriteOptions& options) {
+                    const io::WriteOptions& options, double memory_limit) {
   io::keep_layers(held, owned_layers(input.slab, input.shape.dim), path);
   if (gather) {
+    check_gather_memory(comm, app, held, memory_limit);
     io::MeshData whole = gathered(comm, held, input);
     on_every_rank(comm, app, [&] {
       if (comm.rank() == 0) io::write_mesh(whole, path, options);

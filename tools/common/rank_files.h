@@ -21,9 +21,9 @@ struct RankInput {
 
 /// Every rank's slab of the structured grid in `path`, holding `ghost_layers` layers of
 /// cells beyond the ones it owns; cut by layer counts, or by `layer_weights` (one per layer
-/// across the cut axis: dist::weighted_slab) when given. A parallel file's pieces outside a slab
-/// are not read by its rank; a single file is read whole by every rank, then cut. Errors are common
-/// to every rank (on_every_rank).
+/// across the cut axis: dist::weighted_slab) when given. A parallel file's pieces outside a
+/// slab are not read by its rank; a single file is read whole by every rank, then cut.
+/// Errors are common to every rank (on_every_rank).
 RankInput read_on_ranks(const dist::Communicator& comm, const CLI::App& app,
                         const std::string& path, io::ReadOptions options, int ghost_layers,
                         const std::vector<double>& layer_weights = {});
@@ -37,22 +37,24 @@ std::vector<std::int64_t> grid_labels(const dist::Communicator& comm, const CLI:
 /// Writes the owned part of every rank's `held` data (the layers of `input.slab`) to `path`:
 /// a .pvtu naming one .vtu piece per rank (`<path without .pvtu>_<rank>.vtu`, written by
 /// their ranks), or with `gather` one file of the whole grid in any format, written by
-/// rank 0 with the same bytes a run on one process writes. Errors are common to every rank.
+/// rank 0 with the same bytes a run on one process writes. Rank 0 holds the whole mesh twice
+/// while gathering: beyond `memory_limit` every rank stops (ResourceError) before anything
+/// travels. Errors are common to every rank.
 void write_on_ranks(const dist::Communicator& comm, const CLI::App& app, io::MeshData held,
                     const RankInput& input, const std::string& path, bool gather,
-                    const io::WriteOptions& options);
+                    const io::WriteOptions& options, double memory_limit);
 
 /// Writes every rank's `piece`, the part of one unstructured mesh whose cells the rank owns (no
 /// point shared with another piece, the whole being the pieces in rank order), to `path`: a
 /// .pvtu naming one .vtu per rank that has cells, or with `gather` one file written by
-/// rank 0 with the bytes of one process writing the whole mesh. Errors are common to every
-/// rank.
+/// rank 0 with the bytes of one process writing the whole mesh (checked against
+/// `memory_limit` as write_on_ranks does). Errors are common to every rank.
 void write_disjoint_pieces(const dist::Communicator& comm, const CLI::App& app,
                            const io::MeshData& piece, const std::string& path, bool gather,
-                           const io::WriteOptions& options);
+                           const io::WriteOptions& options, double memory_limit);
 
-/// The report's `ranks` block: the rank count, and per rank the bytes sent and the peak
-/// resident memory. Every rank calls it.
+/// The report's `ranks` block: the rank count, and per rank the layers of `slab` it owns, the
+/// bytes sent and the peak resident memory. Every rank calls it.
 Json ranks_json(const dist::Communicator& comm, const dist::Slab& slab);
 
 /// Throws OptionError when `path` cannot take what write_on_ranks writes (a .pvtu, or a .pvts

@@ -296,7 +296,8 @@ int run_reconstruct_on_ranks(const CLI::App& app, Options& o, cli::CommonOptions
       grid.mesh);
   Timer t;
   cli::write_disjoint_pieces(comm, app, output_data(rec, in.slab.block, grid.fractions, app),
-                             common.output, o.gather, common.write_options());
+                             common.output, o.gather, common.write_options(),
+                             common.memory_limit());
   cli::Json j = report(app, o, rec, {common.output}, t.seconds());
   j["ranks"] = cli::ranks_json(comm, in.slab);
   if (comm.rank() != 0) common.json.clear();  // rank 0 writes the report

@@ -132,6 +132,16 @@ check(code == 2 and "material" in err and "--majority" in err and err.count("err
 code, err = run("reconstruct", "usage", 2, "../hex_serial/out.vtu", "--majority", "-o", "out.pvtu")
 check(code != 0 and code != 4 and err.count("error") == 1,
       "an unstructured input on 2 ranks: exit %d, %r" % (code, err))
+# --gather holds the whole pixel mesh twice on rank 0: at a --max-memory of the one-process
+# estimate every rank's part passes, the gather does not (exit 5 before anything travels).
+limit = "%d" % report("hex_serial")["memory_estimate_bytes"]
+code, err = run("reconstruct", "usage", 2, "../hex.pvtr", "--majority", "-o", "out.vtu",
+                "--gather", "--max-memory", limit)
+check(code == 5 and err.count("error") == 1 and "gathering" in err,
+      "--gather beyond --max-memory on 2 ranks: exit %d, %r" % (code, err))
+code, err = run("reconstruct", "limit", 2, "../hex.pvtr", "--majority", "-o", "out.pvtu",
+                "--max-memory", limit)
+check(code == 0, "pieces within --max-memory on 2 ranks: exit %d, %r" % (code, err))
 check(not os.listdir(path("usage")), "outputs left behind: %s" % os.listdir(path("usage")))
 
 sys.exit(RUNS.finish())

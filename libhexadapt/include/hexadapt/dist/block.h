@@ -48,8 +48,8 @@ struct Distribution {
   }
 };
 
-/// A structured grid's slab: `cells` per axis (the unused axis 1 in 2D), cut across its last
-/// axis (z in 3D, y in 2D) into `size` slabs of nearly equal layer counts.
+/// A rank's slab of a structured grid of `cells` per axis (the unused axis 1 in 2D), cut
+/// across its last axis (z in 3D, y in 2D) into one slab of contiguous layers per rank.
 struct Slab {
   Block block;
   std::array<int, 3> held{};          ///< cells per axis of the part held (owned and ghost layers)
