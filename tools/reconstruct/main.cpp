@@ -24,7 +24,8 @@ struct Options {
   std::string input, model, model_format = "om";
   cli::InputOptions in;
   bool majority = false;
-  bool gather = false;  ///< on ranks: one output file written by rank 0
+  bool gather = false;         ///< on ranks: one output file written by rank 0
+  std::string cut = "memory";  ///< on ranks: slabs of equal pixel memory, or equal layer counts
   reconstruct::ReconstructOptions lib;
   std::string method = reconstruct::to_string(lib.method);  ///< --method, parsed into lib
   double read_seconds = 0;                                  ///< reading the input, for the report
@@ -210,6 +211,13 @@ void add_options(CLI::App& app, Options& o, cli::CommonOptions& common) {
   app.add_flag("--gather", o.gather,
                "Under mpirun on several ranks: write one file of the whole pixel mesh (any "
                "format) instead of a .vtu piece per rank and the .pvtu naming them");
+  app.add_option("--cut", o.cut,
+                 "Under mpirun on several ranks, how the grid is cut into slabs: 'memory' reads "
+                 "it once more first to give each rank an equal share of the pixels' memory; "
+                 "'layers' gives each the same number of layers and reads the grid once "
+                 "(faster, balanced when the interface spreads evenly across the layers)")
+      ->check(CLI::IsMember({"memory", "layers"}))
+      ->capture_default_str();
 }
 
 // Reads the assigned grid and reconstructs it.
@@ -246,9 +254,10 @@ std::vector<double> layer_bytes(const CLI::App& app, const Options& o,
   return dist::layer_sums(comm, in.slab, owned);
 }
 
-// On the ranks of an MPI job: the grid is read once cut by layer counts to weigh its layers
-// (the pixels follow the mixed cells), then again cut by those weights with the ghost layers
-// greedy needs; each rank pixelates its slab and writes the pixels of the cells it owns.
+// On the ranks of an MPI job: each rank reads its slab of the grid with the ghost layers
+// greedy needs, pixelates it and writes the pixels of the cells it owns. With --cut memory
+// the grid is first read cut by layer counts to weigh its layers (the pixels follow the mixed
+// cells), and the slabs are cut by those weights.
 int run_reconstruct_on_ranks(const CLI::App& app, Options& o, cli::CommonOptions& common,
                              const dist::Communicator& comm) {
   cli::on_every_rank(comm, app, [&] {
@@ -264,17 +273,22 @@ int run_reconstruct_on_ranks(const CLI::App& app, Options& o, cli::CommonOptions
   const int nsub = o.lib.pixels.nsub
                        ? o.lib.pixels.nsub
                        : std::min(reconstruct::default_nsub(2), reconstruct::default_nsub(3));
-  std::vector<double> weights;
-  {
-    const cli::RankInput probe = cli::read_on_ranks(comm, app, o.input, o.in.read_options(), 1);
+  // The labels of the whole grid and the options that depend on its dimension.
+  const auto prepare = [&](const cli::RankInput& first) {
     if (!o.in.fractions.labels.empty())
-      o.in.fractions.label_values = cli::grid_labels(comm, app, o.in, o.input, probe);
-    set_options(o, common, probe.shape.dim);
+      o.in.fractions.label_values = cli::grid_labels(comm, app, o.in, o.input, first);
+    set_options(o, common, first.shape.dim);
+  };
+  std::vector<double> weights;
+  if (o.cut == "memory") {
+    const cli::RankInput probe = cli::read_on_ranks(comm, app, o.input, o.in.read_options(), 1);
+    prepare(probe);
     weights = layer_bytes(app, o, comm, probe);
   }
   cli::RankInput in =
       cli::read_on_ranks(comm, app, o.input, o.in.read_options(),
                          reconstruct::greedy_ghost_layers(nsub, o.lib.greedy), weights);
+  if (weights.empty()) prepare(in);
   AssignedGrid grid;
   cli::on_every_rank(comm, app, [&] {
     grid = read_grid(in.data, o, &in.slab.block);

@@ -81,8 +81,9 @@ for ranks in (2, 3):
     check(got == serial, "hex on %d ranks: VTK reads other pixels in the .pvtu (%d, serial %d)"
           % (ranks, len(got), len(serial)))
 
-# Mixed cells only in the top layers: the grid is cut by the pixels' memory, so the first rank
-# owns most layers, the others a layer of pixels each; a rank without pixels writes no piece.
+# Mixed cells only in the top layers: the grid is cut by the pixels' memory (the default --cut),
+# so the first rank owns most layers, the others a layer of pixels each; a rank without
+# pixels writes no piece.
 top = vtk.vtkRectilinearGrid()
 top.SetDimensions(9, 8, 13)
 for setter, n in zip((top.SetXCoordinates, top.SetYCoordinates, top.SetZCoordinates), (9, 8, 13)):
@@ -115,6 +116,16 @@ check([first for first, _ in layers] == [0] + [end for _, end in layers[:-1]] an
 check(sorted(os.listdir(path("top_4"))) == ["out.json", "p.pvtu"] +
       ["p_%d.vtu" % r for r in with_pixels],
       "top on 4 ranks: pieces %r, not those of the ranks with pixels" % os.listdir(path("top_4")))
+# --cut layers: equal layer counts, the grid read once; the same pixels.
+code, err = run("reconstruct", "top_layers", 4, "../top.pvtr", "--majority", "-o", "p.pvtu",
+                "--json", "out.json", "--cut", "layers")
+check(code == 0, "top on 4 ranks, --cut layers: exit %d: %s" % (code, err))
+with open(path("top_layers", "out.json")) as f:
+    layers = json.load(f)["ranks"]["layers"]
+check(layers == [[0, 3], [3, 6], [6, 9], [9, 12]], "--cut layers: owned layers %r" % layers)
+got = pixels("top_layers/p.pvtu", vtk.vtkXMLPUnstructuredGridReader)
+check(got == want, "top on 4 ranks, --cut layers: other pixels (%d, serial %d)"
+      % (len(got), len(want)))
 
 # Refused on several ranks before any work, with one message and no output.
 for args, code_wanted, words in (
