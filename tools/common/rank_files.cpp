@@ -104,9 +104,6 @@ void write_structured_pieces(const dist::Communicator& comm, const CLI::App& app
   });
 }
 
-/// Rank 0's whole mesh from every rank's piece of a mesh whose pieces share no point: the
-/// pieces in rank order, node ids shifted by the points of the ranks before, with rank 0's
-/// metadata and array names and types.
 // The bytes of a mesh's points, cells and arrays in memory.
 double data_bytes(const io::MeshData& d) {
   double bytes =
@@ -127,6 +124,9 @@ void check_gather_memory(const dist::Communicator& comm, const CLI::App& app,
   });
 }
 
+/// Rank 0's whole mesh from every rank's piece of a mesh whose pieces share no point: the
+/// pieces in rank order, node ids shifted by the points of the ranks before, with rank 0's
+/// metadata and array names and types.
 io::MeshData gathered_disjoint(const dist::Communicator& comm, const io::MeshData& piece) {
   dist::Buffer mine;
   std::vector<double> xyz;
