@@ -103,6 +103,24 @@ MeshData read_mesh(const std::string& path, const ReadOptions& options) {
   return data;
 }
 
+RankPieces read_rank_pieces(const std::string& path, const ReadOptions& options, int rank,
+                            int size) {
+  if (extension_of(path) != ".pvtu")
+    throw OptionError(path + ": only a .pvtu's pieces are read on several ranks, not a " +
+                      quote_token(extension_of(path)));
+  detail::VtkXmlDocument doc;
+  detail::load_vtk_xml(doc, read_whole_file(path), path);
+  if (doc.type != "PUnstructuredGrid")
+    throw InputError(path, "", "holds a " + quote_token(doc.type) + ", not a PUnstructuredGrid");
+  return detail::read_rank_pieces(doc, {options, read_whole_file, 0}, rank, size);
+}
+
+MeshPart merge_rank_pieces(const dist::Communicator& comm, RankPieces pieces,
+                           const ReadOptions& options) {
+  return detail::merge_on_ranks(comm, std::move(pieces.pieces), pieces.index,
+                                options.weld_tolerance, pieces.file);
+}
+
 StructuredShape structured_shape(const std::string& path, const ReadOptions& options) {
   const std::string ext = extension_of(path);
   if (ext == ".pvts" || ext == ".pvtr" || ext == ".pvti") {

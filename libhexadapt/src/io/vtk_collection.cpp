@@ -3,6 +3,9 @@
 // (vtk_collection_structured.cpp) or the time-step choice (vtk_collection_time.cpp).
 #include "vtk_collection.h"
 
+#include <iterator>
+#include <limits>
+
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/vtk_xml.h"
 #include "vtk_xml_reader.h"
@@ -32,13 +35,21 @@ bool has_parent_component(const std::string& path) {
   return false;
 }
 
-// The pieces of a .pvtu, each an UnstructuredGrid; empty pieces (VTK writes them when there
-// are more pieces than cells) are skipped.
-MeshData read_parallel_unstructured(const VtkXmlDocument& doc, const CollectionContext& ctx) {
+pugi::xml_node parallel_unstructured(const VtkXmlDocument& doc) {
   const pugi::xml_node dataset = doc.root.child("PUnstructuredGrid");
   if (!dataset) throw InputError(doc.file, place(doc.root), "no <PUnstructuredGrid> element");
-  std::vector<NamedMesh> pieces;
-  for (const pugi::xml_node e : dataset.children("Piece")) {
+  return dataset;
+}
+
+// Piece k of a .pvtu's list (k in [first, end)) read as `pieces` and `index` take them; empty
+// pieces (VTK writes them when there are more pieces than cells) are skipped.
+void read_pieces(const VtkXmlDocument& doc, const CollectionContext& ctx, std::size_t first,
+                 std::size_t end, std::vector<NamedMesh>& pieces,
+                 std::vector<std::int64_t>& index) {
+  std::size_t k = 0;
+  for (const pugi::xml_node e : parallel_unstructured(doc).children("Piece")) {
+    if (k++ < first) continue;
+    if (k > end) break;
     const std::string path = resolve_reference(doc, e, e.attribute("Source").as_string());
     const std::string content = load_reference(doc, e, path, ctx);
     VtkXmlDocument piece;
@@ -52,8 +63,16 @@ MeshData read_parallel_unstructured(const VtkXmlDocument& doc, const CollectionC
     NamedMesh m{path, {}};
     read_unstructured(piece, ctx.options, m.data);
     pieces.push_back(std::move(m));
+    index.push_back(static_cast<std::int64_t>(k - 1));
   }
-  if (pieces.empty()) throw InputError(doc.file, place(dataset), "no piece with cells");
+}
+
+MeshData read_parallel_unstructured(const VtkXmlDocument& doc, const CollectionContext& ctx) {
+  std::vector<NamedMesh> pieces;
+  std::vector<std::int64_t> index;
+  read_pieces(doc, ctx, 0, std::numeric_limits<std::size_t>::max(), pieces, index);
+  if (pieces.empty())
+    throw InputError(doc.file, place(parallel_unstructured(doc)), "no piece with cells");
   return merge_pieces(std::move(pieces), ctx.options.weld_tolerance, doc.file);
 }
 
@@ -171,6 +190,20 @@ MeshData read_collection_document(const VtkXmlDocument& doc, const CollectionCon
                    "type " + quote_token(t) +
                        " is not a collection (PUnstructuredGrid, PStructuredGrid, "
                        "PRectilinearGrid, PImageData, vtkMultiBlockDataSet or Collection)");
+}
+
+RankPieces read_rank_pieces(const VtkXmlDocument& doc, const CollectionContext& ctx, int rank,
+                            int size) {
+  const std::size_t n = static_cast<std::size_t>(
+      std::distance(parallel_unstructured(doc).children("Piece").begin(),
+                    parallel_unstructured(doc).children("Piece").end()));
+  const auto share = [&](int r) {
+    return n * static_cast<std::size_t>(r) / static_cast<std::size_t>(size);
+  };
+  RankPieces out;
+  out.file = doc.file;
+  read_pieces(doc, ctx, share(rank), share(rank + 1), out.pieces, out.index);
+  return out;
 }
 
 }  // namespace detail

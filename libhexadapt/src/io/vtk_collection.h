@@ -1,6 +1,8 @@
 // Private to the collection reader (vtk_collection.h): what its files share.
 #pragma once
 
+#include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -17,11 +19,6 @@ struct CollectionContext {
   int depth = 0;
 };
 
-/// A piece or block of a collection, read, with its file name for messages.
-struct NamedMesh {
-  std::string file;
-  MeshData data;
-};
 
 /// The path of `reference` (as the element `e` of `doc` gives it) relative to the folder of
 /// doc.file. Throws InputError for an empty, absolute or escaping ("..") name.
@@ -37,12 +34,33 @@ std::string load_reference(const VtkXmlDocument& doc, const pugi::xml_node& e,
 MeshData read_reference(const VtkXmlDocument& doc, const pugi::xml_node& e, const char* attribute,
                         const CollectionContext& ctx);
 
+/// A .pvtu's pieces that rank `rank` of `size` reads (io::read_rank_pieces).
+RankPieces read_rank_pieces(const VtkXmlDocument& doc, const CollectionContext& ctx, int rank,
+                            int size);
+
 /// Reads a parsed collection document (P* types, vtkMultiBlockDataSet, Collection).
 MeshData read_collection_document(const VtkXmlDocument& doc, const CollectionContext& ctx);
 
 /// Merges pieces of one mesh (see vtk_collection.h, .pvtu). `file` names the collection.
 MeshData merge_pieces(std::vector<NamedMesh> pieces, double weld_tolerance,
                       const std::string& file);
+
+/// The same, each rank holding some of the pieces: `index` gives each one's place in the
+/// whole list (increasing, the ranks' in rank order). Every rank calls it; errors are the
+/// same on every rank.
+MeshPart merge_on_ranks(const dist::Communicator& comm, std::vector<NamedMesh> pieces,
+                        const std::vector<std::int64_t>& index, double weld_tolerance,
+                        const std::string& file);
+
+/// The first piece of every rank's `pieces` (lowest rank first): its file, kind, metadata and
+/// arrays without their values. Throws InputError naming `file` when no rank has a piece.
+/// Every rank calls it.
+NamedMesh first_piece_header(const dist::Communicator& comm, const std::vector<NamedMesh>& pieces,
+                             const std::string& file);
+
+/// Runs f on every rank; when it throws InputError on some, every rank throws the lowest such
+/// rank's. Every rank calls it.
+void agree_on_input_errors(const dist::Communicator& comm, const std::function<void()>& f);
 
 /// VTK's array of ghost flags (cell and point data of the pieces of a parallel file).
 constexpr const char* ghost_array = "vtkGhostType";

@@ -10,6 +10,8 @@
 #include "hexadapt/core/error.h"
 #include "hexadapt/core/geometry.h"
 #include "hexadapt/core/log.h"
+#include "hexadapt/dist/merge_pieces.h"
+#include "hexadapt/dist/routing.h"
 #include "vtk_collection.h"
 
 namespace hexadapt::io::detail {
@@ -37,14 +39,14 @@ void remove_array(std::vector<DataArray>& arrays, const std::string& name) {
                arrays.end());
 }
 
-void check_same_kind(const std::vector<NamedMesh>& pieces, const std::string& file) {
+void check_same_kind(const NamedMesh& first, const std::vector<NamedMesh>& pieces,
+                     const std::string& file) {
   const auto kind = [](int dim) { return dim == 3 ? "hexes" : "quads"; };
   for (const NamedMesh& p : pieces)
-    if (p.data.dim != pieces.front().data.dim)
+    if (p.data.dim != first.data.dim)
       throw InputError(file, quote_token(p.file),
                        std::string("holds ") + kind(p.data.dim) + " but " +
-                           quote_token(pieces.front().file) + " holds " +
-                           kind(pieces.front().data.dim) +
+                           quote_token(first.file) + " holds " + kind(first.data.dim) +
                            ": the pieces and blocks of one mesh hold one kind of cell");
 }
 
@@ -87,78 +89,24 @@ std::vector<double> shortest_edges(const MeshData& d) {
   return h;
 }
 
-using Key = std::array<std::int64_t, 3>;
-
-// rep[q]: the first point (in order) of another piece within the tolerance of q, or q.
-std::vector<std::size_t> weld(const std::vector<Vec3>& points, const std::vector<int>& piece,
-                              const std::vector<double>& tol) {
-  std::vector<std::size_t> rep(points.size());
-  for (std::size_t q = 0; q < rep.size(); ++q) rep[q] = q;
-  double max_tol = 0;
-  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  for (std::size_t q = 0; q < points.size(); ++q) {
-    max_tol = std::max(max_tol, tol[q]);
-    lo = lo.cwiseMin(points[q]);
-    hi = hi.cwiseMax(points[q]);
-  }
-  if (max_tol <= 0) return rep;
-  // Buckets twice the largest tolerance: a point's neighbourhood spans <= 2 per axis. Keys
-  // stay well inside 64 bits (a tolerance below the grid's size / 2^52 is not resolvable).
-  const double g = std::max(2 * max_tol, (hi - lo).maxCoeff() / 4503599627370496.0);
-  const auto key_of = [&](const Vec3& p, int a, double shift) {
-    return static_cast<std::int64_t>(std::floor((p[a] + shift - lo[a]) / g));
-  };
-  std::vector<std::pair<Key, std::size_t>> sorted;
-  sorted.reserve(points.size());
-  for (std::size_t q = 0; q < points.size(); ++q)
-    if (tol[q] > 0)
-      sorted.push_back(
-          {{key_of(points[q], 0, 0), key_of(points[q], 1, 0), key_of(points[q], 2, 0)}, q});
-  std::sort(sorted.begin(), sorted.end());
-  for (const auto& [unused, q] : sorted) {
-    (void)unused;
-    Key from, to;
-    for (int a = 0; a < 3; ++a) {
-      from[static_cast<std::size_t>(a)] = key_of(points[q], a, -tol[q]);
-      to[static_cast<std::size_t>(a)] = key_of(points[q], a, tol[q]);
-    }
-    std::size_t best = q;
-    for (std::int64_t i = from[0]; i <= to[0]; ++i)
-      for (std::int64_t j = from[1]; j <= to[1]; ++j)
-        for (std::int64_t k = from[2]; k <= to[2]; ++k) {
-          const Key key{i, j, k};
-          auto it =
-              std::lower_bound(sorted.begin(), sorted.end(), std::pair<Key, std::size_t>{key, 0});
-          for (; it != sorted.end() && it->first == key; ++it) {
-            const std::size_t p = it->second;
-            if (p < best && piece[p] != piece[q] &&
-                (points[p] - points[q]).norm() <= std::min(tol[p], tol[q]))
-              best = p;
-          }
-        }
-    rep[q] = best;
-  }
-  // Chains (q -> p -> an earlier p') end at the first point: follow them in order.
-  for (std::size_t q = 0; q < rep.size(); ++q) rep[q] = rep[rep[q]];
-  return rep;
-}
-
 struct Concatenated {
   MeshData data;
-  std::vector<int> point_piece, cell_piece;
+  std::vector<std::int64_t> point_piece, cell_piece;
 };
 
-Concatenated concatenate(std::vector<NamedMesh>& pieces, const std::string& file) {
+// The pieces one after another, with the first piece's (`first`) metadata and arrays.
+Concatenated concatenate(std::vector<NamedMesh>& pieces, const std::vector<std::int64_t>& index,
+                         const NamedMesh& first, const std::string& file) {
   std::size_t n_points = 0;
   for (const NamedMesh& p : pieces) n_points += p.data.points.size();
   if (n_points > static_cast<std::size_t>(std::numeric_limits<index_t>::max()))
     throw InputError(file, "pieces", "too many points together for 32-bit ids");
   Concatenated out;
   MeshData& d = out.data;
-  d.dim = pieces.front().data.dim;
-  d.metadata = pieces.front().data.metadata;
-  d.cell_data = pieces.front().data.cell_data;
-  d.point_data = pieces.front().data.point_data;
+  d.dim = first.data.dim;
+  d.metadata = first.data.metadata;
+  d.cell_data = first.data.cell_data;
+  d.point_data = first.data.point_data;
   for (DataArray& a : d.cell_data) a.values.clear();
   for (DataArray& a : d.point_data) a.values.clear();
   for (std::size_t k = 0; k < pieces.size(); ++k) {
@@ -166,8 +114,8 @@ Concatenated concatenate(std::vector<NamedMesh>& pieces, const std::string& file
     const auto offset = static_cast<index_t>(d.points.size());
     for (const NodeId n : p.cells) d.cells.push_back(NodeId(n.value() + offset));
     d.points.insert(d.points.end(), p.points.begin(), p.points.end());
-    out.point_piece.resize(d.points.size(), static_cast<int>(k));
-    out.cell_piece.resize(static_cast<std::size_t>(d.n_cells()), static_cast<int>(k));
+    out.point_piece.resize(d.points.size(), index[k]);
+    out.cell_piece.resize(static_cast<std::size_t>(d.n_cells()), index[k]);
     for (DataArray& a : d.cell_data) {
       const DataArray* b = p.find_cell_array(a.name);
       a.values.insert(a.values.end(), b->values.begin(), b->values.end());
@@ -181,26 +129,68 @@ Concatenated concatenate(std::vector<NamedMesh>& pieces, const std::string& file
   return out;
 }
 
-// Cells whose nodes (as a set) an earlier cell of another piece already has.
-std::vector<char> repeated_cells(const MeshData& d, const std::vector<int>& cell_piece) {
-  const auto npc = static_cast<std::size_t>(d.nodes_per_cell());
-  const auto n = static_cast<std::size_t>(d.n_cells());
-  std::vector<std::pair<std::array<index_t, 8>, std::size_t>> keys(n);
-  for (std::size_t c = 0; c < n; ++c) {
-    std::array<index_t, 8> k{};
-    for (std::size_t v = 0; v < npc; ++v) k[v] = d.cells[c * npc + v].value();
-    std::sort(k.begin(), k.begin() + static_cast<std::ptrdiff_t>(npc));
-    keys[c] = {k, c};
+dist::PiecesPart pieces_part(const Concatenated& all, double weld_tolerance) {
+  dist::PiecesPart part;
+  part.nodes_per_cell = all.data.nodes_per_cell();
+  part.points = all.data.points;
+  part.tolerance = shortest_edges(all.data);
+  for (double& t : part.tolerance) t *= weld_tolerance;
+  part.point_piece = all.point_piece;
+  part.cells = all.data.cells;
+  part.cell_piece = all.cell_piece;
+  return part;
+}
+
+// The rows the merged points take from the input points: coordinates, then every point
+// array's components.
+std::vector<double> point_rows(const MeshData& d, int& width) {
+  width = 3;
+  for (const DataArray& a : d.point_data) width += a.n_components;
+  std::vector<double> rows;
+  rows.reserve(d.points.size() * static_cast<std::size_t>(width));
+  for (std::size_t p = 0; p < d.points.size(); ++p) {
+    rows.insert(rows.end(), d.points[p].data(), d.points[p].data() + 3);
+    for (const DataArray& a : d.point_data) {
+      const auto nc = static_cast<std::size_t>(a.n_components);
+      rows.insert(rows.end(), a.values.begin() + static_cast<std::ptrdiff_t>(p * nc),
+                  a.values.begin() + static_cast<std::ptrdiff_t>((p + 1) * nc));
+    }
   }
-  std::sort(keys.begin(), keys.end());
-  std::vector<char> repeated(n, 0);
-  std::size_t first = 0;  // the start of the run of equal keys (the earliest such cell)
-  for (std::size_t i = 1; i < n; ++i) {
-    if (keys[i].first != keys[first].first) first = i;
-    if (first < i && cell_piece[keys[first].second] != cell_piece[keys[i].second])
-      repeated[keys[i].second] = 1;
+  return rows;
+}
+
+// The merged part's data: the kept cells and their arrays, and the points' rows fetched from
+// the ranks holding the input points they come from.
+MeshPart merged_part(const dist::Communicator& comm, Concatenated& all, dist::MergedPart& m) {
+  MeshData& d = all.data;
+  int width = 0;
+  const std::vector<double> held = point_rows(d, width);
+  const std::vector<double> rows = dist::fetch_rows(
+      comm, dist::Ranges::of(comm, static_cast<std::int64_t>(d.points.size())), held, width,
+      m.node_sources);
+  const auto w = static_cast<std::size_t>(width);
+  const std::size_t n = m.node_sources.size();
+  d.points.resize(n);
+  for (std::size_t p = 0; p < n; ++p) d.points[p] = Vec3(rows[p * w], rows[p * w + 1], rows[p * w + 2]);
+  std::size_t column = 3;
+  for (DataArray& a : d.point_data) {
+    const auto nc = static_cast<std::size_t>(a.n_components);
+    a.values.resize(n * nc);
+    for (std::size_t p = 0; p < n; ++p)
+      std::copy_n(rows.begin() + static_cast<std::ptrdiff_t>(p * w + column), nc,
+                  a.values.begin() + static_cast<std::ptrdiff_t>(p * nc));
+    column += nc;
   }
-  return repeated;
+  for (DataArray& a : d.cell_data)
+    filter_tuples(a, m.kept.size(), [&](std::size_t c) { return m.kept[c] != 0; });
+  d.cells = std::move(m.cells);
+  MeshPart out;
+  out.data = std::move(d);
+  out.node_ids = std::move(m.node_ids);
+  out.cell_offset = m.cell_offset;
+  out.n_cells = m.n_cells;
+  out.n_nodes = m.n_nodes;
+  return out;
 }
 
 // Keeps the cells not flagged and the points they use, renumbered in order.
@@ -255,38 +245,39 @@ index_t drop_ghost_cells(MeshData& data) {
   return dropped;
 }
 
-MeshData merge_pieces(std::vector<NamedMesh> pieces, double weld_tolerance,
-                      const std::string& file) {
+MeshPart merge_on_ranks(const dist::Communicator& comm, std::vector<NamedMesh> pieces,
+                        const std::vector<std::int64_t>& index, double weld_tolerance,
+                        const std::string& file) {
   if (!(weld_tolerance >= 0))
     throw OptionError("weld tolerance " + std::to_string(weld_tolerance) + ": expected >= 0");
-  index_t ghosts = 0;
+  std::int64_t ghosts = 0;
   for (NamedMesh& p : pieces) {
     ghosts += drop_ghost_cells(p.data);
     p.data.structured_cells = {0, 0, 0};
   }
-  check_same_kind(pieces, file);
-  for (const NamedMesh& p : pieces) {
-    check_same_arrays(pieces.front().data.cell_data, p.data.cell_data, pieces.front().file, p.file,
-                      "cell", file);
-    check_same_arrays(pieces.front().data.point_data, p.data.point_data, pieces.front().file,
-                      p.file, "point", file);
-  }
-  const std::size_t n_pieces = pieces.size();
-  Concatenated all = concatenate(pieces, file);
-  MeshData& d = all.data;
-  std::vector<double> tol = shortest_edges(d);
-  for (double& t : tol) t *= weld_tolerance;
-  const std::vector<std::size_t> rep = weld(d.points, all.point_piece, tol);
-  std::size_t welded = 0;
-  for (std::size_t q = 0; q < rep.size(); ++q) welded += rep[q] != q;
-  for (NodeId& n : d.cells) n = NodeId(static_cast<index_t>(rep[n.idx()]));
-  const std::vector<char> repeated = repeated_cells(d, all.cell_piece);
-  const auto n_repeated = std::count(repeated.begin(), repeated.end(), 1);
-  compact(d, repeated);
-  log_info(file + ": " + std::to_string(n_pieces) + " pieces merged: " + std::to_string(welded) +
-           " points welded, " + std::to_string(ghosts) + " ghost cells and " +
-           std::to_string(n_repeated) + " repeated cells dropped");
-  return std::move(all.data);
+  const NamedMesh first = first_piece_header(comm, pieces, file);
+  agree_on_input_errors(comm, [&] { check_same_kind(first, pieces, file); });
+  agree_on_input_errors(comm, [&] {
+    for (const NamedMesh& p : pieces) {
+      check_same_arrays(first.data.cell_data, p.data.cell_data, first.file, p.file, "cell", file);
+      check_same_arrays(first.data.point_data, p.data.point_data, first.file, p.file, "point",
+                        file);
+    }
+  });
+  const auto n_pieces = dist::sum_in_rank_order(comm, static_cast<std::int64_t>(pieces.size()));
+  Concatenated all = concatenate(pieces, index, first, file);
+  dist::MergedPart m = dist::merge_pieces(comm, pieces_part(all, weld_tolerance));
+  log_info(file + ": " + std::to_string(n_pieces) + " pieces merged: " + std::to_string(m.welded) +
+           " points welded, " + std::to_string(dist::sum_in_rank_order(comm, ghosts)) +
+           " ghost cells and " + std::to_string(m.repeated) + " repeated cells dropped");
+  return merged_part(comm, all, m);
+}
+
+MeshData merge_pieces(std::vector<NamedMesh> pieces, double weld_tolerance,
+                      const std::string& file) {
+  std::vector<std::int64_t> index(pieces.size());
+  for (std::size_t k = 0; k < index.size(); ++k) index[k] = static_cast<std::int64_t>(k);
+  return merge_on_ranks(dist::serial(), std::move(pieces), index, weld_tolerance, file).data;
 }
 
 }  // namespace hexadapt::io::detail

@@ -26,6 +26,7 @@
 #include <string>
 #include <string_view>
 
+#include "hexadapt/dist/communicator.h"
 #include "hexadapt/io/mesh_data.h"
 #include "hexadapt/io/mesh_file.h"
 
@@ -41,5 +42,41 @@ using FileLoader = std::function<std::string(const std::string& path)>;
 /// file cannot be read, naming it).
 MeshData read_vtk_collection(std::string_view content, const std::string& file,
                              const ReadOptions& options, const FileLoader& load);
+
+/// A piece or block of a collection, read, with its file name for messages.
+struct NamedMesh {
+  std::string file;
+  MeshData data;
+};
+
+/// The pieces of a .pvtu one rank of `size` reads: a contiguous share of the pieces the file
+/// lists (rank r: pieces [r P / size, (r + 1) P / size) of P), empty pieces left out.
+struct RankPieces {
+  std::string file;                 ///< the .pvtu
+  std::vector<NamedMesh> pieces;
+  std::vector<std::int64_t> index;  ///< each piece's place in the file's list
+};
+
+/// One rank's part of a mesh merged from pieces on several ranks: its share of the merged
+/// cells, in the merged mesh's order from `cell_offset`, and the nodes they use.
+struct MeshPart {
+  MeshData data;
+  std::vector<std::int64_t> node_ids;  ///< per point of data: its id in the merged mesh
+  std::int64_t cell_offset = 0;        ///< merged id of data's first cell
+  std::int64_t n_cells = 0, n_nodes = 0;  ///< of the whole merged mesh
+};
+
+/// Reads rank `rank`'s pieces of the .pvtu `path` (RankPieces). Throws OptionError for
+/// another file type, InputError and IoError as read_mesh does.
+RankPieces read_rank_pieces(const std::string& path, const ReadOptions& options, int rank,
+                            int size);
+
+/// Merges every rank's pieces as read_mesh merges a .pvtu's (above): the merged mesh is the
+/// one read_mesh gives, whatever the number of ranks, each rank holding a contiguous share
+/// of its cells (the cells of its pieces that stay). Every rank calls it; errors (InputError:
+/// pieces of another kind of cell or other arrays than the first; no piece with cells) are
+/// the same on every rank.
+MeshPart merge_rank_pieces(const dist::Communicator& comm, RankPieces pieces,
+                           const ReadOptions& options);
 
 }  // namespace hexadapt::io

@@ -1,0 +1,86 @@
+// Sending values to the rank that decides for them: an all-to-all of plain values, the
+// contiguous ranges of a global numbering spread over the ranks (which rank holds global
+// id g), and a rank chosen by hashing a key (the rank that meets every copy of the key).
+#pragma once
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "hexadapt/dist/communicator.h"
+
+namespace hexadapt::dist {
+
+/// Sends to[r] to rank r (every rank, this one included) and returns what each rank sent to
+/// this one, indexed by rank. Every rank calls it.
+template <class T>
+std::vector<std::vector<T>> all_to_all(const Communicator& comm, std::vector<std::vector<T>> to) {
+  const int n = comm.size();
+  std::vector<std::vector<T>> from(static_cast<std::size_t>(n));
+  from[static_cast<std::size_t>(comm.rank())] = std::move(to[static_cast<std::size_t>(comm.rank())]);
+  if (n == 1) return from;
+  std::vector<int> peers;
+  std::vector<Buffer> out;
+  for (int r = 0; r < n; ++r)
+    if (r != comm.rank()) {
+      peers.push_back(r);
+      out.emplace_back();
+      out.back().put_vector(to[static_cast<std::size_t>(r)]);
+    }
+  std::vector<Buffer> in = exchange(comm, peers, out);
+  for (std::size_t i = 0; i < peers.size(); ++i)
+    from[static_cast<std::size_t>(peers[i])] = in[i].get_vector<T>();
+  return from;
+}
+
+/// A global numbering held by the ranks in contiguous ranges, in rank order: rank r holds
+/// the ids [first[r], first[r + 1]).
+struct Ranges {
+  std::vector<std::int64_t> first;  ///< size() + 1 entries
+
+  /// Every rank's `count` ids, numbered in rank order. Every rank calls it.
+  static Ranges of(const Communicator& comm, std::int64_t count);
+  int size() const { return static_cast<int>(first.size()) - 1; }
+  std::int64_t total() const { return first.back(); }
+  /// The rank holding global id g (0 <= g < total()).
+  int rank_of(std::int64_t g) const;
+};
+
+/// The rank (of `size`) that decides for a key of n 64-bit words: a fixed hash, the same on
+/// every rank and in every run.
+int rank_of_key(const std::int64_t* key, std::size_t n, int size);
+
+/// For each global id of `wanted`, its row of `rows` (`width` values per id this rank holds
+/// in `ranges`) from the rank holding it, in the order of `wanted`. Every rank calls it.
+template <class T>
+std::vector<T> fetch_rows(const Communicator& comm, const Ranges& ranges, const std::vector<T>& rows,
+                          int width,
+                               const std::vector<std::int64_t>& wanted) {
+  const auto n = static_cast<std::size_t>(comm.size());
+  const auto w = static_cast<std::size_t>(width);
+  std::vector<std::vector<std::int64_t>> asks(n);
+  for (const std::int64_t g : wanted) asks[static_cast<std::size_t>(ranges.rank_of(g))].push_back(g);
+  const std::vector<std::vector<std::int64_t>> asked = all_to_all(comm, asks);
+  const std::int64_t mine = ranges.first[static_cast<std::size_t>(comm.rank())];
+  std::vector<std::vector<T>> answers(n);
+  for (std::size_t r = 0; r < n; ++r)
+    for (const std::int64_t g : asked[r]) {
+      const auto at = static_cast<std::size_t>(g - mine) * w;
+      answers[r].insert(answers[r].end(), rows.begin() + static_cast<std::ptrdiff_t>(at),
+                        rows.begin() + static_cast<std::ptrdiff_t>(at + w));
+    }
+  const std::vector<std::vector<T>> answered = all_to_all(comm, std::move(answers));
+  // The answers come back per rank in the order asked: walk `wanted` again.
+  std::vector<std::size_t> next(n, 0);
+  std::vector<T> out;
+  out.reserve(wanted.size() * w);
+  for (const std::int64_t g : wanted) {
+    const auto r = static_cast<std::size_t>(ranges.rank_of(g));
+    const auto at = next[r]++ * w;
+    out.insert(out.end(), answered[r].begin() + static_cast<std::ptrdiff_t>(at),
+               answered[r].begin() + static_cast<std::ptrdiff_t>(at + w));
+  }
+  return out;
+}
+
+}  // namespace hexadapt::dist
