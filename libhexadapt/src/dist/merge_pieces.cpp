@@ -11,13 +11,15 @@ namespace hexadapt::dist {
 namespace {
 
 // The distinct welded points the kept cells use, increasing.
-std::vector<std::int64_t> used_points(const PiecesPart& part, const std::vector<std::int64_t>& nodes,
+std::vector<std::int64_t> used_points(const PiecesPart& part,
+                                      const std::vector<std::int64_t>& nodes,
                                       const std::vector<char>& kept) {
   const auto npc = static_cast<std::size_t>(part.nodes_per_cell);
   std::vector<std::int64_t> used;
   for (std::size_t c = 0; c < kept.size(); ++c)
-    if (kept[c]) used.insert(used.end(), nodes.begin() + static_cast<std::ptrdiff_t>(c * npc),
-                             nodes.begin() + static_cast<std::ptrdiff_t>((c + 1) * npc));
+    if (kept[c])
+      used.insert(used.end(), nodes.begin() + static_cast<std::ptrdiff_t>(c * npc),
+                  nodes.begin() + static_cast<std::ptrdiff_t>((c + 1) * npc));
   std::sort(used.begin(), used.end());
   used.erase(std::unique(used.begin(), used.end()), used.end());
   return used;
@@ -31,7 +33,8 @@ std::vector<std::int64_t> merged_ids(const Communicator& comm, const Ranges& poi
   std::vector<std::vector<std::int64_t>> tell(static_cast<std::size_t>(n));
   for (const std::int64_t g : used) tell[static_cast<std::size_t>(points.rank_of(g))].push_back(g);
   const std::int64_t first = points.first[static_cast<std::size_t>(comm.rank())];
-  const auto held = static_cast<std::size_t>(points.first[static_cast<std::size_t>(comm.rank()) + 1] - first);
+  const auto held =
+      static_cast<std::size_t>(points.first[static_cast<std::size_t>(comm.rank()) + 1] - first);
   std::vector<std::int64_t> id(held, -1);
   for (const auto& from : all_to_all(comm, std::move(tell)))
     for (const std::int64_t g : from) id[static_cast<std::size_t>(g - first)] = 0;
@@ -62,8 +65,8 @@ MergedPart merge_pieces(const Communicator& comm, const PiecesPart& part) {
   for (std::size_t c = 0; c < m.kept.size(); ++c)
     if (m.kept[c])
       for (std::size_t v = 0; v < npc; ++v) {
-        const auto it = std::lower_bound(m.node_sources.begin(), m.node_sources.end(),
-                                         nodes[c * npc + v]);
+        const auto it =
+            std::lower_bound(m.node_sources.begin(), m.node_sources.end(), nodes[c * npc + v]);
         m.cells.push_back(NodeId(static_cast<index_t>(it - m.node_sources.begin())));
       }
   const auto kept = static_cast<std::int64_t>(m.cells.size() / std::max<std::size_t>(npc, 1));
@@ -71,7 +74,8 @@ MergedPart merge_pieces(const Communicator& comm, const PiecesPart& part) {
   m.cell_offset = cells.first[static_cast<std::size_t>(comm.rank())];
   m.n_cells = cells.total();
   std::int64_t welded = 0;
-  for (std::size_t q = 0; q < rep.size(); ++q) welded += rep[q] != first + static_cast<std::int64_t>(q);
+  for (std::size_t q = 0; q < rep.size(); ++q)
+    welded += rep[q] != first + static_cast<std::int64_t>(q);
   m.welded = sum_in_rank_order(comm, welded);
   m.repeated = sum_in_rank_order(
       comm, static_cast<std::int64_t>(std::count(repeated.begin(), repeated.end(), 1)));

@@ -47,7 +47,8 @@ Buckets buckets_of(const Communicator& comm, const PiecesPart& part) {
   mine[6] = 0;
   for (std::size_t q = 0; q < part.points.size(); ++q) {
     for (int a = 0; a < 3; ++a) {
-      mine[static_cast<std::size_t>(a)] = std::min(mine[static_cast<std::size_t>(a)], part.points[q][a]);
+      mine[static_cast<std::size_t>(a)] =
+          std::min(mine[static_cast<std::size_t>(a)], part.points[q][a]);
       mine[static_cast<std::size_t>(a + 3)] =
           std::max(mine[static_cast<std::size_t>(a + 3)], part.points[q][a]);
     }
@@ -88,8 +89,9 @@ std::vector<std::vector<std::int64_t>> earliest_matches(
   std::vector<std::pair<Key, WeldPoint>> sorted;
   for (const auto& from : candidates)
     for (const WeldPoint& p : from) sorted.push_back({b.key(p.point(), 0), p});
-  std::sort(sorted.begin(), sorted.end(),
-            [](const auto& u, const auto& v) { return std::tie(u.first, u.second.id) < std::tie(v.first, v.second.id); });
+  std::sort(sorted.begin(), sorted.end(), [](const auto& u, const auto& v) {
+    return std::tie(u.first, u.second.id) < std::tie(v.first, v.second.id);
+  });
   std::vector<std::vector<std::int64_t>> replies(static_cast<std::size_t>(n));
   for (const auto& from : searchers)
     for (const WeldPoint& q : from) {
@@ -122,8 +124,8 @@ std::vector<std::vector<std::int64_t>> earliest_matches(
 void follow_chains(const Communicator& comm, const Ranges& ranges, std::vector<std::int64_t>& rep) {
   for (;;) {
     const std::vector<std::int64_t> next = fetch_rows(comm, ranges, rep, 1, rep);
-    const std::int64_t changed = sum_in_rank_order<std::int64_t>(
-        comm, static_cast<std::int64_t>(next != rep));
+    const std::int64_t changed =
+        sum_in_rank_order<std::int64_t>(comm, static_cast<std::int64_t>(next != rep));
     if (changed == 0) return;
     rep = next;
   }
@@ -139,7 +141,8 @@ std::vector<std::int64_t> weld(const Communicator& comm, const PiecesPart& part)
   const Buckets b = buckets_of(comm, part);
   if (b.size <= 0) return rep;
   const int n = comm.size();
-  std::vector<std::vector<WeldPoint>> candidates(static_cast<std::size_t>(n)), searchers = candidates;
+  std::vector<std::vector<WeldPoint>> candidates(static_cast<std::size_t>(n)),
+      searchers = candidates;
   for (std::size_t q = 0; q < rep.size(); ++q) {
     if (!(part.tolerance[q] > 0)) continue;
     const Vec3& p = part.points[q];

@@ -194,9 +194,9 @@ MeshData read_collection_document(const VtkXmlDocument& doc, const CollectionCon
 
 RankPieces read_rank_pieces(const VtkXmlDocument& doc, const CollectionContext& ctx, int rank,
                             int size) {
-  const std::size_t n = static_cast<std::size_t>(
-      std::distance(parallel_unstructured(doc).children("Piece").begin(),
-                    parallel_unstructured(doc).children("Piece").end()));
+  const std::size_t n =
+      static_cast<std::size_t>(std::distance(parallel_unstructured(doc).children("Piece").begin(),
+                                             parallel_unstructured(doc).children("Piece").end()));
   const auto share = [&](int r) {
     return n * static_cast<std::size_t>(r) / static_cast<std::size_t>(size);
   };

@@ -19,7 +19,6 @@ struct CollectionContext {
   int depth = 0;
 };
 
-
 /// The path of `reference` (as the element `e` of `doc` gives it) relative to the folder of
 /// doc.file. Throws InputError for an empty, absolute or escaping ("..") name.
 std::string resolve_reference(const VtkXmlDocument& doc, const pugi::xml_node& e,

@@ -165,13 +165,14 @@ MeshPart merged_part(const dist::Communicator& comm, Concatenated& all, dist::Me
   MeshData& d = all.data;
   int width = 0;
   const std::vector<double> held = point_rows(d, width);
-  const std::vector<double> rows = dist::fetch_rows(
-      comm, dist::Ranges::of(comm, static_cast<std::int64_t>(d.points.size())), held, width,
-      m.node_sources);
+  const std::vector<double> rows =
+      dist::fetch_rows(comm, dist::Ranges::of(comm, static_cast<std::int64_t>(d.points.size())),
+                       held, width, m.node_sources);
   const auto w = static_cast<std::size_t>(width);
   const std::size_t n = m.node_sources.size();
   d.points.resize(n);
-  for (std::size_t p = 0; p < n; ++p) d.points[p] = Vec3(rows[p * w], rows[p * w + 1], rows[p * w + 2]);
+  for (std::size_t p = 0; p < n; ++p)
+    d.points[p] = Vec3(rows[p * w], rows[p * w + 1], rows[p * w + 2]);
   std::size_t column = 3;
   for (DataArray& a : d.point_data) {
     const auto nc = static_cast<std::size_t>(a.n_components);

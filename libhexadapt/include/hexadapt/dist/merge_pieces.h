@@ -20,21 +20,21 @@ namespace hexadapt::dist {
 struct PiecesPart {
   int nodes_per_cell = 8;
   std::vector<Vec3> points;
-  std::vector<double> tolerance;    ///< per point: how far another piece's point may be to weld
+  std::vector<double> tolerance;  ///< per point: how far another piece's point may be to weld
   std::vector<std::int64_t> point_piece;  ///< per point: its piece (an increasing index)
-  std::vector<NodeId> cells;        ///< nodes_per_cell local point ids per cell
+  std::vector<NodeId> cells;              ///< nodes_per_cell local point ids per cell
   std::vector<std::int64_t> cell_piece;   ///< per cell: its piece
 };
 
 /// What of the merged mesh one rank holds: its kept cells, in order, and their nodes.
 struct MergedPart {
-  std::vector<char> kept;                 ///< per input cell: not a repeat of an earlier piece's
-  std::vector<NodeId> cells;              ///< kept cells' nodes, local node ids
-  std::vector<std::int64_t> node_ids;     ///< per local node: its global id, increasing
-  std::vector<std::int64_t> node_sources; ///< per local node: the global input point it is
-  std::int64_t cell_offset = 0;           ///< global id of the first kept cell
-  std::int64_t n_cells = 0, n_nodes = 0;  ///< of the whole merged mesh
-  std::int64_t welded = 0, repeated = 0;  ///< over every rank: points welded, cells dropped
+  std::vector<char> kept;                  ///< per input cell: not a repeat of an earlier piece's
+  std::vector<NodeId> cells;               ///< kept cells' nodes, local node ids
+  std::vector<std::int64_t> node_ids;      ///< per local node: its global id, increasing
+  std::vector<std::int64_t> node_sources;  ///< per local node: the global input point it is
+  std::int64_t cell_offset = 0;            ///< global id of the first kept cell
+  std::int64_t n_cells = 0, n_nodes = 0;   ///< of the whole merged mesh
+  std::int64_t welded = 0, repeated = 0;   ///< over every rank: points welded, cells dropped
 };
 
 /// For each point of `part`, the global id of the first point (in the global order) that it

@@ -17,7 +17,8 @@ template <class T>
 std::vector<std::vector<T>> all_to_all(const Communicator& comm, std::vector<std::vector<T>> to) {
   const int n = comm.size();
   std::vector<std::vector<T>> from(static_cast<std::size_t>(n));
-  from[static_cast<std::size_t>(comm.rank())] = std::move(to[static_cast<std::size_t>(comm.rank())]);
+  from[static_cast<std::size_t>(comm.rank())] =
+      std::move(to[static_cast<std::size_t>(comm.rank())]);
   if (n == 1) return from;
   std::vector<int> peers;
   std::vector<Buffer> out;
@@ -53,13 +54,14 @@ int rank_of_key(const std::int64_t* key, std::size_t n, int size);
 /// For each global id of `wanted`, its row of `rows` (`width` values per id this rank holds
 /// in `ranges`) from the rank holding it, in the order of `wanted`. Every rank calls it.
 template <class T>
-std::vector<T> fetch_rows(const Communicator& comm, const Ranges& ranges, const std::vector<T>& rows,
-                          int width,
-                               const std::vector<std::int64_t>& wanted) {
+std::vector<T> fetch_rows(const Communicator& comm, const Ranges& ranges,
+                          const std::vector<T>& rows, int width,
+                          const std::vector<std::int64_t>& wanted) {
   const auto n = static_cast<std::size_t>(comm.size());
   const auto w = static_cast<std::size_t>(width);
   std::vector<std::vector<std::int64_t>> asks(n);
-  for (const std::int64_t g : wanted) asks[static_cast<std::size_t>(ranges.rank_of(g))].push_back(g);
+  for (const std::int64_t g : wanted)
+    asks[static_cast<std::size_t>(ranges.rank_of(g))].push_back(g);
   const std::vector<std::vector<std::int64_t>> asked = all_to_all(comm, asks);
   const std::int64_t mine = ranges.first[static_cast<std::size_t>(comm.rank())];
   std::vector<std::vector<T>> answers(n);

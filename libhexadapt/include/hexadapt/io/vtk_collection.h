@@ -52,7 +52,7 @@ struct NamedMesh {
 /// The pieces of a .pvtu one rank of `size` reads: a contiguous share of the pieces the file
 /// lists (rank r: pieces [r P / size, (r + 1) P / size) of P), empty pieces left out.
 struct RankPieces {
-  std::string file;                 ///< the .pvtu
+  std::string file;  ///< the .pvtu
   std::vector<NamedMesh> pieces;
   std::vector<std::int64_t> index;  ///< each piece's place in the file's list
 };
@@ -61,8 +61,8 @@ struct RankPieces {
 /// cells, in the merged mesh's order from `cell_offset`, and the nodes they use.
 struct MeshPart {
   MeshData data;
-  std::vector<std::int64_t> node_ids;  ///< per point of data: its id in the merged mesh
-  std::int64_t cell_offset = 0;        ///< merged id of data's first cell
+  std::vector<std::int64_t> node_ids;     ///< per point of data: its id in the merged mesh
+  std::int64_t cell_offset = 0;           ///< merged id of data's first cell
   std::int64_t n_cells = 0, n_nodes = 0;  ///< of the whole merged mesh
 };
 
