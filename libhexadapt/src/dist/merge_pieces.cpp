@@ -10,18 +10,26 @@ namespace hexadapt::dist {
 
 namespace {
 
-// The distinct welded points the kept cells use, increasing.
+// The welded points the kept cells use, each once, increasing; `node_of` gets, for each
+// local point a kept cell uses, its place among them.
 std::vector<std::int64_t> used_points(const PiecesPart& part,
-                                      const std::vector<std::int64_t>& nodes,
-                                      const std::vector<char>& kept) {
+                                      const std::vector<std::int64_t>& welded,
+                                      const std::vector<char>& kept,
+                                      std::vector<index_t>& node_of) {
   const auto npc = static_cast<std::size_t>(part.nodes_per_cell);
-  std::vector<std::int64_t> used;
+  node_of.assign(part.points.size(), -1);
   for (std::size_t c = 0; c < kept.size(); ++c)
     if (kept[c])
-      used.insert(used.end(), nodes.begin() + static_cast<std::ptrdiff_t>(c * npc),
-                  nodes.begin() + static_cast<std::ptrdiff_t>((c + 1) * npc));
+      for (std::size_t v = 0; v < npc; ++v) node_of[part.cells[c * npc + v].idx()] = 0;
+  std::vector<std::int64_t> used;
+  for (std::size_t q = 0; q < node_of.size(); ++q)
+    if (node_of[q] == 0) used.push_back(welded[q]);
   std::sort(used.begin(), used.end());
   used.erase(std::unique(used.begin(), used.end()), used.end());
+  for (std::size_t q = 0; q < node_of.size(); ++q)
+    if (node_of[q] == 0)
+      node_of[q] = static_cast<index_t>(std::lower_bound(used.begin(), used.end(), welded[q]) -
+                                        used.begin());
   return used;
 }
 
@@ -32,16 +40,15 @@ std::vector<std::int64_t> merged_ids(const Communicator& comm, const Ranges& poi
   const int n = comm.size();
   std::vector<std::vector<std::int64_t>> tell(static_cast<std::size_t>(n));
   for (const std::int64_t g : used) tell[static_cast<std::size_t>(points.rank_of(g))].push_back(g);
-  const std::int64_t first = points.first[static_cast<std::size_t>(comm.rank())];
-  const auto held =
-      static_cast<std::size_t>(points.first[static_cast<std::size_t>(comm.rank()) + 1] - first);
-  std::vector<std::int64_t> id(held, -1);
+  const auto r = static_cast<std::size_t>(comm.rank());
+  const std::int64_t first = points.first[r];
+  std::vector<std::int64_t> id(static_cast<std::size_t>(points.first[r + 1] - first), -1);
   for (const auto& from : all_to_all(comm, std::move(tell)))
     for (const std::int64_t g : from) id[static_cast<std::size_t>(g - first)] = 0;
-  const auto count = static_cast<std::int64_t>(std::count(id.begin(), id.end(), 0));
-  const Ranges numbered = Ranges::of(comm, count);
+  const Ranges numbered =
+      Ranges::of(comm, static_cast<std::int64_t>(std::count(id.begin(), id.end(), 0)));
   total = numbered.total();
-  std::int64_t next = numbered.first[static_cast<std::size_t>(comm.rank())];
+  std::int64_t next = numbered.first[r];
   for (std::int64_t& i : id)
     if (i == 0) i = next++;
   return fetch_rows(comm, points, id, 1, used);
@@ -51,32 +58,28 @@ std::vector<std::int64_t> merged_ids(const Communicator& comm, const Ranges& poi
 
 MergedPart merge_pieces(const Communicator& comm, const PiecesPart& part) {
   const auto npc = static_cast<std::size_t>(part.nodes_per_cell);
-  const std::vector<std::int64_t> rep = weld(comm, part);
+  const std::vector<std::int64_t> welded = weld(comm, part);
   const Ranges points = Ranges::of(comm, static_cast<std::int64_t>(part.points.size()));
   const std::int64_t first = points.first[static_cast<std::size_t>(comm.rank())];
-  std::vector<std::int64_t> nodes(part.cells.size());
-  for (std::size_t i = 0; i < nodes.size(); ++i) nodes[i] = rep[part.cells[i].idx()];
   MergedPart m;
-  const std::vector<char> repeated = repeated_cells(comm, part, nodes);
+  const std::vector<char> repeated = repeated_cells(comm, part, welded);
   m.kept.resize(repeated.size());
   for (std::size_t c = 0; c < repeated.size(); ++c) m.kept[c] = !repeated[c];
-  m.node_sources = used_points(part, nodes, m.kept);
+  std::vector<index_t> node_of;
+  m.node_sources = used_points(part, welded, m.kept, node_of);
   m.node_ids = merged_ids(comm, points, m.node_sources, m.n_nodes);
+  m.cells.reserve(part.cells.size());
   for (std::size_t c = 0; c < m.kept.size(); ++c)
     if (m.kept[c])
-      for (std::size_t v = 0; v < npc; ++v) {
-        const auto it =
-            std::lower_bound(m.node_sources.begin(), m.node_sources.end(), nodes[c * npc + v]);
-        m.cells.push_back(NodeId(static_cast<index_t>(it - m.node_sources.begin())));
-      }
-  const auto kept = static_cast<std::int64_t>(m.cells.size() / std::max<std::size_t>(npc, 1));
-  const Ranges cells = Ranges::of(comm, kept);
+      for (std::size_t v = 0; v < npc; ++v)
+        m.cells.push_back(NodeId(node_of[part.cells[c * npc + v].idx()]));
+  const Ranges cells = Ranges::of(comm, static_cast<std::int64_t>(m.cells.size() / npc));
   m.cell_offset = cells.first[static_cast<std::size_t>(comm.rank())];
   m.n_cells = cells.total();
-  std::int64_t welded = 0;
-  for (std::size_t q = 0; q < rep.size(); ++q)
-    welded += rep[q] != first + static_cast<std::int64_t>(q);
-  m.welded = sum_in_rank_order(comm, welded);
+  std::int64_t welded_here = 0;
+  for (std::size_t q = 0; q < welded.size(); ++q)
+    welded_here += welded[q] != first + static_cast<std::int64_t>(q);
+  m.welded = sum_in_rank_order(comm, welded_here);
   m.repeated = sum_in_rank_order(
       comm, static_cast<std::int64_t>(std::count(repeated.begin(), repeated.end(), 1)));
   return m;

@@ -35,7 +35,7 @@ std::vector<std::vector<std::int64_t>> flag_repeats(std::vector<KeyedCell> cells
 }  // namespace
 
 std::vector<char> repeated_cells(const Communicator& comm, const PiecesPart& part,
-                                 const std::vector<std::int64_t>& nodes) {
+                                 const std::vector<std::int64_t>& welded) {
   const auto npc = static_cast<std::size_t>(part.nodes_per_cell);
   if (npc > 8) throw InternalError("more than 8 nodes per cell");
   const std::size_t n_cells = part.cell_piece.size();
@@ -43,10 +43,10 @@ std::vector<char> repeated_cells(const Communicator& comm, const PiecesPart& par
   const std::int64_t first = ranges.first[static_cast<std::size_t>(comm.rank())];
   const int n = comm.size();
   std::vector<std::vector<KeyedCell>> out(static_cast<std::size_t>(n));
+  out[static_cast<std::size_t>(comm.rank())].reserve(n_cells);
   for (std::size_t c = 0; c < n_cells; ++c) {
     KeyedCell k{{}, first + static_cast<std::int64_t>(c), part.cell_piece[c]};
-    std::copy(nodes.begin() + static_cast<std::ptrdiff_t>(c * npc),
-              nodes.begin() + static_cast<std::ptrdiff_t>((c + 1) * npc), k.key.begin());
+    for (std::size_t v = 0; v < npc; ++v) k.key[v] = welded[part.cells[c * npc + v].idx()];
     std::sort(k.key.begin(), k.key.begin() + static_cast<std::ptrdiff_t>(npc));
     out[static_cast<std::size_t>(rank_of_key(k.key.data(), npc, n))].push_back(k);
   }

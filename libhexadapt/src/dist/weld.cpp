@@ -1,8 +1,8 @@
 // The weld of dist::merge_pieces: space is cut into cubes (buckets) twice the largest
 // tolerance, so the points within a point's tolerance lie in the <= 2 x 2 x 2 buckets its
 // tolerance box touches. Each bucket has a deciding rank (a hash of its key); every point goes
-// to the rank of its own bucket as a candidate and to the ranks of the buckets its box touches
-// as a searcher, so the rank of a bucket sees every pair a search there can find. Each
+// to the ranks of the buckets its box touches, its own bucket among them, where it is a
+// candidate too, so the rank of a bucket sees every pair a search there can find. Each
 // searcher's earliest match comes back to the point's rank; chains (q to p to an earlier p')
 // are then followed by asking the rank holding the match, until no rank changes a point.
 #include <algorithm>
@@ -23,6 +23,7 @@ struct WeldPoint {
   std::int64_t id;
   std::int64_t piece;
   double x, y, z, tolerance;
+  std::int64_t home;  ///< 1 on the rank of the point's own bucket: a candidate there
   Vec3 point() const { return {x, y, z}; }
 };
 
@@ -69,54 +70,65 @@ Buckets buckets_of(const Communicator& comm, const PiecesPart& part) {
   return b;
 }
 
-// The ranks of the buckets q's tolerance box touches, each once.
-std::vector<int> search_ranks(const Buckets& b, const WeldPoint& q, int n) {
+// The ranks of the buckets q's tolerance box touches (at most 2 per axis), each once; the
+// count is returned.
+int search_ranks(const Buckets& b, const WeldPoint& q, int n, std::array<int, 8>& ranks) {
   const Key from = b.key(q.point(), -q.tolerance), to = b.key(q.point(), q.tolerance);
-  std::vector<int> ranks;
+  int count = 0;
   for (std::int64_t i = from[0]; i <= to[0]; ++i)
     for (std::int64_t j = from[1]; j <= to[1]; ++j)
-      for (std::int64_t k = from[2]; k <= to[2]; ++k) ranks.push_back(b.rank({i, j, k}, n));
-  std::sort(ranks.begin(), ranks.end());
-  ranks.erase(std::unique(ranks.begin(), ranks.end()), ranks.end());
-  return ranks;
+      for (std::int64_t k = from[2]; k <= to[2]; ++k) {
+        const int r = n == 1 ? 0 : b.rank({i, j, k}, n);
+        if (std::find(ranks.begin(), ranks.begin() + count, r) == ranks.begin() + count)
+          ranks[static_cast<std::size_t>(count++)] = r;
+      }
+  return count;
 }
 
 // On a deciding rank: the earliest candidate of another piece within both tolerances of each
-// searcher, looked up in the buckets of the searcher's box that this rank decides for.
-std::vector<std::vector<std::int64_t>> earliest_matches(
-    const Buckets& b, const std::vector<std::vector<WeldPoint>>& candidates,
-    const std::vector<std::vector<WeldPoint>>& searchers, const Ranges& ranges, int rank, int n) {
-  std::vector<std::pair<Key, WeldPoint>> sorted;
-  for (const auto& from : candidates)
-    for (const WeldPoint& p : from) sorted.push_back({b.key(p.point(), 0), p});
-  std::sort(sorted.begin(), sorted.end(), [](const auto& u, const auto& v) {
-    return std::tie(u.first, u.second.id) < std::tie(v.first, v.second.id);
-  });
+// point received, looked up in the buckets of its box that this rank decides for.
+std::vector<std::vector<std::int64_t>> earliest_matches(const Buckets& b,
+                                                        std::vector<std::vector<WeldPoint>> from,
+                                                        const Ranges& ranges, int rank, int n) {
+  std::vector<WeldPoint> all = std::move(from[0]);
+  for (std::size_t r = 1; r < from.size(); ++r)
+    all.insert(all.end(), from[r].begin(), from[r].end());
+  // The candidates by bucket, then id: `all` comes in increasing ids (every rank's in rank
+  // order, each in its order).
+  std::vector<std::pair<Key, std::size_t>> sorted;
+  sorted.reserve(all.size());
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (all[i].home) sorted.push_back({b.key(all[i].point(), 0), i});
+  std::sort(sorted.begin(), sorted.end());
   std::vector<std::vector<std::int64_t>> replies(static_cast<std::size_t>(n));
-  for (const auto& from : searchers)
-    for (const WeldPoint& q : from) {
-      const Key lo = b.key(q.point(), -q.tolerance), hi = b.key(q.point(), q.tolerance);
-      std::int64_t best = q.id;
-      for (std::int64_t i = lo[0]; i <= hi[0]; ++i)
-        for (std::int64_t j = lo[1]; j <= hi[1]; ++j)
-          for (std::int64_t k = lo[2]; k <= hi[2]; ++k) {
-            const Key key{i, j, k};
-            if (b.rank(key, n) != rank) continue;
-            auto it = std::lower_bound(sorted.begin(), sorted.end(), key,
-                                       [](const auto& u, const Key& x) { return u.first < x; });
-            for (; it != sorted.end() && it->first == key; ++it) {
-              const WeldPoint& p = it->second;
-              if (p.id < best && p.piece != q.piece &&
-                  (p.point() - q.point()).norm() <= std::min(p.tolerance, q.tolerance))
-                best = p.id;
-            }
+  const auto search = [&](const WeldPoint& q) {
+    const Key lo = b.key(q.point(), -q.tolerance), hi = b.key(q.point(), q.tolerance);
+    std::int64_t best = q.id;
+    for (std::int64_t i = lo[0]; i <= hi[0]; ++i)
+      for (std::int64_t j = lo[1]; j <= hi[1]; ++j)
+        for (std::int64_t k = lo[2]; k <= hi[2]; ++k) {
+          const Key key{i, j, k};
+          if (n > 1 && b.rank(key, n) != rank) continue;
+          auto it =
+              std::lower_bound(sorted.begin(), sorted.end(), std::pair<Key, std::size_t>{key, 0});
+          for (; it != sorted.end() && it->first == key; ++it) {
+            const WeldPoint& p = all[it->second];
+            if (p.id < best && p.piece != q.piece &&
+                (p.point() - q.point()).norm() <= std::min(p.tolerance, q.tolerance))
+              best = p.id;
           }
-      if (best != q.id) {
-        auto& to = replies[static_cast<std::size_t>(ranges.rank_of(q.id))];
-        to.push_back(q.id);
-        to.push_back(best);
-      }
+        }
+    if (best != q.id) {
+      auto& to = replies[static_cast<std::size_t>(ranges.rank_of(q.id))];
+      to.push_back(q.id);
+      to.push_back(best);
     }
+  };
+  // The candidates first, in bucket order (neighbours looked up one after another), then the
+  // points searching from another rank's bucket.
+  for (const auto& [key, i] : sorted) search(all[i]);
+  for (const WeldPoint& q : all)
+    if (!q.home) search(q);
   return replies;
 }
 
@@ -141,18 +153,22 @@ std::vector<std::int64_t> weld(const Communicator& comm, const PiecesPart& part)
   const Buckets b = buckets_of(comm, part);
   if (b.size <= 0) return rep;
   const int n = comm.size();
-  std::vector<std::vector<WeldPoint>> candidates(static_cast<std::size_t>(n)),
-      searchers = candidates;
+  std::vector<std::vector<WeldPoint>> to(static_cast<std::size_t>(n));
+  to[static_cast<std::size_t>(comm.rank())].reserve(rep.size());
+  std::array<int, 8> ranks{};
   for (std::size_t q = 0; q < rep.size(); ++q) {
     if (!(part.tolerance[q] > 0)) continue;
     const Vec3& p = part.points[q];
-    const WeldPoint w{rep[q], part.point_piece[q], p[0], p[1], p[2], part.tolerance[q]};
-    candidates[static_cast<std::size_t>(b.rank(b.key(p, 0), n))].push_back(w);
-    for (const int r : search_ranks(b, w, n)) searchers[static_cast<std::size_t>(r)].push_back(w);
+    WeldPoint w{rep[q], part.point_piece[q], p[0], p[1], p[2], part.tolerance[q], 0};
+    const int home = n == 1 ? 0 : b.rank(b.key(p, 0), n);
+    for (int i = 0, count = search_ranks(b, w, n, ranks); i < count; ++i) {
+      const int r = ranks[static_cast<std::size_t>(i)];
+      w.home = r == home;
+      to[static_cast<std::size_t>(r)].push_back(w);
+    }
   }
   const auto replies = all_to_all(
-      comm, earliest_matches(b, all_to_all(comm, std::move(candidates)),
-                             all_to_all(comm, std::move(searchers)), ranges, comm.rank(), n));
+      comm, earliest_matches(b, all_to_all(comm, std::move(to)), ranges, comm.rank(), n));
   for (const auto& from : replies)
     for (std::size_t i = 0; i + 1 < from.size(); i += 2) {
       std::int64_t& r = rep[static_cast<std::size_t>(from[i] - first)];

@@ -68,9 +68,9 @@ void check_same_arrays(const std::vector<DataArray>& first, const std::vector<Da
 }
 
 // The shortest positive edge at each point (0 at points of no cell).
-std::vector<double> shortest_edges(const MeshData& d) {
+std::vector<double> shortest_edges(const dist::PiecesPart& d) {
   std::vector<double> h(d.points.size(), std::numeric_limits<double>::infinity());
-  const auto npc = static_cast<std::size_t>(d.nodes_per_cell());
+  const auto npc = static_cast<std::size_t>(d.nodes_per_cell);
   const auto visit = [&](NodeId a, NodeId b) {
     const double l = (d.points[a.idx()] - d.points[b.idx()]).norm();
     if (l <= 0) return;
@@ -89,12 +89,13 @@ std::vector<double> shortest_edges(const MeshData& d) {
   return h;
 }
 
+// The pieces one after another: their points and cells (weld tolerances not set yet), and
+// their arrays with the first piece's (`first`) metadata.
 struct Concatenated {
-  MeshData data;
-  std::vector<std::int64_t> point_piece, cell_piece;
+  dist::PiecesPart part;
+  MeshData data;  ///< no points or cells
 };
 
-// The pieces one after another, with the first piece's (`first`) metadata and arrays.
 Concatenated concatenate(std::vector<NamedMesh>& pieces, const std::vector<std::int64_t>& index,
                          const NamedMesh& first, const std::string& file) {
   std::size_t n_points = 0;
@@ -102,20 +103,25 @@ Concatenated concatenate(std::vector<NamedMesh>& pieces, const std::vector<std::
   if (n_points > static_cast<std::size_t>(std::numeric_limits<index_t>::max()))
     throw InputError(file, "pieces", "too many points together for 32-bit ids");
   Concatenated out;
+  dist::PiecesPart& part = out.part;
   MeshData& d = out.data;
   d.dim = first.data.dim;
   d.metadata = first.data.metadata;
   d.cell_data = first.data.cell_data;
   d.point_data = first.data.point_data;
-  for (DataArray& a : d.cell_data) a.values.clear();
-  for (DataArray& a : d.point_data) a.values.clear();
+  part.nodes_per_cell = d.nodes_per_cell();
+  std::size_t n_nodes = 0;
+  for (const NamedMesh& p : pieces) n_nodes += p.data.cells.size();
+  part.cells.reserve(n_nodes);
+  part.points.reserve(n_points);
   for (std::size_t k = 0; k < pieces.size(); ++k) {
     MeshData& p = pieces[k].data;
-    const auto offset = static_cast<index_t>(d.points.size());
-    for (const NodeId n : p.cells) d.cells.push_back(NodeId(n.value() + offset));
-    d.points.insert(d.points.end(), p.points.begin(), p.points.end());
-    out.point_piece.resize(d.points.size(), index[k]);
-    out.cell_piece.resize(static_cast<std::size_t>(d.n_cells()), index[k]);
+    const auto offset = static_cast<index_t>(part.points.size());
+    for (const NodeId n : p.cells) part.cells.push_back(NodeId(n.value() + offset));
+    part.points.insert(part.points.end(), p.points.begin(), p.points.end());
+    part.point_piece.resize(part.points.size(), index[k]);
+    part.cell_piece.resize(part.cells.size() / static_cast<std::size_t>(part.nodes_per_cell),
+                           index[k]);
     for (DataArray& a : d.cell_data) {
       const DataArray* b = p.find_cell_array(a.name);
       a.values.insert(a.values.end(), b->values.begin(), b->values.end());
@@ -129,28 +135,17 @@ Concatenated concatenate(std::vector<NamedMesh>& pieces, const std::vector<std::
   return out;
 }
 
-dist::PiecesPart pieces_part(const Concatenated& all, double weld_tolerance) {
-  dist::PiecesPart part;
-  part.nodes_per_cell = all.data.nodes_per_cell();
-  part.points = all.data.points;
-  part.tolerance = shortest_edges(all.data);
-  for (double& t : part.tolerance) t *= weld_tolerance;
-  part.point_piece = all.point_piece;
-  part.cells = all.data.cells;
-  part.cell_piece = all.cell_piece;
-  return part;
-}
-
 // The rows the merged points take from the input points: coordinates, then every point
 // array's components.
-std::vector<double> point_rows(const MeshData& d, int& width) {
+std::vector<double> point_rows(const std::vector<Vec3>& points,
+                               const std::vector<DataArray>& point_data, int& width) {
   width = 3;
-  for (const DataArray& a : d.point_data) width += a.n_components;
+  for (const DataArray& a : point_data) width += a.n_components;
   std::vector<double> rows;
-  rows.reserve(d.points.size() * static_cast<std::size_t>(width));
-  for (std::size_t p = 0; p < d.points.size(); ++p) {
-    rows.insert(rows.end(), d.points[p].data(), d.points[p].data() + 3);
-    for (const DataArray& a : d.point_data) {
+  rows.reserve(points.size() * static_cast<std::size_t>(width));
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    rows.insert(rows.end(), points[p].data(), points[p].data() + 3);
+    for (const DataArray& a : point_data) {
       const auto nc = static_cast<std::size_t>(a.n_components);
       rows.insert(rows.end(), a.values.begin() + static_cast<std::ptrdiff_t>(p * nc),
                   a.values.begin() + static_cast<std::ptrdiff_t>((p + 1) * nc));
@@ -164,10 +159,10 @@ std::vector<double> point_rows(const MeshData& d, int& width) {
 MeshPart merged_part(const dist::Communicator& comm, Concatenated& all, dist::MergedPart& m) {
   MeshData& d = all.data;
   int width = 0;
-  const std::vector<double> held = point_rows(d, width);
-  const std::vector<double> rows =
-      dist::fetch_rows(comm, dist::Ranges::of(comm, static_cast<std::int64_t>(d.points.size())),
-                       held, width, m.node_sources);
+  std::vector<double> rows = point_rows(all.part.points, d.point_data, width);
+  const auto held = static_cast<std::int64_t>(all.part.points.size());
+  all.part = dist::PiecesPart();
+  rows = dist::fetch_rows(comm, dist::Ranges::of(comm, held), rows, width, m.node_sources);
   const auto w = static_cast<std::size_t>(width);
   const std::size_t n = m.node_sources.size();
   d.points.resize(n);
@@ -267,7 +262,9 @@ MeshPart merge_on_ranks(const dist::Communicator& comm, std::vector<NamedMesh> p
   });
   const auto n_pieces = dist::sum_in_rank_order(comm, static_cast<std::int64_t>(pieces.size()));
   Concatenated all = concatenate(pieces, index, first, file);
-  dist::MergedPart m = dist::merge_pieces(comm, pieces_part(all, weld_tolerance));
+  all.part.tolerance = shortest_edges(all.part);
+  for (double& t : all.part.tolerance) t *= weld_tolerance;
+  dist::MergedPart m = dist::merge_pieces(comm, all.part);
   log_info(file + ": " + std::to_string(n_pieces) + " pieces merged: " + std::to_string(m.welded) +
            " points welded, " + std::to_string(dist::sum_in_rank_order(comm, ghosts)) +
            " ghost cells and " + std::to_string(m.repeated) + " repeated cells dropped");

@@ -43,11 +43,10 @@ struct MergedPart {
 /// point itself when none. A point of tolerance 0 is never welded. Every rank calls it.
 std::vector<std::int64_t> weld(const Communicator& comm, const PiecesPart& part);
 
-/// For each cell of `part` whose welded nodes `nodes` (global ids, nodes_per_cell per cell)
-/// an earlier cell (global order) of another piece has as a set, 1; 0 otherwise. Every rank
-/// calls it.
+/// For each cell of `part` whose welded nodes (`welded`: weld's result) an earlier cell (global
+/// order) of another piece has as a set, 1; 0 otherwise. Every rank calls it.
 std::vector<char> repeated_cells(const Communicator& comm, const PiecesPart& part,
-                                 const std::vector<std::int64_t>& nodes);
+                                 const std::vector<std::int64_t>& welded);
 
 /// The merge of every rank's part (above). Every rank calls it.
 MergedPart merge_pieces(const Communicator& comm, const PiecesPart& part);
