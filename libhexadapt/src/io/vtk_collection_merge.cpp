@@ -12,6 +12,7 @@
 #include "hexadapt/core/log.h"
 #include "hexadapt/dist/merge_pieces.h"
 #include "hexadapt/dist/routing.h"
+#include "mesh_rows.h"
 #include "vtk_collection.h"
 
 namespace hexadapt::io::detail {
@@ -135,55 +136,25 @@ Concatenated concatenate(std::vector<NamedMesh>& pieces, const std::vector<std::
   return out;
 }
 
-// The rows the merged points take from the input points: coordinates, then every point
-// array's components.
-std::vector<double> point_rows(const std::vector<Vec3>& points,
-                               const std::vector<DataArray>& point_data, int& width) {
-  width = 3;
-  for (const DataArray& a : point_data) width += a.n_components;
-  std::vector<double> rows;
-  rows.reserve(points.size() * static_cast<std::size_t>(width));
-  for (std::size_t p = 0; p < points.size(); ++p) {
-    rows.insert(rows.end(), points[p].data(), points[p].data() + 3);
-    for (const DataArray& a : point_data) {
-      const auto nc = static_cast<std::size_t>(a.n_components);
-      rows.insert(rows.end(), a.values.begin() + static_cast<std::ptrdiff_t>(p * nc),
-                  a.values.begin() + static_cast<std::ptrdiff_t>((p + 1) * nc));
-    }
-  }
-  return rows;
-}
-
 // The merged part's data: the kept cells and their arrays, and the points' rows fetched from
 // the ranks holding the input points they come from.
 MeshPart merged_part(const dist::Communicator& comm, Concatenated& all, dist::MergedPart& m) {
   MeshData& d = all.data;
-  int width = 0;
-  std::vector<double> rows = point_rows(all.part.points, d.point_data, width);
-  const auto held = static_cast<std::int64_t>(all.part.points.size());
+  const auto held = all.part.points.size();
+  std::vector<double> rows = rows_of(&all.part.points, d.point_data, held);
   all.part = dist::PiecesPart();
-  rows = dist::fetch_rows(comm, dist::Ranges::of(comm, held), rows, width, m.node_sources);
-  const auto w = static_cast<std::size_t>(width);
-  const std::size_t n = m.node_sources.size();
-  d.points.resize(n);
-  for (std::size_t p = 0; p < n; ++p)
-    d.points[p] = Vec3(rows[p * w], rows[p * w + 1], rows[p * w + 2]);
-  std::size_t column = 3;
-  for (DataArray& a : d.point_data) {
-    const auto nc = static_cast<std::size_t>(a.n_components);
-    a.values.resize(n * nc);
-    for (std::size_t p = 0; p < n; ++p)
-      std::copy_n(rows.begin() + static_cast<std::ptrdiff_t>(p * w + column), nc,
-                  a.values.begin() + static_cast<std::ptrdiff_t>(p * nc));
-    column += nc;
-  }
+  rows = dist::fetch_rows(comm, dist::Ranges::of(comm, static_cast<std::int64_t>(held)), rows,
+                          row_width(true, d.point_data), m.node_sources);
+  set_rows(rows, m.node_sources.size(), &d.points, d.point_data);
   for (DataArray& a : d.cell_data)
     filter_tuples(a, m.kept.size(), [&](std::size_t c) { return m.kept[c] != 0; });
   d.cells = std::move(m.cells);
   MeshPart out;
   out.data = std::move(d);
   out.node_ids = std::move(m.node_ids);
-  out.cell_offset = m.cell_offset;
+  out.cell_ids.resize(static_cast<std::size_t>(out.data.n_cells()));
+  for (std::size_t c = 0; c < out.cell_ids.size(); ++c)
+    out.cell_ids[c] = m.cell_offset + static_cast<std::int64_t>(c);
   out.n_cells = m.n_cells;
   out.n_nodes = m.n_nodes;
   return out;

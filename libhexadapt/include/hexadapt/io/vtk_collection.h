@@ -29,6 +29,7 @@
 #include "hexadapt/dist/communicator.h"
 #include "hexadapt/io/mesh_data.h"
 #include "hexadapt/io/mesh_file.h"
+#include "hexadapt/io/mesh_part.h"
 
 namespace hexadapt::io {
 
@@ -57,25 +58,16 @@ struct RankPieces {
   std::vector<std::int64_t> index;  ///< each piece's place in the file's list
 };
 
-/// One rank's part of a mesh merged from pieces on several ranks: its share of the merged
-/// cells, in the merged mesh's order from `cell_offset`, and the nodes they use.
-struct MeshPart {
-  MeshData data;
-  std::vector<std::int64_t> node_ids;     ///< per point of data: its id in the merged mesh
-  std::int64_t cell_offset = 0;           ///< merged id of data's first cell
-  std::int64_t n_cells = 0, n_nodes = 0;  ///< of the whole merged mesh
-};
-
 /// Reads rank `rank`'s pieces of the .pvtu `path` (RankPieces). Throws OptionError for
 /// another file type, InputError and IoError as read_mesh does.
 RankPieces read_rank_pieces(const std::string& path, const ReadOptions& options, int rank,
                             int size);
 
 /// Merges every rank's pieces as read_mesh merges a .pvtu's (above): the merged mesh is the
-/// one read_mesh gives, whatever the number of ranks, each rank holding a contiguous share
-/// of its cells (the cells of its pieces that stay). Every rank calls it; errors (InputError:
-/// pieces of another kind of cell or other arrays than the first; no piece with cells) are
-/// the same on every rank.
+/// one read_mesh gives, whatever the number of ranks, each rank holding a contiguous range
+/// of its cells (the cells of its pieces that stay), every rank's in rank order. Every rank calls
+/// it; errors (InputError: pieces of another kind of cell or other arrays than the first; no piece
+/// with cells) are the same on every rank.
 MeshPart merge_rank_pieces(const dist::Communicator& comm, RankPieces pieces,
                            const ReadOptions& options);
 

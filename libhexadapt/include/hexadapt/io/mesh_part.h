@@ -1,0 +1,29 @@
+// A mesh spread over the ranks of a job, each rank holding some of its cells with global ids
+// (io::merge_rank_pieces reads one from a .pvtu's pieces), and the move of cells between
+// ranks (after a partitioner, dist/scotch_partition.h, chose where each goes).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "hexadapt/dist/communicator.h"
+#include "hexadapt/io/mesh_data.h"
+
+namespace hexadapt::io {
+
+/// One rank's part of a mesh spread over the ranks: some of its cells, in increasing global
+/// id, and the nodes they use, in increasing global id.
+struct MeshPart {
+  MeshData data;
+  std::vector<std::int64_t> cell_ids;     ///< per cell of data: its id in the whole mesh
+  std::vector<std::int64_t> node_ids;     ///< per point of data: its id in the whole mesh
+  std::int64_t n_cells = 0, n_nodes = 0;  ///< of the whole mesh
+};
+
+/// Moves every rank's cells of `part` to the rank `to` names for each (with their arrays and
+/// the nodes they use, points and point arrays): each rank then holds the cells sent to it
+/// and their nodes, both in increasing global id, the same for any order of arrival. Every
+/// rank calls it.
+MeshPart migrate(const dist::Communicator& comm, const MeshPart& part, const std::vector<int>& to);
+
+}  // namespace hexadapt::io
