@@ -40,7 +40,9 @@ Parcel unpacked(dist::Buffer& b) {
   return p;
 }
 
-std::vector<Parcel> parcels(const MeshPart& part, const std::vector<int>& to, int n) {
+// For each rank r, the cells cells_to[r] (local ids, increasing) and the nodes they use.
+std::vector<Parcel> parcels(const MeshPart& part,
+                            const std::vector<std::vector<std::size_t>>& cells_to) {
   const MeshData& d = part.data;
   const auto npc = static_cast<std::size_t>(d.nodes_per_cell());
   const auto cw = static_cast<std::size_t>(detail::row_width(false, d.cell_data));
@@ -48,20 +50,19 @@ std::vector<Parcel> parcels(const MeshPart& part, const std::vector<int>& to, in
   const std::vector<double> cell_rows =
       detail::rows_of(nullptr, d.cell_data, static_cast<std::size_t>(d.n_cells()));
   const std::vector<double> node_rows = detail::rows_of(&d.points, d.point_data, d.points.size());
-  std::vector<Parcel> out(static_cast<std::size_t>(n));
-  std::vector<int> sent_to(d.points.size(), -1);  // the last destination a node was packed for
-  for (int r = 0; r < n; ++r) {
-    Parcel& p = out[static_cast<std::size_t>(r)];
-    for (std::size_t c = 0; c < to.size(); ++c) {
-      if (to[c] != r) continue;
+  std::vector<Parcel> out(cells_to.size());
+  std::vector<std::size_t> packed_for(d.points.size(), cells_to.size());  // last rank packed for
+  for (std::size_t r = 0; r < cells_to.size(); ++r) {
+    Parcel& p = out[r];
+    for (const std::size_t c : cells_to[r]) {
       p.cell_ids.push_back(part.cell_ids[c]);
       p.cell_rows.insert(p.cell_rows.end(), cell_rows.begin() + static_cast<std::ptrdiff_t>(c * cw),
                          cell_rows.begin() + static_cast<std::ptrdiff_t>((c + 1) * cw));
       for (std::size_t v = 0; v < npc; ++v) {
         const std::size_t node = d.cells[c * npc + v].idx();
         p.cell_nodes.push_back(part.node_ids[node]);
-        if (sent_to[node] == r) continue;
-        sent_to[node] = r;
+        if (packed_for[node] == r) continue;
+        packed_for[node] = r;
         p.node_ids.push_back(part.node_ids[node]);
         p.node_rows.insert(p.node_rows.end(),
                            node_rows.begin() + static_cast<std::ptrdiff_t>(node * nw),
@@ -124,38 +125,29 @@ std::vector<double> rows_in(const std::vector<double>& rows, std::size_t width,
   return out;
 }
 
-}  // namespace
-
-MeshPart migrate(const dist::Communicator& comm, const MeshPart& part, const std::vector<int>& to) {
-  const MeshData& d = part.data;
-  if (to.size() != static_cast<std::size_t>(d.n_cells()))
-    throw InternalError("a destination for " + std::to_string(to.size()) + " of " +
-                        std::to_string(d.n_cells()) + " cells");
-  for (const int r : to)
-    if (r < 0 || r >= comm.size()) throw InternalError("destination rank " + std::to_string(r));
-  const Parcel all = joined(delivered(comm, parcels(part, to, comm.size())));
+// The part holding `all`'s cells in the order `cells` gives and their nodes (one copy of
+// each, increasing id), with `like`'s kind, metadata and array names.
+MeshPart assembled(const MeshPart& like, const Parcel& all, const std::vector<std::size_t>& cells) {
+  const MeshData& d = like.data;
   MeshPart out;
-  out.n_cells = part.n_cells;
-  out.n_nodes = part.n_nodes;
+  out.n_cells = like.n_cells;
+  out.n_nodes = like.n_nodes;
   MeshData& m = out.data;
   m.dim = d.dim;
   m.metadata = d.metadata;
   m.cell_data = d.cell_data;
   m.point_data = d.point_data;
-  // Nodes: one copy of each id, increasing.
-  std::vector<std::size_t> order = order_of(all.node_ids);
-  order.erase(
-      std::unique(order.begin(), order.end(),
+  std::vector<std::size_t> nodes = order_of(all.node_ids);
+  nodes.erase(
+      std::unique(nodes.begin(), nodes.end(),
                   [&](std::size_t a, std::size_t b) { return all.node_ids[a] == all.node_ids[b]; }),
-      order.end());
-  for (const std::size_t i : order) out.node_ids.push_back(all.node_ids[i]);
+      nodes.end());
+  for (const std::size_t i : nodes) out.node_ids.push_back(all.node_ids[i]);
   detail::set_rows(rows_in(all.node_rows,
-                           static_cast<std::size_t>(detail::row_width(true, m.point_data)), order),
-                   order.size(), &m.points, m.point_data);
-  // Cells: increasing id, their nodes found among the nodes.
+                           static_cast<std::size_t>(detail::row_width(true, m.point_data)), nodes),
+                   nodes.size(), &m.points, m.point_data);
   const auto npc = static_cast<std::size_t>(d.nodes_per_cell());
-  order = order_of(all.cell_ids);
-  for (const std::size_t c : order) {
+  for (const std::size_t c : cells) {
     out.cell_ids.push_back(all.cell_ids[c]);
     for (std::size_t v = 0; v < npc; ++v) {
       const auto it =
@@ -164,9 +156,99 @@ MeshPart migrate(const dist::Communicator& comm, const MeshPart& part, const std
     }
   }
   detail::set_rows(rows_in(all.cell_rows,
-                           static_cast<std::size_t>(detail::row_width(false, m.cell_data)), order),
-                   order.size(), nullptr, m.cell_data);
+                           static_cast<std::size_t>(detail::row_width(false, m.cell_data)), cells),
+                   cells.size(), nullptr, m.cell_data);
   return out;
+}
+
+// For each node of `part` (node ids increasing), the other ranks whose cells use it,
+// increasing: every node id meets its users on the rank it hashes to.
+std::vector<std::vector<int>> node_sharers(const dist::Communicator& comm, const MeshPart& part) {
+  const int n = comm.size();
+  std::vector<std::vector<std::int64_t>> to(static_cast<std::size_t>(n));
+  for (const std::int64_t g : part.node_ids)
+    to[static_cast<std::size_t>(dist::rank_of_key(&g, 1, n))].push_back(g);
+  std::vector<std::pair<std::int64_t, int>> users;
+  const auto from = dist::all_to_all(comm, std::move(to));
+  for (std::size_t r = 0; r < from.size(); ++r)
+    for (const std::int64_t g : from[r]) users.push_back({g, static_cast<int>(r)});
+  std::sort(users.begin(), users.end());
+  std::vector<std::vector<std::int64_t>> replies(static_cast<std::size_t>(n));
+  for (std::size_t i = 0; i < users.size();) {
+    std::size_t end = i + 1;
+    while (end < users.size() && users[end].first == users[i].first) ++end;
+    for (std::size_t a = i; a < end; ++a)
+      for (std::size_t b = i; b < end; ++b)
+        if (a != b) {
+          auto& reply = replies[static_cast<std::size_t>(users[a].second)];
+          reply.push_back(users[a].first);
+          reply.push_back(users[b].second);
+        }
+    i = end;
+  }
+  std::vector<std::vector<int>> sharers(part.node_ids.size());
+  for (const auto& got : dist::all_to_all(comm, std::move(replies)))
+    for (std::size_t i = 0; i + 1 < got.size(); i += 2) {
+      const auto it = std::lower_bound(part.node_ids.begin(), part.node_ids.end(), got[i]);
+      sharers[static_cast<std::size_t>(it - part.node_ids.begin())].push_back(
+          static_cast<int>(got[i + 1]));
+    }
+  return sharers;
+}
+
+}  // namespace
+
+GhostedPart with_ghost_layer(const dist::Communicator& comm, const MeshPart& owned) {
+  const std::vector<std::vector<int>> sharers = node_sharers(comm, owned);
+  const MeshData& d = owned.data;
+  const auto npc = static_cast<std::size_t>(d.nodes_per_cell());
+  const auto me = static_cast<std::size_t>(comm.rank());
+  std::vector<std::vector<std::size_t>> cells_to(static_cast<std::size_t>(comm.size()));
+  for (std::size_t c = 0; c < static_cast<std::size_t>(d.n_cells()); ++c) {
+    cells_to[me].push_back(c);
+    for (std::size_t v = 0; v < npc; ++v)
+      for (const int s : sharers[d.cells[c * npc + v].idx()]) {
+        auto& list = cells_to[static_cast<std::size_t>(s)];
+        if (list.empty() || list.back() != c) list.push_back(c);
+      }
+  }
+  std::vector<Parcel> in = delivered(comm, parcels(owned, cells_to));
+  std::size_t first = 0;  // where this rank's own cells start once the parcels are joined
+  for (std::size_t r = 0; r < me; ++r) first += in[r].cell_ids.size();
+  const std::size_t n_owned = in[me].cell_ids.size();
+  const Parcel all = joined(std::move(in));
+  std::vector<std::size_t> cells(n_owned);
+  std::iota(cells.begin(), cells.end(), first);
+  std::vector<std::size_t> ghosts = order_of(all.cell_ids);
+  ghosts.erase(std::remove_if(ghosts.begin(), ghosts.end(),
+                              [&](std::size_t c) { return c >= first && c < first + n_owned; }),
+               ghosts.end());
+  cells.insert(cells.end(), ghosts.begin(), ghosts.end());
+  GhostedPart out;
+  out.part = assembled(owned, all, cells);
+  out.owned_cells = static_cast<index_t>(n_owned);
+  // This rank's own nodes that no lower rank uses; the ghosts' other nodes are not its own.
+  out.owns_node.assign(out.part.node_ids.size(), 0);
+  for (std::size_t v = 0; v < owned.node_ids.size(); ++v)
+    if (sharers[v].empty() || sharers[v].front() > comm.rank())
+      out.owns_node[static_cast<std::size_t>(
+          std::lower_bound(out.part.node_ids.begin(), out.part.node_ids.end(), owned.node_ids[v]) -
+          out.part.node_ids.begin())] = 1;
+  return out;
+}
+
+MeshPart migrate(const dist::Communicator& comm, const MeshPart& part, const std::vector<int>& to) {
+  if (to.size() != static_cast<std::size_t>(part.data.n_cells()))
+    throw InternalError("a destination for " + std::to_string(to.size()) + " of " +
+                        std::to_string(part.data.n_cells()) + " cells");
+  std::vector<std::vector<std::size_t>> cells_to(static_cast<std::size_t>(comm.size()));
+  for (std::size_t c = 0; c < to.size(); ++c) {
+    if (to[c] < 0 || to[c] >= comm.size())
+      throw InternalError("destination rank " + std::to_string(to[c]));
+    cells_to[static_cast<std::size_t>(to[c])].push_back(c);
+  }
+  const Parcel all = joined(delivered(comm, parcels(part, cells_to)));
+  return assembled(part, all, order_of(all.cell_ids));
 }
 
 }  // namespace hexadapt::io

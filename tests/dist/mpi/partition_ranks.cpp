@@ -162,5 +162,60 @@ TEST(PartitionOnRanks, MovedCellsKeepTheirIdsNodesAndArrays) {
   EXPECT_EQ(std::count(used.begin(), used.end(), 0), 0);
 }
 
+TEST(PartitionOnRanks, AGhostLayerHoldsEveryCellAroundTheOwnedNodes) {
+  const auto& comm = dynamic_cast<const dist::MpiCommunicator&>(test::world());
+  const io::MeshPart part = grid_part();
+  const std::vector<int> to =
+      dist::scotch_partition(comm, dist::dual_graph(comm, 8, cell_nodes(part)), comm.size());
+  const io::MeshPart owned = io::migrate(comm, part, to);
+  const io::GhostedPart g = io::with_ghost_layer(comm, owned);
+  const std::size_t n_owned = owned.cell_ids.size();
+  ASSERT_EQ(g.owned_cells, static_cast<index_t>(n_owned));
+  EXPECT_EQ(
+      std::vector<std::int64_t>(g.part.cell_ids.begin(),
+                                g.part.cell_ids.begin() + static_cast<std::ptrdiff_t>(n_owned)),
+      owned.cell_ids);
+  // From the whole grid: the ghosts are the other ranks' cells using a node of this rank's
+  // cells, and a node's owner is the lowest rank whose cells use it.
+  const std::vector<int> parts = dist::all_gather_values(comm, to);
+  const std::vector<std::int64_t> grid = grid_cells();
+  const std::size_t n_nodes = (n + 1) * (n + 1) * (n + 1);
+  std::vector<int> lowest(n_nodes, comm.size());
+  std::vector<char> mine(n_nodes, 0);
+  for (std::size_t c = 0; c < parts.size(); ++c)
+    for (std::size_t v = 0; v < 8; ++v) {
+      const auto node = static_cast<std::size_t>(grid[c * 8 + v]);
+      lowest[node] = std::min(lowest[node], parts[c]);
+      if (parts[c] == comm.rank()) mine[node] = 1;
+    }
+  std::vector<std::int64_t> ghosts;
+  for (std::size_t c = 0; c < parts.size(); ++c) {
+    if (parts[c] == comm.rank()) continue;
+    bool touches = false;
+    for (std::size_t v = 0; v < 8; ++v)
+      touches |= mine[static_cast<std::size_t>(grid[c * 8 + v])] != 0;
+    if (touches) ghosts.push_back(static_cast<std::int64_t>(c));
+  }
+  EXPECT_EQ(
+      std::vector<std::int64_t>(g.part.cell_ids.begin() + static_cast<std::ptrdiff_t>(n_owned),
+                                g.part.cell_ids.end()),
+      ghosts);
+  std::int64_t owned_nodes = 0;
+  for (std::size_t v = 0; v < g.part.node_ids.size(); ++v) {
+    const auto node = static_cast<std::size_t>(g.part.node_ids[v]);
+    EXPECT_EQ(g.owns_node[v] != 0, lowest[node] == comm.rank()) << "node " << node;
+    owned_nodes += g.owns_node[v];
+    const Vec3 p(static_cast<double>(node % (n + 1)), static_cast<double>(node / (n + 1) % (n + 1)),
+                 static_cast<double>(node / ((n + 1) * (n + 1))));
+    EXPECT_EQ(g.part.data.points[v], p);
+  }
+  EXPECT_EQ(dist::sum_in_rank_order(comm, owned_nodes), static_cast<std::int64_t>(n_nodes));
+  // Every ghost's nodes are held, with the grid's connectivity.
+  for (std::size_t c = 0; c < g.part.cell_ids.size(); ++c)
+    for (std::size_t v = 0; v < 8; ++v)
+      EXPECT_EQ(g.part.node_ids[g.part.data.cells[c * 8 + v].idx()],
+                grid[static_cast<std::size_t>(g.part.cell_ids[c]) * 8 + v]);
+}
+
 }  // namespace
 }  // namespace hexadapt

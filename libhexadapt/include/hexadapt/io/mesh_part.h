@@ -26,4 +26,16 @@ struct MeshPart {
 /// rank calls it.
 MeshPart migrate(const dist::Communicator& comm, const MeshPart& part, const std::vector<int>& to);
 
+/// A rank's cells and one layer of ghost cells around them.
+struct GhostedPart {
+  MeshPart part;            ///< the owned cells first, then the ghosts, each group in increasing id
+  index_t owned_cells = 0;  ///< how many of part's first cells this rank owns
+  std::vector<char>
+      owns_node;  ///< per node of part: the lowest rank whose cells use it is this one
+};
+
+/// Every rank's `owned` cells with the cells of the other ranks that share a node with one of
+/// them (a node's whole star is then on each rank using it). Every rank calls it.
+GhostedPart with_ghost_layer(const dist::Communicator& comm, const MeshPart& owned);
+
 }  // namespace hexadapt::io
