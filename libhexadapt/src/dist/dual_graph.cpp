@@ -23,6 +23,7 @@ std::vector<KeyedFace> faces_of_cells(int nodes_per_cell, const std::vector<std:
                                       std::int64_t first, int& per_face) {
   const auto npc = static_cast<std::size_t>(nodes_per_cell);
   std::vector<KeyedFace> faces;
+  faces.reserve(nodes.size() / npc * (nodes_per_cell == 8 ? 6 : 4));
   per_face = nodes_per_cell == 8 ? 4 : 2;
   for (std::size_t c = 0; c < nodes.size() / npc; ++c) {
     const std::int64_t* n = nodes.data() + c * npc;
@@ -44,9 +45,9 @@ std::vector<KeyedFace> faces_of_cells(int nodes_per_cell, const std::vector<std:
 // both, sent to the rank holding the cell.
 std::vector<std::vector<std::int64_t>> pair_cells(std::vector<KeyedFace> faces, const Ranges& cells,
                                                   int n) {
-  std::sort(faces.begin(), faces.end(), [](const KeyedFace& a, const KeyedFace& b) {
-    return std::tie(a.key, a.cell) < std::tie(b.key, b.cell);
-  });
+  // By key only: the pairs of a key are all sent, in whatever order.
+  std::sort(faces.begin(), faces.end(),
+            [](const KeyedFace& a, const KeyedFace& b) { return a.key < b.key; });
   std::vector<std::vector<std::int64_t>> edges(static_cast<std::size_t>(n));
   for (std::size_t i = 0; i < faces.size();) {
     std::size_t end = i + 1;
@@ -76,22 +77,44 @@ DistGraph dual_graph(const Communicator& comm, int nodes_per_cell,
   g.first = cells.first[static_cast<std::size_t>(comm.rank())];
   const int n = comm.size();
   int per_face = 0;
+  std::vector<KeyedFace> faces = faces_of_cells(nodes_per_cell, cell_nodes, g.first, per_face);
   std::vector<std::vector<KeyedFace>> to(static_cast<std::size_t>(n));
-  for (const KeyedFace& f : faces_of_cells(nodes_per_cell, cell_nodes, g.first, per_face))
-    to[static_cast<std::size_t>(rank_of_key(f.key.data(), static_cast<std::size_t>(per_face), n))]
-        .push_back(f);
-  std::vector<KeyedFace> mine;
-  for (auto& from : all_to_all(comm, std::move(to)))
-    mine.insert(mine.end(), from.begin(), from.end());
-  std::vector<std::pair<std::int64_t, std::int64_t>> edges;
-  for (const auto& from : all_to_all(comm, pair_cells(std::move(mine), cells, n)))
-    for (std::size_t i = 0; i + 1 < from.size(); i += 2) edges.push_back({from[i], from[i + 1]});
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  g.offsets.assign(static_cast<std::size_t>(n_cells) + 1, 0);
-  for (const auto& [cell, other] : edges) ++g.offsets[static_cast<std::size_t>(cell - g.first) + 1];
-  for (std::size_t v = 1; v < g.offsets.size(); ++v) g.offsets[v] += g.offsets[v - 1];
-  for (const auto& e : edges) g.neighbours.push_back(e.second);
+  if (n == 1) {
+    to[0] = std::move(faces);
+  } else {
+    for (const KeyedFace& f : faces)
+      to[static_cast<std::size_t>(rank_of_key(f.key.data(), static_cast<std::size_t>(per_face), n))]
+          .push_back(f);
+    faces = std::vector<KeyedFace>();
+  }
+  std::vector<std::vector<KeyedFace>> received = all_to_all(comm, std::move(to));
+  std::vector<KeyedFace> mine = std::move(received[0]);
+  for (std::size_t r = 1; r < received.size(); ++r) {
+    mine.insert(mine.end(), received[r].begin(), received[r].end());
+    received[r] = std::vector<KeyedFace>();
+  }
+  // Each cell's neighbours, counted, placed, then sorted and made unique per cell (two cells
+  // sharing two faces are neighbours once).
+  const auto replies = all_to_all(comm, pair_cells(std::move(mine), cells, n));
+  std::vector<std::int64_t> count(static_cast<std::size_t>(n_cells) + 1, 0);
+  for (const auto& from : replies)
+    for (std::size_t i = 0; i + 1 < from.size(); i += 2)
+      ++count[static_cast<std::size_t>(from[i] - g.first) + 1];
+  for (std::size_t v = 1; v < count.size(); ++v) count[v] += count[v - 1];
+  std::vector<std::int64_t> all(static_cast<std::size_t>(count.back()));
+  std::vector<std::int64_t> next(count.begin(), count.end() - 1);
+  for (const auto& from : replies)
+    for (std::size_t i = 0; i + 1 < from.size(); i += 2)
+      all[static_cast<std::size_t>(next[static_cast<std::size_t>(from[i] - g.first)]++)] =
+          from[i + 1];
+  g.offsets.assign(1, 0);
+  g.neighbours.reserve(all.size());
+  for (std::size_t v = 0; v + 1 < count.size(); ++v) {
+    const auto first = all.begin() + count[v], end = all.begin() + count[v + 1];
+    std::sort(first, end);
+    g.neighbours.insert(g.neighbours.end(), first, std::unique(first, end));
+    g.offsets.push_back(static_cast<std::int64_t>(g.neighbours.size()));
+  }
   return g;
 }
 
