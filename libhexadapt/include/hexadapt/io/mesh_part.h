@@ -28,10 +28,12 @@ MeshPart migrate(const dist::Communicator& comm, const MeshPart& part, const std
 
 /// A rank's cells and one layer of ghost cells around them.
 struct GhostedPart {
-  MeshPart part;            ///< the owned cells first, then the ghosts, each group in increasing id
-  index_t owned_cells = 0;  ///< how many of part's first cells this rank owns
-  std::vector<char>
-      owns_node;  ///< per node of part: the lowest rank whose cells use it is this one
+  /// The owned cells first, then the ghosts, each group in increasing id.
+  MeshPart part;
+  /// How many of part's first cells this rank owns.
+  index_t owned_cells = 0;
+  /// Per node of part: this rank owns it (the lowest rank whose cells use it is this one).
+  std::vector<char> owns_node;
 };
 
 /// Every rank's `owned` cells with the cells of the other ranks that share a node with one of
