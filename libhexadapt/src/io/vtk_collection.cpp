@@ -41,8 +41,8 @@ pugi::xml_node parallel_unstructured(const VtkXmlDocument& doc) {
   return dataset;
 }
 
-// Piece k of a .pvtu's list (k in [first, end)) read as `pieces` and `index` take them; empty
-// pieces (VTK writes them when there are more pieces than cells) are skipped.
+// The pieces [first, end) of a .pvtu's list read into `pieces`, their places in the list into
+// `index`; empty pieces (VTK writes them when there are more pieces than cells) are skipped.
 void read_pieces(const VtkXmlDocument& doc, const CollectionContext& ctx, std::size_t first,
                  std::size_t end, std::vector<NamedMesh>& pieces,
                  std::vector<std::int64_t>& index) {
