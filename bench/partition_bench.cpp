@@ -1,13 +1,14 @@
 // Times an unstructured mesh spread over the ranks of an MPI job: every rank reads its share
 // of a .pvtu's pieces and the pieces are merged (io::merge_rank_pieces), the dual graph is
 // built, PT-Scotch cuts it into one part per rank, the cells move to their parts and get a
-// ghost layer. Prints, per phase, the slowest rank's wall seconds and the CPU seconds of all
-// ranks; then per rank its cells before and after the cut, its ghosts, the bytes it sent and
-// its peak resident memory; and the faces the cut crosses.
+// ghost layer. Prints, per phase, the slowest rank's wall seconds, the CPU seconds of all
+// ranks and the ranks' peak memory so far; then per rank its cells before and after the cut, its
+// ghosts, the bytes it sent and its peak resident memory; and the faces the cut crosses.
 //
 //   mpirun -np N hexadapt_partition_bench FILE.pvtu
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -22,6 +23,12 @@ namespace {
 
 using namespace hexadapt;
 
+double peak_mib() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_maxrss) / 1024.0;
+}
+
 // Wall seconds of the slowest rank, and CPU seconds of all ranks, of f.
 void phase(const dist::Communicator& comm, const char* name, const std::function<void()>& f) {
   const std::clock_t c0 = std::clock();
@@ -35,13 +42,11 @@ void phase(const dist::Communicator& comm, const char* name, const std::function
     max_wall = std::max(max_wall, all[r]);
     total_cpu += all[r + 1];
   }
-  if (comm.rank() == 0) std::printf("  %-12s %8.3f s   cpu %8.3f s\n", name, max_wall, total_cpu);
-}
-
-double peak_mib() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return static_cast<double>(u.ru_maxrss) / 1024.0;
+  const std::vector<double> peaks = dist::all_gather_values(comm, std::vector<double>{peak_mib()});
+  if (comm.rank() == 0)
+    std::printf("  %-12s %8.3f s   cpu %8.3f s   peak so far %4.0f-%4.0f MiB per rank\n", name,
+                max_wall, total_cpu, *std::min_element(peaks.begin(), peaks.end()),
+                *std::max_element(peaks.begin(), peaks.end()));
 }
 
 std::vector<std::int64_t> cell_nodes(const io::MeshPart& part) {

@@ -1,5 +1,6 @@
-// dist::dual_graph: faces keyed by their sorted global nodes meet on the rank the key hashes
-// to; every pair of cells there is an edge, sent back to the ranks holding the two cells.
+// dist::dual_graph: faces keyed by their sorted global nodes; a face a rank holds twice is an
+// edge there, the others meet on the rank the key hashes to, where every pair of cells is an
+// edge, sent back to the ranks holding the two cells.
 #include "hexadapt/dist/dual_graph.h"
 
 #include <algorithm>
@@ -78,15 +79,25 @@ DistGraph dual_graph(const Communicator& comm, int nodes_per_cell,
   const int n = comm.size();
   int per_face = 0;
   std::vector<KeyedFace> faces = faces_of_cells(nodes_per_cell, cell_nodes, g.first, per_face);
+  // A face this rank holds twice is paired here; the others (a face of the part's boundary,
+  // or of three cells or more) go to the rank their key hashes to, to meet the other ranks'.
+  std::sort(faces.begin(), faces.end(),
+            [](const KeyedFace& a, const KeyedFace& b) { return a.key < b.key; });
   std::vector<std::vector<KeyedFace>> to(static_cast<std::size_t>(n));
-  if (n == 1) {
-    to[0] = std::move(faces);
-  } else {
-    for (const KeyedFace& f : faces)
-      to[static_cast<std::size_t>(rank_of_key(f.key.data(), static_cast<std::size_t>(per_face), n))]
-          .push_back(f);
-    faces = std::vector<KeyedFace>();
+  std::size_t twice = 0;  // faces[0, twice): the groups of two, moved to the front
+  for (std::size_t i = 0; i < faces.size();) {
+    std::size_t end = i + 1;
+    while (end < faces.size() && faces[end].key == faces[i].key) ++end;
+    for (std::size_t f = i; f < end; ++f)
+      if (end - i == 2)
+        faces[twice++] = faces[f];
+      else
+        to[static_cast<std::size_t>(
+               rank_of_key(faces[f].key.data(), static_cast<std::size_t>(per_face), n))]
+            .push_back(faces[f]);
+    i = end;
   }
+  faces.resize(twice);
   std::vector<std::vector<KeyedFace>> received = all_to_all(comm, std::move(to));
   std::vector<KeyedFace> mine = std::move(received[0]);
   for (std::size_t r = 1; r < received.size(); ++r) {
@@ -95,7 +106,10 @@ DistGraph dual_graph(const Communicator& comm, int nodes_per_cell,
   }
   // Each cell's neighbours, counted, placed, then sorted and made unique per cell (two cells
   // sharing two faces are neighbours once).
-  const auto replies = all_to_all(comm, pair_cells(std::move(mine), cells, n));
+  std::vector<std::vector<std::int64_t>> replies =
+      all_to_all(comm, pair_cells(std::move(mine), cells, n));
+  replies.push_back(
+      std::move(pair_cells(std::move(faces), cells, n)[static_cast<std::size_t>(comm.rank())]));
   std::vector<std::int64_t> count(static_cast<std::size_t>(n_cells) + 1, 0);
   for (const auto& from : replies)
     for (std::size_t i = 0; i + 1 < from.size(); i += 2)

@@ -39,7 +39,16 @@ struct Buckets {
           static_cast<std::int64_t>(std::floor((p[a] + shift - lo[a]) / size));
     return k;
   }
-  int rank(const Key& k, int n) const { return rank_of_key(k.data(), 3, n); }
+  /// The deciding rank of bucket k: that of its block of buckets_per_block^3 buckets, so that
+  /// a tolerance box across two buckets mostly has one deciding rank (each rank it touches
+  /// gets a copy of the point).
+  int rank(const Key& k, int n) const {
+    Key block;
+    for (std::size_t a = 0; a < 3; ++a)
+      block[a] = k[a] >= 0 ? k[a] / buckets_per_block : -((-k[a] - 1) / buckets_per_block) - 1;
+    return rank_of_key(block.data(), 3, n);
+  }
+  static constexpr std::int64_t buckets_per_block = 64;
 };
 
 Buckets buckets_of(const Communicator& comm, const PiecesPart& part) {

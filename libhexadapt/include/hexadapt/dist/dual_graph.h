@@ -23,8 +23,10 @@ struct DistGraph {
 
 /// The dual graph of the cells this rank holds (`nodes_per_cell` global node ids per cell, 4:
 /// quads, 8: hexes in the kernel's binary order), every rank's cells numbered in rank order.
-/// Each face goes, keyed by its sorted nodes, to the rank the key hashes to, which pairs the
-/// cells sharing it. Every rank calls it.
+/// Faces are keyed by their sorted nodes: a face this rank holds twice pairs its two cells
+/// here; the others go to the rank the key hashes to, which pairs the cells sharing it. (A
+/// face of three cells or more, two of them here, misses the pairs with the others: a
+/// partitioner's input, not a mesh check.) Every rank calls it.
 DistGraph dual_graph(const Communicator& comm, int nodes_per_cell,
                      const std::vector<std::int64_t>& cell_nodes);
 
