@@ -1,8 +1,9 @@
 // The weld of dist::merge_pieces: space is cut into cubes (buckets) twice the largest
 // tolerance, so the points within a point's tolerance lie in the <= 2 x 2 x 2 buckets its
-// tolerance box touches. Each bucket has a deciding rank (a hash of its key); every point goes
-// to the ranks of the buckets its box touches, its own bucket among them, where it is a
-// candidate too, so the rank of a bucket sees every pair a search there can find. Each
+// tolerance box touches. Each bucket has a deciding rank (a hash of the key of its block of
+// buckets); every point goes to the ranks deciding the buckets its box touches, its own
+// bucket's among them, where it is a candidate too, so the rank deciding a bucket sees every
+// pair a search there can find. Each
 // searcher's earliest match comes back to the point's rank; chains (q to p to an earlier p')
 // are then followed by asking the rank holding the match, until no rank changes a point.
 #include <algorithm>
