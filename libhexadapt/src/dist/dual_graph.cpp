@@ -98,12 +98,7 @@ DistGraph dual_graph(const Communicator& comm, int nodes_per_cell,
     i = end;
   }
   faces.resize(twice);
-  std::vector<std::vector<KeyedFace>> received = all_to_all(comm, std::move(to));
-  std::vector<KeyedFace> mine = std::move(received[0]);
-  for (std::size_t r = 1; r < received.size(); ++r) {
-    mine.insert(mine.end(), received[r].begin(), received[r].end());
-    received[r] = std::vector<KeyedFace>();
-  }
+  std::vector<KeyedFace> mine = joined(all_to_all(comm, std::move(to)));
   // Each cell's neighbours, counted, placed, then sorted and made unique per cell (two cells
   // sharing two faces are neighbours once).
   std::vector<std::vector<std::int64_t>> replies =

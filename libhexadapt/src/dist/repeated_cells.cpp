@@ -50,11 +50,9 @@ std::vector<char> repeated_cells(const Communicator& comm, const PiecesPart& par
     std::sort(k.key.begin(), k.key.begin() + static_cast<std::ptrdiff_t>(npc));
     out[static_cast<std::size_t>(rank_of_key(k.key.data(), npc, n))].push_back(k);
   }
-  std::vector<KeyedCell> mine;
-  for (auto& from : all_to_all(comm, std::move(out)))
-    mine.insert(mine.end(), from.begin(), from.end());
   std::vector<char> repeated(n_cells, 0);
-  for (const auto& from : all_to_all(comm, flag_repeats(std::move(mine), ranges, n)))
+  for (const auto& from :
+       all_to_all(comm, flag_repeats(joined(all_to_all(comm, std::move(out))), ranges, n)))
     for (const std::int64_t c : from) repeated[static_cast<std::size_t>(c - first)] = 1;
   return repeated;
 }

@@ -100,9 +100,7 @@ int search_ranks(const Buckets& b, const WeldPoint& q, int n, std::array<int, 8>
 std::vector<std::vector<std::int64_t>> earliest_matches(const Buckets& b,
                                                         std::vector<std::vector<WeldPoint>> from,
                                                         const Ranges& ranges, int rank, int n) {
-  std::vector<WeldPoint> all = std::move(from[0]);
-  for (std::size_t r = 1; r < from.size(); ++r)
-    all.insert(all.end(), from[r].begin(), from[r].end());
+  const std::vector<WeldPoint> all = joined(std::move(from));
   // The candidates by bucket, then id: `all` comes in increasing ids (every rank's in rank
   // order, each in its order).
   std::vector<std::pair<Key, std::size_t>> sorted;

@@ -23,6 +23,16 @@ std::vector<std::int64_t> grid_cells() {
   return out;
 }
 
+// Grid node g's point (i, j, k), and the point array's value there.
+Vec3 grid_point(std::int64_t g) {
+  return {static_cast<double>(g % (n + 1)), static_cast<double>(g / (n + 1) % (n + 1)),
+          static_cast<double>(g / ((n + 1) * (n + 1)))};
+}
+
+double point_sum(const Vec3& p) {
+  return p[0] + 10 * p[1] + 100 * p[2];
+}
+
 // This rank's share of the grid's cells (a contiguous range, every rank's in rank order,
 // the first ranks one more), with the nodes they use and arrays of known values.
 io::MeshPart grid_part() {
@@ -41,10 +51,8 @@ io::MeshPart grid_part() {
   part.node_ids = used;
   io::DataArray id{"id", 1, io::ScalarType::int64, {}}, sum{"sum", 1, io::ScalarType::float64, {}};
   for (const std::int64_t g : used) {
-    const auto i = static_cast<double>(g % (n + 1)), j = static_cast<double>(g / (n + 1) % (n + 1)),
-               k = static_cast<double>(g / ((n + 1) * (n + 1)));
-    d.points.emplace_back(i, j, k);
-    sum.values.push_back(i + 10 * j + 100 * k);
+    d.points.push_back(grid_point(g));
+    sum.values.push_back(point_sum(d.points.back()));
   }
   for (std::int64_t c = first; c < end; ++c) {
     part.cell_ids.push_back(c);
@@ -149,11 +157,8 @@ TEST(PartitionOnRanks, MovedCellsKeepTheirIdsNodesAndArrays) {
       const std::size_t local = d.cells[c * 8 + v].idx();
       const std::int64_t node = grid[static_cast<std::size_t>(g) * 8 + v];
       ASSERT_EQ(moved.node_ids[local], node);
-      const Vec3 p(static_cast<double>(node % (n + 1)),
-                   static_cast<double>(node / (n + 1) % (n + 1)),
-                   static_cast<double>(node / ((n + 1) * (n + 1))));
-      EXPECT_EQ(d.points[local], p);
-      EXPECT_EQ(d.point_data[0].values[local], p[0] + 10 * p[1] + 100 * p[2]);
+      EXPECT_EQ(d.points[local], grid_point(node));
+      EXPECT_EQ(d.point_data[0].values[local], point_sum(grid_point(node)));
     }
   }
   // No node is held that no cell uses.
@@ -205,9 +210,7 @@ TEST(PartitionOnRanks, AGhostLayerHoldsEveryCellAroundTheOwnedNodes) {
     const auto node = static_cast<std::size_t>(g.part.node_ids[v]);
     EXPECT_EQ(g.owns_node[v] != 0, lowest[node] == comm.rank()) << "node " << node;
     owned_nodes += g.owns_node[v];
-    const Vec3 p(static_cast<double>(node % (n + 1)), static_cast<double>(node / (n + 1) % (n + 1)),
-                 static_cast<double>(node / ((n + 1) * (n + 1))));
-    EXPECT_EQ(g.part.data.points[v], p);
+    EXPECT_EQ(g.part.data.points[v], grid_point(static_cast<std::int64_t>(node)));
   }
   EXPECT_EQ(dist::sum_in_rank_order(comm, owned_nodes), static_cast<std::int64_t>(n_nodes));
   // Every ghost's nodes are held, with the grid's connectivity.

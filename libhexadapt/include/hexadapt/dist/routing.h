@@ -34,6 +34,18 @@ std::vector<std::vector<T>> all_to_all(const Communicator& comm, std::vector<std
   return from;
 }
 
+/// What every rank sent (all_to_all's result) one after another, in rank order; the parts are
+/// released as they are joined.
+template <class T>
+std::vector<T> joined(std::vector<std::vector<T>> from) {
+  std::vector<T> all = from.empty() ? std::vector<T>() : std::move(from[0]);
+  for (std::size_t r = 1; r < from.size(); ++r) {
+    all.insert(all.end(), from[r].begin(), from[r].end());
+    from[r] = std::vector<T>();
+  }
+  return all;
+}
+
 /// A global numbering held by the ranks in contiguous ranges, in rank order: rank r holds
 /// the ids [first[r], first[r + 1]).
 struct Ranges {

@@ -3,12 +3,11 @@
 // choices reproducible, and cut with the default mapping strategy.
 #include "hexadapt/dist/scotch_partition.h"
 
+// ptscotch.h needs mpi.h (MPI_Comm) before it.
 #include <mpi.h>
-// ptscotch.h uses these without including them.
 #include <scotch/ptscotch.h>
 
 #include <cstdint>
-#include <cstdio>
 #include <limits>
 
 #include "hexadapt/core/error.h"
