@@ -1,5 +1,5 @@
 // Helpers of the measure reports over file data: checking node ids, the corners and centroid
-// of one cell, and the min / mean / max of per-cell values.
+// of one cell.
 #pragma once
 
 #include <algorithm>
@@ -67,18 +67,6 @@ inline Vec3 centroid(const io::MeshData& data, std::size_t c) {
   Vec3 s = Vec3::Zero();
   for (std::size_t k = 0; k < npc; ++k) s += data.points[data.cells[c * npc + k].idx()];
   return s / double(npc);
-}
-
-/// Min, plain mean and max (all 0 when `v` is empty).
-inline QualityStats stats(const std::vector<double>& v) {
-  QualityStats s;
-  if (v.empty()) return s;
-  s.min = *std::min_element(v.begin(), v.end());
-  s.max = *std::max_element(v.begin(), v.end());
-  double sum = 0;  // serial, in cell order: the same bytes whatever the thread count
-  for (double x : v) sum += x;
-  s.mean = sum / double(v.size());
-  return s;
 }
 
 }  // namespace hexadapt

@@ -4,10 +4,14 @@
 // with the mean boundary-face diameter as bucket size.
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <tuple>
 
 #include "hexadapt/core/parallel.h"
+#include "hexadapt/dist/routing.h"
 #include "hexadapt/mesh/cell_complex.h"
 #include "mesh_check_parts.h"
+#include "near_nodes.h"
 #include "point_grid.h"
 
 namespace hexadapt::mesh_check_detail {
@@ -63,80 +67,115 @@ double diameter(const std::array<Vec3, N>& q) {
   return d;
 }
 
+// The boundary nodes of a part: nodes of a face with no cell on its other side. Exact for
+// the owned nodes (their whole star, and every cell across a face holding them, is local).
+template <class M>
+std::vector<char> boundary_nodes(const M& mesh) {
+  std::vector<char> on_boundary(static_cast<std::size_t>(mesh.n_nodes()), 0);
+  for (CellId c : id_range<CellId>(mesh.n_cells()))
+    for (int lf = 0; lf < M::faces_per_cell; ++lf)
+      if (!mesh.neighbour(c, lf).valid())
+        for (NodeId n : mesh.face_nodes(c, lf)) on_boundary[n.idx()] = 1;
+  return on_boundary;
+}
+
+// A node found on a face: sent to the node's owner, who counts it once.
 struct Hit {
-  NodeId node;
-  std::size_t face;  // index into the boundary list
+  std::int64_t node, cell;
+  std::int32_t local_face, pad = 0;
 };
+
+// Counts and lists the owned nodes that some face holds, each with the lowest (cell, local
+// face) holding it, as the faces appear in the boundary list of the whole mesh.
+void count_hanging(const dist::Communicator& comm, const PartIds& ids,
+                   const std::vector<Vec3>& points, std::vector<std::vector<Hit>> to_owner,
+                   const MeshCheckOptions& options, MeshCheckResult& result) {
+  std::vector<Hit> hits = dist::joined(dist::all_to_all(comm, std::move(to_owner)));
+  std::sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) {
+    return std::tie(a.node, a.cell, a.local_face) < std::tie(b.node, b.cell, b.local_face);
+  });
+  for (std::size_t i = 0; i < hits.size(); ++i) {
+    if (i > 0 && hits[i].node == hits[i - 1].node) continue;
+    const Hit& h = hits[i];
+    if (++result.hanging_nodes > options.max_listed) continue;
+    const auto n = static_cast<std::size_t>(local_node(ids, points.size(), h.node));
+    result.first_hanging.push_back(
+        {NodeId(h.node), points[n], CellId(h.cell), static_cast<int>(h.local_face), {}});
+  }
+}
 
 }  // namespace
 
 template <class M>
-void find_hanging_nodes(const M& mesh, const std::vector<Vec3>& points,
-                        const std::vector<FaceRef>& boundary, const MeshCheckOptions& options,
-                        MeshCheckResult& result) {
+void find_hanging_nodes(const dist::Communicator& comm, const M& mesh, const PartIds& ids,
+                        const std::vector<Vec3>& points, const std::vector<FaceRef>& boundary,
+                        const MeshCheckOptions& options, MeshCheckResult& result) {
   constexpr auto N = static_cast<std::size_t>(M::nodes_per_face);
-  if (boundary.empty()) return;
-  std::vector<char> on_boundary(points.size(), 0);
+  // The faces' corners, tolerances and boxes; the region of the faces.
+  std::vector<std::array<Vec3, N>> corners(boundary.size());
+  std::vector<double> tolerance(boundary.size());
+  const double inf = std::numeric_limits<double>::infinity();
+  std::array<Vec3, 2> reach{Vec3::Constant(inf), Vec3::Constant(-inf)};  // empty
   double mean_diameter = 0;
-  for (const FaceRef& f : boundary) {
-    std::array<Vec3, N> q;
-    const auto nodes = mesh.face_nodes(f.cell, f.local_face);
-    for (std::size_t k = 0; k < N; ++k) {
-      on_boundary[nodes[k].idx()] = 1;
-      q[k] = points[nodes[k].idx()];
+  for (std::size_t i = 0; i < boundary.size(); ++i) {
+    const auto nodes = mesh.face_nodes(boundary[i].cell, boundary[i].local_face);
+    for (std::size_t k = 0; k < N; ++k) corners[i][k] = points[nodes[k].idx()];
+    const double d = diameter(corners[i]);
+    mean_diameter += d / double(boundary.size());
+    tolerance[i] = options.conformity_tolerance * d;
+    for (const Vec3& x : corners[i]) {
+      reach[0] = reach[0].cwiseMin(x - Vec3::Constant(tolerance[i]));
+      reach[1] = reach[1].cwiseMax(x + Vec3::Constant(tolerance[i]));
     }
-    mean_diameter += diameter(q) / double(boundary.size());
   }
-  std::vector<NodeId> ids;
+  const std::vector<char> on_boundary = boundary_nodes(mesh);
+  std::vector<std::size_t> offered;
   for (std::size_t n = 0; n < points.size(); ++n)
-    if (on_boundary[n]) ids.push_back(NodeId(n));
-  const PointGrid grid(points, ids, mean_diameter);
+    if (on_boundary[n] && ids.owns_node(n)) offered.push_back(n);
+  const NearNodes near = nodes_near(comm, reach, points, offered, ids);
+  std::vector<NodeId> all(near.points.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = NodeId(i);
+  const PointGrid grid(near.points, all, mean_diameter);
 
   std::vector<std::vector<NodeId>> hits(boundary.size());
   parallel_for(static_cast<std::int64_t>(boundary.size()), [&](std::int64_t i) {
-    const FaceRef& f = boundary[static_cast<std::size_t>(i)];
-    const auto nodes = mesh.face_nodes(f.cell, f.local_face);
-    std::array<Vec3, N> q;
-    for (std::size_t k = 0; k < N; ++k) q[k] = points[nodes[k].idx()];
-    const double tol = options.conformity_tolerance * diameter(q);
+    const auto f = static_cast<std::size_t>(i);
+    const auto nodes = mesh.face_nodes(boundary[f].cell, boundary[f].local_face);
+    const auto& q = corners[f];
+    const double tol = tolerance[f];
     Vec3 lo = q[0], hi = q[0];
     for (const Vec3& x : q) {
       lo = lo.cwiseMin(x);
       hi = hi.cwiseMax(x);
     }
-    for (NodeId n : grid.in_box(lo - Vec3::Constant(tol), hi + Vec3::Constant(tol))) {
-      if (std::find(nodes.begin(), nodes.end(), n) != nodes.end()) continue;
-      const Vec3& p = points[n.idx()];
+    for (NodeId m : grid.in_box(lo - Vec3::Constant(tol), hi + Vec3::Constant(tol))) {
+      const std::int64_t id = near.ids[m.idx()];
+      if (std::any_of(nodes.begin(), nodes.end(),
+                      [&](NodeId c) { return ids.node(c.idx()) == id; }))
+        continue;
+      const Vec3& p = near.points[m.idx()];
       // A node at a corner's place is a duplicate (reported as such), not a hanging node.
       bool at_corner = false;
       for (const Vec3& x : q) at_corner = at_corner || (x - p).norm() <= tol;
-      if (!at_corner && face_distance(q, p) <= tol) hits[static_cast<std::size_t>(i)].push_back(n);
+      if (!at_corner && face_distance(q, p) <= tol) hits[f].push_back(m);
     }
   });
 
-  std::vector<char> hanging(points.size(), 0);
-  std::vector<FaceRef> face_of(points.size());
-  for (std::size_t i = 0; i < boundary.size(); ++i) {
-    if (!hits[i].empty()) ++result.nonconformal_faces;
-    for (NodeId n : hits[i])
-      if (!hanging[n.idx()]) {
-        hanging[n.idx()] = 1;
-        face_of[n.idx()] = boundary[i];
-      }
+  std::vector<std::vector<Hit>> to_owner(static_cast<std::size_t>(comm.size()));
+  for (std::size_t f = 0; f < boundary.size(); ++f) {
+    if (!hits[f].empty()) ++result.nonconformal_faces;
+    for (NodeId m : hits[f])
+      to_owner[static_cast<std::size_t>(near.owner[m.idx()])].push_back(
+          {near.ids[m.idx()], ids.cell(boundary[f].cell.idx()), boundary[f].local_face});
   }
-  for (std::size_t n = 0; n < points.size(); ++n) {
-    if (!hanging[n]) continue;
-    if (++result.hanging_nodes <= options.max_listed)
-      result.first_hanging.push_back(
-          {NodeId(n), points[n], face_of[n].cell, face_of[n].local_face, {}});
-  }
+  count_hanging(comm, ids, points, std::move(to_owner), options, result);
 }
 
-template void find_hanging_nodes(const QuadMesh&, const std::vector<Vec3>&,
-                                 const std::vector<FaceRef>&, const MeshCheckOptions&,
-                                 MeshCheckResult&);
-template void find_hanging_nodes(const HexMesh&, const std::vector<Vec3>&,
-                                 const std::vector<FaceRef>&, const MeshCheckOptions&,
-                                 MeshCheckResult&);
+template void find_hanging_nodes(const dist::Communicator&, const QuadMesh&, const PartIds&,
+                                 const std::vector<Vec3>&, const std::vector<FaceRef>&,
+                                 const MeshCheckOptions&, MeshCheckResult&);
+template void find_hanging_nodes(const dist::Communicator&, const HexMesh&, const PartIds&,
+                                 const std::vector<Vec3>&, const std::vector<FaceRef>&,
+                                 const MeshCheckOptions&, MeshCheckResult&);
 
 }  // namespace hexadapt::mesh_check_detail

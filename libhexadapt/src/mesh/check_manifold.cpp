@@ -1,7 +1,8 @@
 // Non-manifold nodes: the star of a node (its cells) must be one piece glued through faces
 // holding the node, and the boundary faces around it must form one fan: none (interior
 // node) or, in 2D, exactly two boundary edges; in 3D, boundary quads whose sides at the node
-// close into a single cycle around it (the link of the node is a disk).
+// close into a single cycle around it (the link of the node is a disk). On a part, the rank
+// owning a node tests it: a ghost layer around its cells holds the node's whole star.
 #include <algorithm>
 #include <map>
 #include <numeric>
@@ -93,24 +94,24 @@ bool boundary_is_one_fan(const M& mesh, NodeId n) {
 }  // namespace
 
 template <class M>
-void find_nonmanifold_nodes(const M& mesh, const std::vector<Vec3>& points,
+void find_nonmanifold_nodes(const M& mesh, const PartIds& ids, const std::vector<Vec3>& points,
                             const MeshCheckOptions& options, MeshCheckResult& result) {
   std::vector<char> bad(static_cast<std::size_t>(mesh.n_nodes()), 0);
   parallel_for(mesh.n_nodes(), [&](std::int64_t i) {
     const NodeId n(i);
-    if (mesh.node_cells(n).size() <= 1) return;
+    if (!ids.owns_node(n.idx()) || mesh.node_cells(n).size() <= 1) return;
     bad[n.idx()] = star_components(mesh, n) > 1 || !boundary_is_one_fan(mesh, n);
   });
   for (NodeId n : id_range<NodeId>(mesh.n_nodes())) {
     if (!bad[n.idx()]) continue;
     if (++result.nonmanifold_nodes <= options.max_listed)
-      result.first_nonmanifold.push_back({n, points[n.idx()], {}, -1, {}});
+      result.first_nonmanifold.push_back({NodeId(ids.node(n.idx())), points[n.idx()], {}, -1, {}});
   }
 }
 
-template void find_nonmanifold_nodes(const QuadMesh&, const std::vector<Vec3>&,
+template void find_nonmanifold_nodes(const QuadMesh&, const PartIds&, const std::vector<Vec3>&,
                                      const MeshCheckOptions&, MeshCheckResult&);
-template void find_nonmanifold_nodes(const HexMesh&, const std::vector<Vec3>&,
+template void find_nonmanifold_nodes(const HexMesh&, const PartIds&, const std::vector<Vec3>&,
                                      const MeshCheckOptions&, MeshCheckResult&);
 
 }  // namespace hexadapt::mesh_check_detail

@@ -1,10 +1,14 @@
 // The steps of check_mesh (mesh_check.h), one file each, templates over the cell complex
-// explicitly instantiated for QuadMesh and HexMesh.
+// explicitly instantiated for QuadMesh and HexMesh. Each runs on a rank's part of the mesh
+// (the whole mesh on one rank): it counts and lists what the rank owns, by global id; the
+// counts and lists of the ranks are combined afterwards (check_mesh).
 #pragma once
 
 #include <vector>
 
+#include "hexadapt/dist/communicator.h"
 #include "hexadapt/mesh/mesh_check.h"
+#include "hexadapt/mesh/part_ids.h"
 
 namespace hexadapt::mesh_check_detail {
 
@@ -18,20 +22,25 @@ struct FaceRef {
 template <class M>
 std::vector<Vec3> all_points(const M& mesh);
 
-/// Faces with a cell on one side only, in increasing (cell, local face).
+/// Faces of the owned cells with a cell on one side only, in increasing (cell, local face).
+/// With a ghost layer around the owned cells, these are exactly the mesh's boundary faces
+/// of those cells.
 template <class M>
-std::vector<FaceRef> boundary_faces(const M& mesh);
+std::vector<FaceRef> boundary_faces(const M& mesh, const PartIds& ids);
 
+/// Every rank calls it.
 template <class M>
-void find_hanging_nodes(const M& mesh, const std::vector<Vec3>& points,
-                        const std::vector<FaceRef>& boundary, const MeshCheckOptions& options,
-                        MeshCheckResult& result);
+void find_hanging_nodes(const dist::Communicator& comm, const M& mesh, const PartIds& ids,
+                        const std::vector<Vec3>& points, const std::vector<FaceRef>& boundary,
+                        const MeshCheckOptions& options, MeshCheckResult& result);
 
-void find_duplicate_nodes(const std::vector<Vec3>& points, const MeshCheckOptions& options,
+/// Every rank calls it.
+void find_duplicate_nodes(const dist::Communicator& comm, const PartIds& ids,
+                          const std::vector<Vec3>& points, const MeshCheckOptions& options,
                           MeshCheckResult& result);
 
 template <class M>
-void find_nonmanifold_nodes(const M& mesh, const std::vector<Vec3>& points,
+void find_nonmanifold_nodes(const M& mesh, const PartIds& ids, const std::vector<Vec3>& points,
                             const MeshCheckOptions& options, MeshCheckResult& result);
 
 /// Distance from p to the face given by its corners in cyclic order (a segment in 2D, a

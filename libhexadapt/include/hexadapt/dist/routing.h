@@ -3,6 +3,7 @@
 // id g), and a rank chosen by hashing a key (the rank that meets every copy of the key).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -95,6 +96,25 @@ std::vector<T> fetch_rows(const Communicator& comm, const Ranges& ranges,
                answered[r].begin() + static_cast<std::ptrdiff_t>(at + w));
   }
   return out;
+}
+
+/// Every rank's list, each in `less` order, merged in that order and cut to its first k
+/// items: the same on every rank. `write(Buffer&, const T&)` and `read(Buffer&)` carry one
+/// item. Every rank calls it.
+template <class T, class Write, class Read, class Less>
+std::vector<T> first_of_ranks(const Communicator& comm, std::vector<T> mine, std::size_t k,
+                              Write write, Read read, Less less) {
+  if (comm.size() > 1) {
+    Buffer b;
+    b.put(static_cast<std::uint64_t>(mine.size()));
+    for (const T& x : mine) write(b, x);
+    mine.clear();
+    for (Buffer& r : all_gather(comm, b))
+      for (auto n = r.get<std::uint64_t>(); n > 0; --n) mine.push_back(read(r));
+    std::stable_sort(mine.begin(), mine.end(), less);
+  }
+  if (mine.size() > k) mine.erase(mine.begin() + static_cast<std::ptrdiff_t>(k), mine.end());
+  return mine;
 }
 
 }  // namespace hexadapt::dist

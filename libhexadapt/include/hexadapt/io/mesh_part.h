@@ -8,6 +8,7 @@
 
 #include "hexadapt/dist/communicator.h"
 #include "hexadapt/io/mesh_data.h"
+#include "hexadapt/mesh/part_ids.h"
 
 namespace hexadapt::io {
 
@@ -35,6 +36,11 @@ struct GhostedPart {
   /// Per node of part: this rank owns it (the lowest rank whose cells use it is this one).
   std::vector<char> owns_node;
 };
+
+/// How the part's cells and nodes sit in the whole mesh (refers to `g`, which must outlive it).
+inline PartIds part_ids(const GhostedPart& g) {
+  return PartIds(g.part.cell_ids, g.owned_cells, g.part.node_ids, g.owns_node);
+}
 
 /// Every rank's `owned` cells with the cells of the other ranks that share a node with one of
 /// them (a node's whole star is then on each rank using it). Every rank calls it.

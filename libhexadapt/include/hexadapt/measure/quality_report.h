@@ -26,6 +26,7 @@
 namespace hexadapt {
 namespace io {
 struct MeshData;
+struct GhostedPart;
 }
 
 struct QualityReportOptions {
@@ -95,6 +96,12 @@ CellQualities cell_qualities(const io::MeshData& data, const Progress& progress 
 /// Measures a mesh given as file data. Throws InputError (no cells, a cell referring to a
 /// missing node, a material array with several components) and OptionError (bins < 1).
 QualityReport quality_report(const io::MeshData& data, const QualityReportOptions& options = {});
+/// The report of a mesh spread over ranks, each holding a part with a ghost layer
+/// (io::with_ghost_layer): equal to the report of the whole mesh (ids global), the same on
+/// every rank. A part whose cells the kernels cannot represent makes `topology_error` name
+/// the rank and the part's local cell ids. Every rank calls it.
+QualityReport quality_report(const dist::Communicator& comm, const io::GhostedPart& part,
+                             const QualityReportOptions& options = {});
 /// The same for a mesh in memory (no arrays: purity is not measured).
 QualityReport quality_report(const AnyMesh& mesh, const QualityReportOptions& options = {});
 

@@ -25,11 +25,13 @@
 
 #include "hexadapt/core/ids.h"
 #include "hexadapt/core/log.h"
+#include "hexadapt/dist/communicator.h"
 #include "hexadapt/measure/quality_report.h"
 
 namespace hexadapt {
 namespace io {
 struct MeshData;
+struct GhostedPart;
 }
 
 struct SizeReportOptions {
@@ -101,6 +103,12 @@ struct SizeReport {
 /// several components or a value that is not a positive number, a cell with no reference
 /// cell).
 SizeReport size_report(const io::MeshData& mesh, const io::MeshData* reference,
+                       const SizeReportOptions& options = {});
+
+/// The same report (no reference grid) of a mesh spread over ranks, each holding a part
+/// (io::with_ghost_layer): equal to the report of the whole mesh (ids global), the same on
+/// every rank; errors name global cell ids. Every rank calls it.
+SizeReport size_report(const dist::Communicator& comm, const io::GhostedPart& part,
                        const SizeReportOptions& options = {});
 
 /// The report as a JSON object (text), fields in docs/reports.md.

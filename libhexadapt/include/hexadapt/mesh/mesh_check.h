@@ -25,6 +25,8 @@
 
 #include "hexadapt/core/geometry.h"
 #include "hexadapt/core/ids.h"
+#include "hexadapt/dist/communicator.h"
+#include "hexadapt/mesh/part_ids.h"
 
 namespace hexadapt {
 
@@ -70,9 +72,24 @@ struct MeshCheckResult {
   }
 };
 
+/// Every rank's listed issues (each list in increasing id) merged by id and cut to the
+/// first k: the same on every rank. Every rank calls them.
+std::vector<NodeIssue> first_of_ranks(const dist::Communicator& comm,
+                                      std::vector<NodeIssue> mine, int k);
+std::vector<CellIssue> first_of_ranks(const dist::Communicator& comm,
+                                      std::vector<CellIssue> mine, int k);
+
 /// Checks a QuadMesh or HexMesh (instantiated for both). Deterministic: offenders are listed
 /// by increasing id whatever the thread count.
 template <class M>
 MeshCheckResult check_mesh(const M& mesh, const MeshCheckOptions& options = {});
+
+/// The same check of a mesh spread over ranks, each holding a part (`part`, numbered by
+/// `ids`) with a ghost layer of every cell sharing a node with one of its owned cells
+/// (io::with_ghost_layer): the result of the whole mesh, ids global, the same on every rank
+/// and equal to check_mesh of the whole mesh. Every rank calls it.
+template <class M>
+MeshCheckResult check_mesh(const dist::Communicator& comm, const M& part, const PartIds& ids,
+                           const MeshCheckOptions& options = {});
 
 }  // namespace hexadapt

@@ -1,0 +1,92 @@
+#include "near_nodes.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "hexadapt/dist/routing.h"
+#include "point_grid.h"
+
+namespace hexadapt {
+
+namespace {
+
+bool inside(const std::array<Vec3, 2>& box, const Vec3& p) {
+  return (p.array() >= box[0].array()).all() && (p.array() <= box[1].array()).all();
+}
+
+struct Offered {
+  std::int64_t id;
+  double x, y, z;
+};
+
+}  // namespace
+
+NearNodes nodes_near(const dist::Communicator& comm, const std::array<Vec3, 2>& box,
+                     const std::vector<Vec3>& points, const std::vector<std::size_t>& offered,
+                     const PartIds& ids) {
+  NearNodes near;
+  for (const std::size_t n : offered) {
+    near.points.push_back(points[n]);
+    near.ids.push_back(ids.node(n));
+    near.owner.push_back(comm.rank());
+  }
+  if (comm.size() == 1) return near;
+  const std::vector<double> boxes = dist::all_gather_values(
+      comm, std::vector<double>{box[0].x(), box[0].y(), box[0].z(), box[1].x(), box[1].y(),
+                                box[1].z()});
+  const auto n_ranks = static_cast<std::size_t>(comm.size());
+  std::vector<std::vector<Offered>> to(n_ranks);
+  for (std::size_t r = 0; r < n_ranks; ++r) {
+    if (static_cast<int>(r) == comm.rank()) continue;
+    const double* b = &boxes[6 * r];
+    const std::array<Vec3, 2> other{Vec3(b[0], b[1], b[2]), Vec3(b[3], b[4], b[5])};
+    for (const std::size_t n : offered)
+      if (inside(other, points[n]))
+        to[r].push_back({ids.node(n), points[n].x(), points[n].y(), points[n].z()});
+  }
+  const std::vector<std::vector<Offered>> from = dist::all_to_all(comm, std::move(to));
+  for (std::size_t r = 0; r < n_ranks; ++r) {
+    if (static_cast<int>(r) == comm.rank()) continue;
+    for (const Offered& o : from[r]) {
+      near.points.emplace_back(o.x, o.y, o.z);
+      near.ids.push_back(o.id);
+      near.owner.push_back(static_cast<int>(r));
+    }
+  }
+  return near;
+}
+
+std::array<Vec3, 2> global_bounding_box(const dist::Communicator& comm,
+                                        const std::vector<Vec3>& points) {
+  const std::array<Vec3, 2> mine = bounding_box(points);
+  if (comm.size() == 1) return mine;
+  const bool empty = mine[0] == mine[1] && mine[0] == Vec3::Zero() &&
+                     std::none_of(points.begin(), points.end(),
+                                  [](const Vec3& p) { return p.allFinite(); });
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::vector<double> all = dist::all_gather_values(
+      comm, empty ? std::vector<double>{inf, inf, inf, -inf, -inf, -inf}
+                  : std::vector<double>{mine[0].x(), mine[0].y(), mine[0].z(), mine[1].x(),
+                                        mine[1].y(), mine[1].z()});
+  std::vector<Vec3> corners;
+  for (std::size_t i = 0; i + 6 <= all.size(); i += 6)
+    if (all[i] <= all[i + 3]) {
+      corners.emplace_back(all[i], all[i + 1], all[i + 2]);
+      corners.emplace_back(all[i + 3], all[i + 4], all[i + 5]);
+    }
+  return bounding_box(corners);
+}
+
+std::int64_t local_node(const PartIds& ids, std::size_t n_nodes, std::int64_t g) {
+  std::size_t lo = 0, hi = n_nodes;
+  while (lo < hi) {
+    const std::size_t mid = lo + (hi - lo) / 2;
+    if (ids.node(mid) < g)
+      lo = mid + 1;
+    else
+      hi = mid;
+  }
+  return lo < n_nodes && ids.node(lo) == g ? static_cast<std::int64_t>(lo) : -1;
+}
+
+}  // namespace hexadapt
