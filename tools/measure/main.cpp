@@ -15,12 +15,16 @@
 #include "hexadapt/io/assigned_grid_file.h"
 #include "hexadapt/io/fractions_reader.h"
 #include "hexadapt/io/mesh_file.h"
+#include "hexadapt/io/mesh_part.h"
+#include "hexadapt/io/vtk_collection.h"
 #include "hexadapt/measure/discrepancy.h"
 #include "hexadapt/measure/imprint.h"
 #include "hexadapt/measure/quality_report.h"
 #include "hexadapt/measure/size_report.h"
 #include "hexadapt/measure/target_distance.h"
 #include "input_record.h"
+#include "memory.h"
+#include "ranks.h"
 
 namespace {
 
@@ -217,6 +221,54 @@ void print_size(const SizeReport& s) {
       f.min_relative_edge, f.below_min_edge, s.passed() ? "" : "  FAILED");
 }
 
+// What measure found, in the report's sections.
+struct Measured {
+  QualityReport report;
+  TargetDistances distances;
+  SizeReport size;
+  DiscrepancyReport discrepancy;  ///< with --reference
+  std::optional<cli::InputOptions> recorded;  ///< how the reference was read
+};
+
+// Writes the JSON report (with a `ranks` block when `ranks` is not null), prints the summary
+// and returns the exit code.
+int finish(const CLI::App& app, const cli::CommonOptions& common, const Args& a,
+           const Measured& m, const PhaseTimes& times, const cli::Json& ranks) {
+  const bool passed = m.report.passed() && m.size.passed() &&
+                      (a.reference.empty() || m.discrepancy.passed());
+  const int code = passed ? cli::ok : cli::target_missed;
+  cli::Json json = cli::report_header(app);
+  json["input"] = a.input;
+  const cli::Json sections = cli::Json::parse(quality_report_json(m.report));
+  for (const auto& [key, value] : sections.items()) {
+    if (key == "passed") {
+      json["distances"] = cli::Json::parse(target_distances_json(m.distances));
+      if (!a.reference.empty()) {
+        json["reference"] = a.reference;
+        json["reference_read_with"] = m.recorded ? "the record in the input" : "the flags";
+        json["discrepancy"] = cli::Json::parse(discrepancy_json(m.discrepancy));
+      }
+      json["size"] = cli::Json::parse(size_report_json(m.size));
+      json[key] = passed;
+    } else {
+      json[key] = value;
+    }
+  }
+  json["exit_code"] = code;
+  json["times"] = cli::phase_times_json(times);
+  if (!ranks.is_null()) json["ranks"] = ranks;
+  cli::write_report(common, json);
+  if (!common.quiet) {
+    print_summary(a.input, m.report);
+    if (m.distances.has_targets)
+      std::printf("  distances to targets: dist %.6g  max %.6g  (%d nodes)\n", m.distances.sum,
+                  m.distances.max, m.distances.nodes);
+    if (!a.reference.empty()) print_discrepancy(m.discrepancy);
+    print_size(m.size);
+  }
+  return code;
+}
+
 int measure(const CLI::App& app, const cli::CommonOptions& common, const Args& a) {
   if (app.count("--max-volume-error") > 0 && a.reference.empty())
     throw OptionError("--max-volume-error needs --reference (the input volumes)");
@@ -279,38 +331,79 @@ int measure(const CLI::App& app, const cli::CommonOptions& common, const Args& a
       write_quality_field(app, data, a.quality_field, common.write_options());
       return 0;
     });
-  const bool passed =
-      report.passed() && size.passed() && (a.reference.empty() || disc.report.passed());
-  const int code = passed ? cli::ok : cli::target_missed;
-  cli::Json json = cli::report_header(app);
-  json["input"] = a.input;
-  const cli::Json sections = cli::Json::parse(quality_report_json(report));
-  for (const auto& [key, value] : sections.items()) {
-    if (key == "passed") {
-      json["distances"] = cli::Json::parse(target_distances_json(distances));
-      if (!a.reference.empty()) {
-        json["reference"] = a.reference;
-        json["reference_read_with"] = recorded ? "the record in the input" : "the flags";
-        json["discrepancy"] = cli::Json::parse(discrepancy_json(disc.report));
-      }
-      json["size"] = cli::Json::parse(size_report_json(size));
-      json[key] = passed;
-    } else {
-      json[key] = value;
+  return finish(app, common, a, {report, distances, size, disc.report, recorded}, times, {});
+}
+
+// On the ranks of an MPI job: rank r reads its share of the .pvtu's pieces; the pieces are
+// merged on the ranks (the mesh one process reads), each rank's cells get a ghost layer, and
+// the reports are those of the whole mesh (ids global; measure/quality_report.h).
+int measure_on_ranks(const CLI::App& app, const cli::CommonOptions& common, const Args& a,
+                     const dist::Communicator& comm) {
+  cli::on_every_rank(comm, app, [&] {
+    for (const auto& [flag, value] :
+         {std::pair{"--reference", a.reference}, std::pair{"--quality-field", a.quality_field},
+          std::pair{"--discrepancy-field", a.discrepancy_field}})
+      if (!value.empty())
+        throw OptionError(std::string(flag) + " runs on one process, not on the " +
+                          std::to_string(comm.size()) + " ranks of this MPI job");
+    if (app.count("--max-volume-error") > 0)
+      throw OptionError("--max-volume-error needs --reference (the input volumes)");
+    cli::check_files({{"input", a.input}}, {{"--json", common.json}});
+  });
+  PhaseTimes times;
+  const Timer timer;
+  const io::ReadOptions reading = a.in.read_options();
+  io::RankPieces pieces;
+  cli::on_every_rank(comm, app, [&] {
+    pieces = io::read_rank_pieces(a.input, reading, comm.rank(), comm.size());
+  });
+  io::GhostedPart part;
+  cli::on_every_rank(comm, app, [&] {
+    io::MeshPart merged = io::merge_rank_pieces(comm, std::move(pieces), reading);
+    cli::check_memory("measuring " + std::to_string(merged.data.n_cells()) + " cells on rank " +
+                          std::to_string(comm.rank()),
+                      static_cast<double>(merged.data.n_cells()) * cli::measure_bytes_per_cell,
+                      common.memory_limit());
+    part = io::with_ghost_layer(comm, merged);
+  });
+  times.emplace_back("read", timer.seconds());
+  Measured m;
+  Timer phase;
+  cli::on_every_rank(comm, app, [&] {
+    try {
+      m.report = quality_report(comm, part, a.report);
+      m.distances = target_distances(comm, part, a.target_array);
+    } catch (const InputError& e) {
+      rethrow_with_file(e, a.input);
     }
+  });
+  times.emplace_back("quality", phase.seconds());
+  phase.restart();
+  cli::on_every_rank(comm, app, [&] {
+    SizeReportOptions options = a.size;
+    options.max_listed = a.report.max_listed;
+    try {
+      m.size = size_report(comm, part, options);
+    } catch (const InputError& e) {
+      rethrow_with_file(e, a.input);
+    }
+  });
+  times.emplace_back("size", phase.seconds());
+  cli::Json ranks = {
+      {"count", comm.size()},
+      {"cells", dist::all_gather_values(comm, std::vector<std::int64_t>{part.owned_cells})},
+      {"ghost_cells",
+       dist::all_gather_values(
+           comm, std::vector<std::int64_t>{part.part.data.n_cells() - part.owned_cells})},
+      {"bytes_sent", dist::all_gather_values(comm, std::vector<std::uint64_t>{comm.bytes_sent()})},
+      {"peak_memory",
+       dist::all_gather_values(comm, std::vector<std::uint64_t>{cli::peak_resident_bytes()})}};
+  cli::CommonOptions out = common;
+  if (comm.rank() != 0) {  // rank 0 writes the report and prints
+    out.json.clear();
+    out.quiet = true;
   }
-  json["exit_code"] = code;
-  json["times"] = cli::phase_times_json(times);
-  cli::write_report(common, json);
-  if (!common.quiet) {
-    print_summary(a.input, report);
-    if (distances.has_targets)
-      std::printf("  distances to targets: dist %.6g  max %.6g  (%d nodes)\n", distances.sum,
-                  distances.max, distances.nodes);
-    if (!a.reference.empty()) print_discrepancy(disc.report);
-    print_size(size);
-  }
-  return code;
+  return finish(app, out, a, m, times, ranks);
 }
 
 }  // namespace
@@ -330,5 +423,8 @@ int main(int argc, char** argv) {
   add_options(app, args);
   cli::add_common_options(app, common, /*with_output=*/false);
   cli::add_write_options(app, common);
-  return cli::run(app, argc, argv, common, [&] { return measure(app, common, args); });
+  return cli::run_on_ranks(app, argc, argv, common, [&](const dist::Communicator& comm) {
+    return comm.size() > 1 ? measure_on_ranks(app, common, args, comm)
+                           : measure(app, common, args);
+  });
 }

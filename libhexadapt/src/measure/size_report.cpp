@@ -109,7 +109,8 @@ void relative_figures(const Part& p, const CellSizes& s, const std::vector<doubl
   f.first_below = first_of_ranks(p.comm, std::move(f.first_below), o.max_listed);
 }
 
-SizeFigures figures(const Part& p, const CellSizes& s, const std::vector<double>& local,
+// The figures of the owned cells; with `local` sizes (on every rank: a rank may hold none).
+SizeFigures figures(const Part& p, const CellSizes& s, const std::vector<double>* local,
                     const SizeReportOptions& o) {
   SizeFigures f;
   std::vector<double> ratio(p.owned);
@@ -119,7 +120,7 @@ SizeFigures figures(const Part& p, const CellSizes& s, const std::vector<double>
   time_step_figures(p, std::vector<double>(s.time_step.begin(),
                                            s.time_step.begin() + static_cast<std::ptrdiff_t>(p.owned)),
                     f);
-  if (!local.empty()) relative_figures(p, s, local, o, f);
+  if (local) relative_figures(p, s, *local, o, f);
   return f;
 }
 
@@ -196,17 +197,17 @@ SizeReport report_of(const Part& p, const io::MeshData* reference, const SizeRep
     r.local_size = LocalSizeSource::reference;
   }
   if (o.progress) o.progress("size", 1.0);
-  r.mesh = figures(p, sizes, local, o);
+  r.mesh = figures(p, sizes, r.local_size == LocalSizeSource::none ? nullptr : &local, o);
   if (o.min_edge == 0)
     r.not_checked = "min_edge is 0 (off)";
-  else if (local.empty())
+  else if (r.local_size == LocalSizeSource::none)
     r.not_checked = "no " + o.local_size_array + " array and no reference grid";
   if (!reference) return r;
   r.has_reference = true;
   std::vector<double> own(ref_sizes.edges.size());
   for (std::size_t c = 0; c < own.size(); ++c) own[c] = ref_sizes.edges[c].mean;
   const PartIds whole;
-  r.reference = figures({p.comm, *reference, whole, own.size()}, ref_sizes, own, o);
+  r.reference = figures({p.comm, *reference, whole, own.size()}, ref_sizes, &own, o);
   r.time_step_ratio = r.reference.time_step.min > 0
                           ? r.mesh.time_step.min / r.reference.time_step.min
                           : std::numeric_limits<double>::quiet_NaN();
