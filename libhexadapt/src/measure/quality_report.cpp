@@ -5,6 +5,7 @@
 
 #include "cell_values.h"
 #include "hexadapt/core/error.h"
+#include "hexadapt/dist/routing.h"
 #include "hexadapt/io/mesh_data.h"
 #include "hexadapt/io/mesh_part.h"
 #include "purity.h"
@@ -69,7 +70,8 @@ QualityReport report_of(const dist::Communicator& comm, const io::MeshData& data
   q.scaled_jacobian.resize(static_cast<std::size_t>(owned));
   q.shape.resize(static_cast<std::size_t>(owned));
   QualityReport r;
-  r.dim = data.dim;
+  for (const int d : dist::all_gather_values(comm, std::vector<int>{data.dim}))
+    r.dim = std::max(r.dim, d);  // a rank holding no cells may not know it
   r.n_cells = static_cast<index_t>(total(comm, owned));
   std::int64_t owned_nodes = 0;
   for (std::size_t n = 0; n < static_cast<std::size_t>(data.n_points()); ++n)

@@ -68,9 +68,14 @@ double kth_value(const dist::Communicator& comm, const std::vector<double>& valu
                  std::int64_t k) {
   std::vector<std::uint64_t> keys(values.size());
   std::transform(values.begin(), values.end(), keys.begin(), order_key);
-  std::sort(keys.begin(), keys.end());
   if (total(comm, static_cast<std::int64_t>(keys.size())) <= k)
     return std::numeric_limits<double>::quiet_NaN();
+  if (comm.size() == 1) {  // all values here: select directly
+    const auto at = keys.begin() + static_cast<std::ptrdiff_t>(k);
+    std::nth_element(keys.begin(), at, keys.end());
+    return from_key(*at);
+  }
+  std::sort(keys.begin(), keys.end());
   // The smallest key with more than k keys at or below it, bit by bit from the top.
   std::uint64_t key = 0;
   for (int bit = 63; bit >= 0; --bit) {

@@ -108,52 +108,52 @@ void count_hanging(const dist::Communicator& comm, const PartIds& ids,
 
 template <class M>
 void find_hanging_nodes(const dist::Communicator& comm, const M& mesh, const PartIds& ids,
-                        const std::vector<Vec3>& points, const std::vector<FaceRef>& boundary,
+                        std::vector<Vec3>& points, const std::vector<FaceRef>& boundary,
                         const MeshCheckOptions& options, MeshCheckResult& result) {
   constexpr auto N = static_cast<std::size_t>(M::nodes_per_face);
-  // The faces' corners, tolerances and boxes; the region of the faces.
-  std::vector<std::array<Vec3, N>> corners(boundary.size());
-  std::vector<double> tolerance(boundary.size());
+  const auto corners = [&](const FaceRef& f) {
+    const auto nodes = mesh.face_nodes(f.cell, f.local_face);
+    std::array<Vec3, N> q;
+    for (std::size_t k = 0; k < N; ++k) q[k] = points[nodes[k].idx()];
+    return q;
+  };
+  // The region of the faces, their tolerances included.
   const double inf = std::numeric_limits<double>::infinity();
   std::array<Vec3, 2> reach{Vec3::Constant(inf), Vec3::Constant(-inf)};  // empty
   double mean_diameter = 0;
-  for (std::size_t i = 0; i < boundary.size(); ++i) {
-    const auto nodes = mesh.face_nodes(boundary[i].cell, boundary[i].local_face);
-    for (std::size_t k = 0; k < N; ++k) corners[i][k] = points[nodes[k].idx()];
-    const double d = diameter(corners[i]);
+  for (const FaceRef& f : boundary) {
+    const std::array<Vec3, N> q = corners(f);
+    const double d = diameter(q);
     mean_diameter += d / double(boundary.size());
-    tolerance[i] = options.conformity_tolerance * d;
-    for (const Vec3& x : corners[i]) {
-      reach[0] = reach[0].cwiseMin(x - Vec3::Constant(tolerance[i]));
-      reach[1] = reach[1].cwiseMax(x + Vec3::Constant(tolerance[i]));
+    for (const Vec3& x : q) {
+      reach[0] = reach[0].cwiseMin(x - Vec3::Constant(options.conformity_tolerance * d));
+      reach[1] = reach[1].cwiseMax(x + Vec3::Constant(options.conformity_tolerance * d));
     }
   }
   const std::vector<char> on_boundary = boundary_nodes(mesh);
-  std::vector<std::size_t> offered;
+  std::vector<NodeId> offered;
   for (std::size_t n = 0; n < points.size(); ++n)
-    if (on_boundary[n] && ids.owns_node(n)) offered.push_back(n);
-  const NearNodes near = nodes_near(comm, reach, points, offered, ids);
-  std::vector<NodeId> all(near.points.size());
-  for (std::size_t i = 0; i < all.size(); ++i) all[i] = NodeId(i);
-  const PointGrid grid(near.points, all, mean_diameter);
+    if (on_boundary[n] && ids.owns_node(n)) offered.push_back(NodeId(n));
+  const NearNodes near = nodes_near(comm, reach, points, std::move(offered), ids);
+  const PointGrid grid(points, near.candidates, mean_diameter);
 
   std::vector<std::vector<NodeId>> hits(boundary.size());
   parallel_for(static_cast<std::int64_t>(boundary.size()), [&](std::int64_t i) {
     const auto f = static_cast<std::size_t>(i);
     const auto nodes = mesh.face_nodes(boundary[f].cell, boundary[f].local_face);
-    const auto& q = corners[f];
-    const double tol = tolerance[f];
+    const std::array<Vec3, N> q = corners(boundary[f]);
+    const double tol = options.conformity_tolerance * diameter(q);
     Vec3 lo = q[0], hi = q[0];
     for (const Vec3& x : q) {
       lo = lo.cwiseMin(x);
       hi = hi.cwiseMax(x);
     }
     for (NodeId m : grid.in_box(lo - Vec3::Constant(tol), hi + Vec3::Constant(tol))) {
-      const std::int64_t id = near.ids[m.idx()];
+      const std::int64_t id = near.id(ids, m.idx());
       if (std::any_of(nodes.begin(), nodes.end(),
                       [&](NodeId c) { return ids.node(c.idx()) == id; }))
         continue;
-      const Vec3& p = near.points[m.idx()];
+      const Vec3& p = points[m.idx()];
       // A node at a corner's place is a duplicate (reported as such), not a hanging node.
       bool at_corner = false;
       for (const Vec3& x : q) at_corner = at_corner || (x - p).norm() <= tol;
@@ -165,17 +165,18 @@ void find_hanging_nodes(const dist::Communicator& comm, const M& mesh, const Par
   for (std::size_t f = 0; f < boundary.size(); ++f) {
     if (!hits[f].empty()) ++result.nonconformal_faces;
     for (NodeId m : hits[f])
-      to_owner[static_cast<std::size_t>(near.owner[m.idx()])].push_back(
-          {near.ids[m.idx()], ids.cell(boundary[f].cell.idx()), boundary[f].local_face});
+      to_owner[static_cast<std::size_t>(near.owner(comm.rank(), m.idx()))].push_back(
+          {near.id(ids, m.idx()), ids.cell(boundary[f].cell.idx()), boundary[f].local_face});
   }
+  points.resize(near.n_local);
   count_hanging(comm, ids, points, std::move(to_owner), options, result);
 }
 
 template void find_hanging_nodes(const dist::Communicator&, const QuadMesh&, const PartIds&,
-                                 const std::vector<Vec3>&, const std::vector<FaceRef>&,
+                                 std::vector<Vec3>&, const std::vector<FaceRef>&,
                                  const MeshCheckOptions&, MeshCheckResult&);
 template void find_hanging_nodes(const dist::Communicator&, const HexMesh&, const PartIds&,
-                                 const std::vector<Vec3>&, const std::vector<FaceRef>&,
+                                 std::vector<Vec3>&, const std::vector<FaceRef>&,
                                  const MeshCheckOptions&, MeshCheckResult&);
 
 }  // namespace hexadapt::mesh_check_detail

@@ -3,6 +3,7 @@
 // most 2^3 buckets). On a part, a rank tests the nodes it owns against its own nodes and
 // the other ranks' nodes within the tolerance of them (near_nodes.h).
 #include <cstdint>
+#include <limits>
 
 #include "hexadapt/core/parallel.h"
 #include "mesh_check_parts.h"
@@ -12,45 +13,44 @@
 namespace hexadapt::mesh_check_detail {
 
 void find_duplicate_nodes(const dist::Communicator& comm, const PartIds& ids,
-                          const std::vector<Vec3>& points, const MeshCheckOptions& options,
+                          std::vector<Vec3>& points, const MeshCheckOptions& options,
                           MeshCheckResult& result) {
   const auto box = global_bounding_box(comm, points);
   const double tol = options.duplicate_tolerance * (box[1] - box[0]).norm();
   result.duplicate_distance = tol;
-  std::vector<std::size_t> owned;
-  std::vector<Vec3> owned_points;
+  std::vector<NodeId> owned;
+  owned.reserve(points.size());
+  const double inf = std::numeric_limits<double>::infinity();
+  std::array<Vec3, 2> reach{Vec3::Constant(inf), Vec3::Constant(-inf)};  // empty
   for (std::size_t n = 0; n < points.size(); ++n)
     if (ids.owns_node(n)) {
-      owned.push_back(n);
-      owned_points.push_back(points[n]);
+      owned.push_back(NodeId(n));
+      if (!points[n].allFinite()) continue;
+      reach[0] = reach[0].cwiseMin(points[n] - Vec3::Constant(tol));
+      reach[1] = reach[1].cwiseMax(points[n] + Vec3::Constant(tol));
     }
-  auto reach = bounding_box(owned_points);
-  reach[0] -= Vec3::Constant(tol);
-  reach[1] += Vec3::Constant(tol);
-  if (owned.empty()) reach = {Vec3::Constant(1), Vec3::Zero()};  // empty: receives nothing
-  const NearNodes near = nodes_near(comm, reach, points, owned, ids);
-  std::vector<NodeId> all(near.points.size());
-  for (std::size_t i = 0; i < all.size(); ++i) all[i] = NodeId(i);
-  const PointGrid grid(near.points, all, tol > 0 ? tol : 1.0);
-  // Per owned node, the lowest global id at the same place (-1: none).
-  std::vector<std::int64_t> first(owned.size(), -1);
-  parallel_for(static_cast<std::int64_t>(owned.size()), [&](std::int64_t i) {
+  const NearNodes near = nodes_near(comm, reach, points, std::move(owned), ids);
+  const PointGrid grid(points, near.candidates, tol > 0 ? tol : 1.0);
+  // Per owned node (the offered candidates), the lowest global id at the same place (-1: none).
+  std::vector<std::int64_t> first(near.n_offered, -1);
+  parallel_for(static_cast<std::int64_t>(near.n_offered), [&](std::int64_t i) {
     const auto k = static_cast<std::size_t>(i);
-    const Vec3& p = near.points[k];
-    const std::int64_t id = near.ids[k];
+    const Vec3& p = points[near.candidates[k].idx()];
+    const std::int64_t id = ids.node(near.candidates[k].idx());
     const Vec3 d = Vec3::Constant(tol);
     std::int64_t& lowest = first[k];
     grid.for_each_in_box(p - d, p + d, [&](NodeId m) {
-      const std::int64_t other = near.ids[m.idx()];
-      if (other < id && (lowest < 0 || other < lowest) && (near.points[m.idx()] - p).norm() <= tol)
+      const std::int64_t other = near.id(ids, m.idx());
+      if (other < id && (lowest < 0 || other < lowest) && (points[m.idx()] - p).norm() <= tol)
         lowest = other;
     });
   });
-  for (std::size_t k = 0; k < owned.size(); ++k) {
+  points.resize(near.n_local);
+  for (std::size_t k = 0; k < near.n_offered; ++k) {
     if (first[k] < 0) continue;
+    const std::size_t n = near.candidates[k].idx();
     if (++result.duplicate_nodes <= options.max_listed)
-      result.first_duplicates.push_back(
-          {NodeId(near.ids[k]), points[owned[k]], {}, -1, NodeId(first[k])});
+      result.first_duplicates.push_back({NodeId(ids.node(n)), points[n], {}, -1, NodeId(first[k])});
   }
 }
 

@@ -92,7 +92,7 @@ MeshCheckResult check_as_given(const dist::Communicator& comm, const M& mesh, co
                                const MeshCheckOptions& options) {
   using namespace mesh_check_detail;
   MeshCheckResult result;
-  const std::vector<Vec3> points = all_points(mesh);
+  std::vector<Vec3> points = all_points(mesh);
   const std::vector<FaceRef> boundary = boundary_faces(mesh, ids);
   result.boundary_faces = static_cast<index_t>(boundary.size());
   find_unreferenced_nodes(mesh, ids, points, options, result);

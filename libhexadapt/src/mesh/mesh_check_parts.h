@@ -28,15 +28,16 @@ std::vector<Vec3> all_points(const M& mesh);
 template <class M>
 std::vector<FaceRef> boundary_faces(const M& mesh, const PartIds& ids);
 
-/// Every rank calls it.
+/// Every rank calls it. Other ranks' nodes are appended to `points` while it runs; it
+/// leaves `points` as it found them.
 template <class M>
 void find_hanging_nodes(const dist::Communicator& comm, const M& mesh, const PartIds& ids,
-                        const std::vector<Vec3>& points, const std::vector<FaceRef>& boundary,
+                        std::vector<Vec3>& points, const std::vector<FaceRef>& boundary,
                         const MeshCheckOptions& options, MeshCheckResult& result);
 
-/// Every rank calls it.
+/// Every rank calls it; `points` as find_hanging_nodes.
 void find_duplicate_nodes(const dist::Communicator& comm, const PartIds& ids,
-                          const std::vector<Vec3>& points, const MeshCheckOptions& options,
+                          std::vector<Vec3>& points, const MeshCheckOptions& options,
                           MeshCheckResult& result);
 
 template <class M>

@@ -22,14 +22,11 @@ struct Offered {
 }  // namespace
 
 NearNodes nodes_near(const dist::Communicator& comm, const std::array<Vec3, 2>& box,
-                     const std::vector<Vec3>& points, const std::vector<std::size_t>& offered,
-                     const PartIds& ids) {
+                     std::vector<Vec3>& points, std::vector<NodeId> offered, const PartIds& ids) {
   NearNodes near;
-  for (const std::size_t n : offered) {
-    near.points.push_back(points[n]);
-    near.ids.push_back(ids.node(n));
-    near.owner.push_back(comm.rank());
-  }
+  near.n_local = points.size();
+  near.n_offered = offered.size();
+  near.candidates = std::move(offered);
   if (comm.size() == 1) return near;
   const std::vector<double> boxes = dist::all_gather_values(
       comm, std::vector<double>{box[0].x(), box[0].y(), box[0].z(), box[1].x(), box[1].y(),
@@ -40,17 +37,20 @@ NearNodes nodes_near(const dist::Communicator& comm, const std::array<Vec3, 2>& 
     if (static_cast<int>(r) == comm.rank()) continue;
     const double* b = &boxes[6 * r];
     const std::array<Vec3, 2> other{Vec3(b[0], b[1], b[2]), Vec3(b[3], b[4], b[5])};
-    for (const std::size_t n : offered)
-      if (inside(other, points[n]))
-        to[r].push_back({ids.node(n), points[n].x(), points[n].y(), points[n].z()});
+    for (std::size_t k = 0; k < near.n_offered; ++k) {
+      const Vec3& p = points[near.candidates[k].idx()];
+      if (inside(other, p))
+        to[r].push_back({ids.node(near.candidates[k].idx()), p.x(), p.y(), p.z()});
+    }
   }
   const std::vector<std::vector<Offered>> from = dist::all_to_all(comm, std::move(to));
   for (std::size_t r = 0; r < n_ranks; ++r) {
     if (static_cast<int>(r) == comm.rank()) continue;
     for (const Offered& o : from[r]) {
-      near.points.emplace_back(o.x, o.y, o.z);
-      near.ids.push_back(o.id);
-      near.owner.push_back(static_cast<int>(r));
+      near.candidates.push_back(NodeId(points.size()));
+      points.emplace_back(o.x, o.y, o.z);
+      near.received_ids.push_back(o.id);
+      near.received_owner.push_back(static_cast<int>(r));
     }
   }
   return near;
