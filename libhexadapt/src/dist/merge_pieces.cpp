@@ -1,5 +1,6 @@
-// dist::merge_pieces: the weld (weld.cpp), the repeated cells (repeated_cells.cpp), then the
-// points the kept cells use, numbered in the global order by the ranks holding them.
+// dist::merge_pieces: the points near other pieces (near_pieces.cpp), the weld (weld.cpp),
+// the repeated cells (repeated_cells.cpp), then the points the kept cells use, numbered in
+// the global order by the ranks holding them.
 #include "hexadapt/dist/merge_pieces.h"
 
 #include <algorithm>
@@ -58,11 +59,12 @@ std::vector<std::int64_t> merged_ids(const Communicator& comm, const Ranges& poi
 
 MergedPart merge_pieces(const Communicator& comm, const PiecesPart& part) {
   const auto npc = static_cast<std::size_t>(part.nodes_per_cell);
-  const std::vector<std::int64_t> welded = weld(comm, part);
+  const std::vector<char> near = near_other_pieces(comm, part);
+  const std::vector<std::int64_t> welded = weld(comm, part, near);
   const Ranges points = Ranges::of(comm, static_cast<std::int64_t>(part.points.size()));
   const std::int64_t first = points.first[static_cast<std::size_t>(comm.rank())];
   MergedPart m;
-  const std::vector<char> repeated = repeated_cells(comm, part, welded);
+  const std::vector<char> repeated = repeated_cells(comm, part, welded, near);
   m.kept.resize(repeated.size());
   for (std::size_t c = 0; c < repeated.size(); ++c) m.kept[c] = !repeated[c];
   std::vector<index_t> node_of;

@@ -1,5 +1,5 @@
-// The repeated cells of dist::merge_pieces: every cell goes, keyed by its sorted welded
-// nodes, to the rank the key hashes to; that rank sees every cell of the key, sorts them in
+// The repeated cells of dist::merge_pieces: every cell near other pieces goes, keyed by its
+// sorted welded nodes, to the rank the key hashes to; that rank sees every cell of the key, sorts them in
 // global order and flags each one whose piece differs from the key's first cell's.
 #include <algorithm>
 #include <array>
@@ -35,7 +35,8 @@ std::vector<std::vector<std::int64_t>> flag_repeats(std::vector<KeyedCell> cells
 }  // namespace
 
 std::vector<char> repeated_cells(const Communicator& comm, const PiecesPart& part,
-                                 const std::vector<std::int64_t>& welded) {
+                                 const std::vector<std::int64_t>& welded,
+                                 const std::vector<char>& near) {
   const auto npc = static_cast<std::size_t>(part.nodes_per_cell);
   if (npc > 8) throw InternalError("more than 8 nodes per cell");
   const std::size_t n_cells = part.cell_piece.size();
@@ -43,8 +44,11 @@ std::vector<char> repeated_cells(const Communicator& comm, const PiecesPart& par
   const std::int64_t first = ranges.first[static_cast<std::size_t>(comm.rank())];
   const int n = comm.size();
   std::vector<std::vector<KeyedCell>> out(static_cast<std::size_t>(n));
-  out[static_cast<std::size_t>(comm.rank())].reserve(n_cells);
   for (std::size_t c = 0; c < n_cells; ++c) {
+    const auto nodes = part.cells.begin() + static_cast<std::ptrdiff_t>(c * npc);
+    if (!std::all_of(nodes, nodes + static_cast<std::ptrdiff_t>(npc),
+                     [&](NodeId q) { return near[q.idx()] != 0; }))
+      continue;  // a point far from other pieces: no other piece has this cell
     KeyedCell k{{}, first + static_cast<std::int64_t>(c), part.cell_piece[c]};
     for (std::size_t v = 0; v < npc; ++v) k.key[v] = welded[part.cells[c * npc + v].idx()];
     std::sort(k.key.begin(), k.key.begin() + static_cast<std::ptrdiff_t>(npc));

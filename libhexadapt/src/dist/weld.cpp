@@ -3,7 +3,8 @@
 // tolerance box touches. Each bucket has a deciding rank (a hash of the key of its block of
 // buckets); every point goes to the ranks deciding the buckets its box touches, its own
 // bucket's among them, where it is a candidate too, so the rank deciding a bucket sees every
-// pair a search there can find. Each
+// pair a search there can find (a point far from every other piece, near_other_pieces, can
+// match nothing and is not sent). Each
 // searcher's earliest match comes back to the point's rank; chains (q to p to an earlier p')
 // are then followed by asking the rank holding the match, until no rank changes a point.
 #include <algorithm>
@@ -153,7 +154,8 @@ void follow_chains(const Communicator& comm, const Ranges& ranges, std::vector<s
 
 }  // namespace
 
-std::vector<std::int64_t> weld(const Communicator& comm, const PiecesPart& part) {
+std::vector<std::int64_t> weld(const Communicator& comm, const PiecesPart& part,
+                               const std::vector<char>& near) {
   const Ranges ranges = Ranges::of(comm, static_cast<std::int64_t>(part.points.size()));
   const std::int64_t first = ranges.first[static_cast<std::size_t>(comm.rank())];
   std::vector<std::int64_t> rep(part.points.size());
@@ -162,10 +164,9 @@ std::vector<std::int64_t> weld(const Communicator& comm, const PiecesPart& part)
   if (b.size <= 0) return rep;
   const int n = comm.size();
   std::vector<std::vector<WeldPoint>> to(static_cast<std::size_t>(n));
-  to[static_cast<std::size_t>(comm.rank())].reserve(rep.size());
   std::array<int, 8> ranks{};
   for (std::size_t q = 0; q < rep.size(); ++q) {
-    if (!(part.tolerance[q] > 0)) continue;
+    if (!near[q] || !(part.tolerance[q] > 0)) continue;  // stays home: nothing to weld with
     const Vec3& p = part.points[q];
     WeldPoint w{rep[q], part.point_piece[q], p[0], p[1], p[2], part.tolerance[q], 0};
     const int home = n == 1 ? 0 : b.rank(b.key(p, 0), n);

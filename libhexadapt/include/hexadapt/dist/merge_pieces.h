@@ -37,16 +37,26 @@ struct MergedPart {
   std::int64_t welded = 0, repeated = 0;   ///< over every rank: points welded, cells dropped
 };
 
+/// Per point of `part`: 1 when its tolerance box meets the bounding box of another piece.
+/// Only such points can weld, and only a cell all of whose points are such can repeat a cell
+/// of another piece (a point welds only to a point within its tolerance). Every rank calls
+/// it.
+std::vector<char> near_other_pieces(const Communicator& comm, const PiecesPart& part);
+
 /// For each point of `part`, the global id of the first point (in the global order) that it
 /// is welded to: the first point of another piece within the tolerance of both (within
 /// min(tolerance) of each other), followed while that one is welded to an earlier one; the
 /// point itself when none. A point of tolerance 0 is never welded. Every rank calls it.
-std::vector<std::int64_t> weld(const Communicator& comm, const PiecesPart& part);
+/// Points far from other pieces (`near`: near_other_pieces) are not sent anywhere.
+std::vector<std::int64_t> weld(const Communicator& comm, const PiecesPart& part,
+                               const std::vector<char>& near);
 
 /// For each cell of `part` whose welded nodes (`welded`: weld's result) an earlier cell (global
-/// order) of another piece has as a set, 1; 0 otherwise. Every rank calls it.
+/// order) of another piece has as a set, 1; 0 otherwise. Only cells whose points are all
+/// `near` other pieces (near_other_pieces) are sent to be compared. Every rank calls it.
 std::vector<char> repeated_cells(const Communicator& comm, const PiecesPart& part,
-                                 const std::vector<std::int64_t>& welded);
+                                 const std::vector<std::int64_t>& welded,
+                                 const std::vector<char>& near);
 
 /// The merge of every rank's part (above). Every rank calls it.
 MergedPart merge_pieces(const Communicator& comm, const PiecesPart& part);
