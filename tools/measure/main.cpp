@@ -226,16 +226,16 @@ struct Measured {
   QualityReport report;
   TargetDistances distances;
   SizeReport size;
-  DiscrepancyReport discrepancy;  ///< with --reference
+  DiscrepancyReport discrepancy;              ///< with --reference
   std::optional<cli::InputOptions> recorded;  ///< how the reference was read
 };
 
 // Writes the JSON report (with a `ranks` block when `ranks` is not null), prints the summary
 // and returns the exit code.
-int finish(const CLI::App& app, const cli::CommonOptions& common, const Args& a,
-           const Measured& m, const PhaseTimes& times, const cli::Json& ranks) {
-  const bool passed = m.report.passed() && m.size.passed() &&
-                      (a.reference.empty() || m.discrepancy.passed());
+int finish(const CLI::App& app, const cli::CommonOptions& common, const Args& a, const Measured& m,
+           const PhaseTimes& times, const cli::Json& ranks) {
+  const bool passed =
+      m.report.passed() && m.size.passed() && (a.reference.empty() || m.discrepancy.passed());
   const int code = passed ? cli::ok : cli::target_missed;
   cli::Json json = cli::report_header(app);
   json["input"] = a.input;
@@ -424,7 +424,6 @@ int main(int argc, char** argv) {
   cli::add_common_options(app, common, /*with_output=*/false);
   cli::add_write_options(app, common);
   return cli::run_on_ranks(app, argc, argv, common, [&](const dist::Communicator& comm) {
-    return comm.size() > 1 ? measure_on_ranks(app, common, args, comm)
-                           : measure(app, common, args);
+    return comm.size() > 1 ? measure_on_ranks(app, common, args, comm) : measure(app, common, args);
   });
 }

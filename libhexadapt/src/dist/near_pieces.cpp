@@ -58,9 +58,8 @@ std::vector<PieceBox> piece_boxes(const Communicator& comm, const PiecesPart& pa
 // box: the only ones its points can come near.
 std::vector<const PieceBox*> near_pieces(const std::vector<PieceBox>& boxes, std::int64_t piece,
                                          double max_tolerance) {
-  const auto own = std::lower_bound(
-      boxes.begin(), boxes.end(), piece,
-      [](const PieceBox& b, std::int64_t p) { return b.piece < p; });
+  const auto own = std::lower_bound(boxes.begin(), boxes.end(), piece,
+                                    [](const PieceBox& b, std::int64_t p) { return b.piece < p; });
   std::vector<const PieceBox*> out;
   if (own == boxes.end() || own->piece != piece) return out;
   for (const PieceBox& b : boxes) {

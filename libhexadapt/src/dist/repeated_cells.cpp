@@ -1,6 +1,6 @@
 // The repeated cells of dist::merge_pieces: every cell near other pieces goes, keyed by its
-// sorted welded nodes, to the rank the key hashes to; that rank sees every cell of the key, sorts them in
-// global order and flags each one whose piece differs from the key's first cell's.
+// sorted welded nodes, to the rank the key hashes to; that rank sees every cell of the key, sorts
+// them in global order and flags each one whose piece differs from the key's first cell's.
 #include <algorithm>
 #include <array>
 

@@ -15,8 +15,7 @@ namespace hexadapt {
 
 namespace {
 
-QualityHistogram histogram(const dist::Communicator& comm, const std::vector<double>& v,
-                           int bins) {
+QualityHistogram histogram(const dist::Communicator& comm, const std::vector<double>& v, int bins) {
   QualityHistogram h;
   h.counts.assign(static_cast<std::size_t>(bins), 0);
   const double width = (h.hi - h.lo) / bins;
@@ -45,7 +44,8 @@ std::string build_mesh(const dist::Communicator& comm, const io::MeshData& data,
   for (std::size_t r = 0; r < all.size(); ++r) {
     const std::vector<char> text = all[r].get_vector<char>();
     if (!text.empty())
-      return "on the part of rank " + std::to_string(r) + ": " + std::string(text.begin(), text.end());
+      return "on the part of rank " + std::to_string(r) + ": " +
+             std::string(text.begin(), text.end());
   }
   return "";
 }

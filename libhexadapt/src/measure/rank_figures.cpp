@@ -80,8 +80,8 @@ double kth_value(const dist::Communicator& comm, const std::vector<double>& valu
   std::uint64_t key = 0;
   for (int bit = 63; bit >= 0; --bit) {
     const std::uint64_t below = key | ((std::uint64_t{1} << bit) - 1);  // bit left at 0
-    const auto at_or_below = static_cast<std::int64_t>(
-        std::upper_bound(keys.begin(), keys.end(), below) - keys.begin());
+    const auto at_or_below =
+        static_cast<std::int64_t>(std::upper_bound(keys.begin(), keys.end(), below) - keys.begin());
     if (total(comm, at_or_below) <= k) key |= std::uint64_t{1} << bit;
   }
   return from_key(key);
@@ -97,8 +97,8 @@ std::pair<double, std::int64_t> extreme_with_id(const dist::Communicator& comm,
   std::pair<double, std::int64_t> best{0.0, -1};
   for (std::size_t r = 0; r < ids.size(); ++r) {
     if (ids[r] < 0) continue;
-    const bool better = best.second < 0 || (highest ? values[r] > best.first
-                                                    : values[r] < best.first) ||
+    const bool better = best.second < 0 ||
+                        (highest ? values[r] > best.first : values[r] < best.first) ||
                         (values[r] == best.first && ids[r] < best.second);
     if (better) best = {values[r], ids[r]};
   }

@@ -24,17 +24,14 @@ std::vector<index_t> summed(const dist::Communicator& comm, std::vector<index_t>
 
 /// Element k (from 0) of every rank's values in increasing order (std::nth_element's value
 /// on all of them); NaN when there are not k + 1 values.
-double kth_value(const dist::Communicator& comm, const std::vector<double>& values,
-                 std::int64_t k);
+double kth_value(const dist::Communicator& comm, const std::vector<double>& values, std::int64_t k);
 
 /// The lowest value over the ranks with the lowest global id reaching it, from each rank's
 /// own (value, id); (value, -1) ranks hold nothing. `highest` picks the highest value instead.
 std::pair<double, std::int64_t> extreme_with_id(const dist::Communicator& comm,
-                                                std::pair<double, std::int64_t> mine,
-                                                bool highest);
+                                                std::pair<double, std::int64_t> mine, bool highest);
 
 /// Every rank's list of ids, each increasing, merged and cut to the first k.
-std::vector<CellId> first_of_ranks(const dist::Communicator& comm, std::vector<CellId> mine,
-                                   int k);
+std::vector<CellId> first_of_ranks(const dist::Communicator& comm, std::vector<CellId> mine, int k);
 
 }  // namespace hexadapt

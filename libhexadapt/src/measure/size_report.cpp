@@ -51,8 +51,9 @@ void time_step_figures(const Part& p, const std::vector<double>& t, SizeFigures&
   const auto lowest = std::min_element(t.begin(), t.end());
   const auto [min, cell] = extreme_with_id(
       p.comm,
-      lowest == t.end() ? std::pair{0.0, std::int64_t{-1}}
-                        : std::pair{*lowest, p.ids.cell(static_cast<std::size_t>(lowest - t.begin()))},
+      lowest == t.end()
+          ? std::pair{0.0, std::int64_t{-1}}
+          : std::pair{*lowest, p.ids.cell(static_cast<std::size_t>(lowest - t.begin()))},
       /*highest=*/false);
   f.time_step_min_cell = CellId(cell);
   f.time_step_median = kth_value(p.comm, t, total(p.comm, static_cast<std::int64_t>(t.size())) / 2);
@@ -62,8 +63,8 @@ void time_step_figures(const Part& p, const std::vector<double>& t, SizeFigures&
   f.time_step_histogram = histogram(p.comm, relative, time_step_bins);
 }
 
-std::vector<SizeBreach> first_of_ranks(const dist::Communicator& comm,
-                                       std::vector<SizeBreach> mine, int k) {
+std::vector<SizeBreach> first_of_ranks(const dist::Communicator& comm, std::vector<SizeBreach> mine,
+                                       int k) {
   return dist::first_of_ranks(
       comm, std::move(mine), static_cast<std::size_t>(std::max(k, 0)),
       [](dist::Buffer& b, const SizeBreach& x) {
@@ -94,8 +95,8 @@ void relative_figures(const Part& p, const CellSizes& s, const std::vector<doubl
     highest = std::max(highest, s.edges[c].max / local[c]);
     if (!(s.edges[c].min < o.min_edge * local[c])) continue;
     if (++f.below_min_edge <= o.max_listed)
-      f.first_below.push_back({CellId(p.ids.cell(c)), s.edges[c].min, local[c], shortest,
-                               centroid(p.data, c)});
+      f.first_below.push_back(
+          {CellId(p.ids.cell(c)), s.edges[c].min, local[c], shortest, centroid(p.data, c)});
   }
   const std::vector<double> ends =
       dist::all_gather_values(p.comm, std::vector<double>{lowest, highest});
@@ -117,8 +118,9 @@ SizeFigures figures(const Part& p, const CellSizes& s, const std::vector<double>
   for (std::size_t c = 0; c < ratio.size(); ++c) ratio[c] = s.edges[c].ratio();
   f.edge_ratio = stats(p.comm, ratio);
   f.edge_ratio_histogram = histogram(p.comm, ratio, edge_ratio_bins);
-  time_step_figures(p, std::vector<double>(s.time_step.begin(),
-                                           s.time_step.begin() + static_cast<std::ptrdiff_t>(p.owned)),
+  time_step_figures(p,
+                    std::vector<double>(s.time_step.begin(),
+                                        s.time_step.begin() + static_cast<std::ptrdiff_t>(p.owned)),
                     f);
   if (local) relative_figures(p, s, *local, o, f);
   return f;
@@ -138,7 +140,8 @@ std::vector<double> array_sizes(const Part& p, const io::DataArray& a) {
   for (std::size_t r = 0; r < all.size(); r += 2)
     if (all[r] >= 0 && (bad[0] < 0 || all[r] < bad[0])) bad = {all[r], all[r + 1]};
   if (bad[0] >= 0)
-    throw InputError({}, "cell " + std::to_string(std::int64_t(bad[0])) + " of array '" + a.name + "'",
+    throw InputError({},
+                     "cell " + std::to_string(std::int64_t(bad[0])) + " of array '" + a.name + "'",
                      "expected a positive local size, found " + std::to_string(bad[1]));
   return a.values;
 }
@@ -151,9 +154,9 @@ std::vector<double> reference_sizes(const io::MeshData& mesh, const io::MeshData
   std::vector<Vec3> centroids(static_cast<std::size_t>(mesh.n_cells()));
   for (std::size_t c = 0; c < centroids.size(); ++c)
     centroids[c] = frame.to_local(centroid(mesh, c));
-  const PointCells at =
-      frame.is_identity() ? locate(reference, centroids, progress, 0.6, 1.0)
-                          : locate(geometry_in_frame(reference, frame), centroids, progress, 0.6, 1.0);
+  const PointCells at = frame.is_identity() ? locate(reference, centroids, progress, 0.6, 1.0)
+                                            : locate(geometry_in_frame(reference, frame), centroids,
+                                                     progress, 0.6, 1.0);
   *outside = at.outside;
   std::vector<double> local(centroids.size());
   for (std::size_t c = 0; c < local.size(); ++c) {
@@ -226,8 +229,8 @@ SizeReport size_report(const io::MeshData& mesh, const io::MeshData* reference,
 SizeReport size_report(const dist::Communicator& comm, const io::GhostedPart& part,
                        const SizeReportOptions& o) {
   const PartIds ids = io::part_ids(part);
-  return report_of({comm, part.part.data, ids, static_cast<std::size_t>(part.owned_cells)},
-                   nullptr, o);
+  return report_of({comm, part.part.data, ids, static_cast<std::size_t>(part.owned_cells)}, nullptr,
+                   o);
 }
 
 }  // namespace hexadapt

@@ -77,12 +77,12 @@ void find_inverted_cells(const M& mesh, const PartIds& ids, const MeshCheckOptio
 // Every rank's counts added and lists merged by id: the result of the whole mesh.
 void combine(const dist::Communicator& comm, int k, MeshCheckResult& r) {
   if (comm.size() == 1) return;
-  for (index_t* count : {&r.hanging_nodes, &r.nonconformal_faces, &r.unreferenced_nodes,
-                         &r.duplicate_nodes, &r.inverted_cells, &r.nonmanifold_nodes,
-                         &r.boundary_faces})
+  for (index_t* count :
+       {&r.hanging_nodes, &r.nonconformal_faces, &r.unreferenced_nodes, &r.duplicate_nodes,
+        &r.inverted_cells, &r.nonmanifold_nodes, &r.boundary_faces})
     *count = static_cast<index_t>(dist::sum_in_rank_order(comm, std::int64_t{*count}));
-  for (auto* list : {&r.first_hanging, &r.first_unreferenced, &r.first_duplicates,
-                     &r.first_nonmanifold})
+  for (auto* list :
+       {&r.first_hanging, &r.first_unreferenced, &r.first_duplicates, &r.first_nonmanifold})
     *list = first_of_ranks(comm, std::move(*list), k);
   r.first_inverted = first_of_ranks(comm, std::move(r.first_inverted), k);
 }
@@ -106,8 +106,8 @@ MeshCheckResult check_as_given(const dist::Communicator& comm, const M& mesh, co
 
 // Positions and lengths of a result found in `frame` back in the mesh's units.
 void to_world(MeshCheckResult& r, const UnitFrame& frame) {
-  for (auto* list : {&r.first_hanging, &r.first_unreferenced, &r.first_duplicates,
-                     &r.first_nonmanifold})
+  for (auto* list :
+       {&r.first_hanging, &r.first_unreferenced, &r.first_duplicates, &r.first_nonmanifold})
     for (NodeIssue& n : *list) n.position = frame.to_world(n.position);
   for (CellIssue& c : r.first_inverted) c.centroid = frame.to_world(c.centroid);
   r.duplicate_distance = frame.to_world(r.duplicate_distance);
@@ -115,8 +115,8 @@ void to_world(MeshCheckResult& r, const UnitFrame& frame) {
 
 }  // namespace
 
-std::vector<NodeIssue> first_of_ranks(const dist::Communicator& comm,
-                                      std::vector<NodeIssue> mine, int k) {
+std::vector<NodeIssue> first_of_ranks(const dist::Communicator& comm, std::vector<NodeIssue> mine,
+                                      int k) {
   return dist::first_of_ranks(
       comm, std::move(mine), static_cast<std::size_t>(std::max(k, 0)),
       [](dist::Buffer& b, const NodeIssue& n) {
@@ -138,8 +138,8 @@ std::vector<NodeIssue> first_of_ranks(const dist::Communicator& comm,
       [](const NodeIssue& a, const NodeIssue& b) { return a.node < b.node; });
 }
 
-std::vector<CellIssue> first_of_ranks(const dist::Communicator& comm,
-                                      std::vector<CellIssue> mine, int k) {
+std::vector<CellIssue> first_of_ranks(const dist::Communicator& comm, std::vector<CellIssue> mine,
+                                      int k) {
   return dist::first_of_ranks(
       comm, std::move(mine), static_cast<std::size_t>(std::max(k, 0)),
       [](dist::Buffer& b, const CellIssue& c) {

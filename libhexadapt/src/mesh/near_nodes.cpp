@@ -29,8 +29,8 @@ NearNodes nodes_near(const dist::Communicator& comm, const std::array<Vec3, 2>& 
   near.candidates = std::move(offered);
   if (comm.size() == 1) return near;
   const std::vector<double> boxes = dist::all_gather_values(
-      comm, std::vector<double>{box[0].x(), box[0].y(), box[0].z(), box[1].x(), box[1].y(),
-                                box[1].z()});
+      comm,
+      std::vector<double>{box[0].x(), box[0].y(), box[0].z(), box[1].x(), box[1].y(), box[1].z()});
   const auto n_ranks = static_cast<std::size_t>(comm.size());
   std::vector<std::vector<Offered>> to(n_ranks);
   for (std::size_t r = 0; r < n_ranks; ++r) {
@@ -60,9 +60,9 @@ std::array<Vec3, 2> global_bounding_box(const dist::Communicator& comm,
                                         const std::vector<Vec3>& points) {
   const std::array<Vec3, 2> mine = bounding_box(points);
   if (comm.size() == 1) return mine;
-  const bool empty = mine[0] == mine[1] && mine[0] == Vec3::Zero() &&
-                     std::none_of(points.begin(), points.end(),
-                                  [](const Vec3& p) { return p.allFinite(); });
+  const bool empty =
+      mine[0] == mine[1] && mine[0] == Vec3::Zero() &&
+      std::none_of(points.begin(), points.end(), [](const Vec3& p) { return p.allFinite(); });
   const double inf = std::numeric_limits<double>::infinity();
   const std::vector<double> all = dist::all_gather_values(
       comm, empty ? std::vector<double>{inf, inf, inf, -inf, -inf, -inf}

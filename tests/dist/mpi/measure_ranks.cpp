@@ -68,8 +68,9 @@ io::MeshData defective_mesh(double scale) {
         const double g = grid_node(i, j, k);
         const bool inside = i > 0 && i < nx && j > 0 && j < ny && k > 0 && k < nz;
         const Vec3 jitter =
-            inside ? Vec3(0.2 * Vec3(std::sin(1.3 * g), std::sin(2.1 * g + 1), std::sin(0.7 * g + 2)))
-                   : Vec3(Vec3::Zero());
+            inside
+                ? Vec3(0.2 * Vec3(std::sin(1.3 * g), std::sin(2.1 * g + 1), std::sin(0.7 * g + 2)))
+                : Vec3(Vec3::Zero());
         d.points.push_back(Vec3(i, j, k) + jitter);
       }
   std::vector<NodeId> cells;
@@ -86,8 +87,7 @@ io::MeshData defective_mesh(double scale) {
   std::array<index_t, 8> cube{};
   for (int v = 0; v < 8; ++v)
     cube[static_cast<std::size_t>(v)] =
-        v == 0 ? corner
-               : add_point(d, d.points[corner] + Vec3(v & 1, (v >> 1) & 1, (v >> 2) & 1));
+        v == 0 ? corner : add_point(d, d.points[corner] + Vec3(v & 1, (v >> 1) & 1, (v >> 2) & 1));
   add_cube(d, cube);
   for (Vec3& p : d.points) p *= scale;
   const auto n_cells = static_cast<std::size_t>(d.n_cells());

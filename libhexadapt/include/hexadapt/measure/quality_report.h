@@ -27,7 +27,7 @@ namespace hexadapt {
 namespace io {
 struct MeshData;
 struct GhostedPart;
-}
+}  // namespace io
 
 struct QualityReportOptions {
   double threshold = default_threshold;  ///< S_q: cells with scaled Jacobian below it fail

@@ -32,7 +32,7 @@ namespace hexadapt {
 namespace io {
 struct MeshData;
 struct GhostedPart;
-}
+}  // namespace io
 
 struct SizeReportOptions {
   /// A cell breaks the size criterion when its shortest edge < min_edge x its local size;

@@ -15,7 +15,7 @@ namespace hexadapt {
 namespace io {
 struct MeshData;
 struct GhostedPart;
-}
+}  // namespace io
 
 struct TargetDistances {
   bool has_targets = false;  ///< the array exists

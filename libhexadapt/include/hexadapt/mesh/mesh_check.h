@@ -74,10 +74,10 @@ struct MeshCheckResult {
 
 /// Every rank's listed issues (each list in increasing id) merged by id and cut to the
 /// first k: the same on every rank. Every rank calls them.
-std::vector<NodeIssue> first_of_ranks(const dist::Communicator& comm,
-                                      std::vector<NodeIssue> mine, int k);
-std::vector<CellIssue> first_of_ranks(const dist::Communicator& comm,
-                                      std::vector<CellIssue> mine, int k);
+std::vector<NodeIssue> first_of_ranks(const dist::Communicator& comm, std::vector<NodeIssue> mine,
+                                      int k);
+std::vector<CellIssue> first_of_ranks(const dist::Communicator& comm, std::vector<CellIssue> mine,
+                                      int k);
 
 /// Checks a QuadMesh or HexMesh (instantiated for both). Deterministic: offenders are listed
 /// by increasing id whatever the thread count.
