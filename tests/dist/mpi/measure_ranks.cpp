@@ -3,7 +3,7 @@
 // duplicated node, hanging nodes, a bow-tie), arrays for purity, local sizes and targets, is
 // cut into parts two ways (contiguous ranges of cells, and cells scattered over the ranks),
 // each part given its ghost layer; the reports computed on the ranks are, as JSON, the
-// reports of the whole mesh on one process, character for character.
+// reports of the whole mesh on one process, character for character; the same for quads.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -112,6 +112,44 @@ io::MeshData defective_mesh(double scale) {
   return d;
 }
 
+// The 2D counterpart: a jittered quad grid with folded quads, a duplicated node, two half
+// quads on a boundary edge (one node hangs on it) and a quad touching the grid at a corner.
+io::MeshData defective_quads() {
+  constexpr int qx = 9, qy = 7;
+  const auto node = [&](int i, int j) { return static_cast<index_t>(i + (qx + 1) * j); };
+  io::MeshData d;
+  d.dim = 2;
+  for (int j = 0; j <= qy; ++j)
+    for (int i = 0; i <= qx; ++i) {
+      const double g = node(i, j);
+      const bool inside = i > 0 && i < qx && j > 0 && j < qy;
+      d.points.emplace_back(i + (inside ? 0.2 * std::sin(1.7 * g) : 0.0),
+                            j + (inside ? 0.2 * std::sin(0.9 * g + 1) : 0.0), 0.0);
+    }
+  std::vector<NodeId> cells;
+  append_structured_cells(qx, qy, 0, cells);
+  d.cells = cells;
+  d.points[node(3, 3)] += Vec3(0.95, 0.95, 0);  // the quads around it fold
+  d.cells[4 * 30 + 2] = NodeId(add_point(d, d.points[d.cells[4 * 30 + 2].idx()]));
+  // Two half quads on the top edge of cell (4, qy - 1): the edge's middle hangs on it.
+  const index_t a = node(4, qy), b = node(5, qy);
+  const index_t mid = add_point(d, 0.5 * (d.points[a] + d.points[b]));
+  const index_t a_up = add_point(d, d.points[a] + Vec3(0, 0.5, 0));
+  const index_t mid_up = add_point(d, d.points[mid] + Vec3(0, 0.5, 0));
+  const index_t b_up = add_point(d, d.points[b] + Vec3(0, 0.5, 0));
+  for (const index_t v : {a, mid, mid_up, a_up, mid, b, b_up, mid_up}) d.cells.push_back(NodeId(v));
+  // A bow-tie at the grid's far corner.
+  const index_t corner = node(qx, qy);
+  const index_t c1 = add_point(d, d.points[corner] + Vec3(1, 0, 0));
+  const index_t c2 = add_point(d, d.points[corner] + Vec3(1, 1, 0));
+  const index_t c3 = add_point(d, d.points[corner] + Vec3(0, 1, 0));
+  for (const index_t v : {corner, c1, c2, c3}) d.cells.push_back(NodeId(v));
+  io::DataArray material{"material", 1, io::ScalarType::float64, {}};
+  for (index_t c = 0; c < d.n_cells(); ++c) material.values.push_back(c % 17 == 2 ? -1.0 : 0.0);
+  d.cell_data = {material};
+  return d;
+}
+
 // Cells [first, end) of `whole` with the nodes they use, as a rank's part.
 io::MeshPart range_part(const io::MeshData& whole, std::int64_t first, std::int64_t end) {
   const auto npc = static_cast<std::size_t>(whole.nodes_per_cell());
@@ -157,12 +195,14 @@ io::MeshPart contiguous(const io::MeshData& whole) {
   return range_part(whole, n * r / s, n * (r + 1) / s);
 }
 
-// The cells scattered: cell c goes to rank (c / 5 + c % 3) mod size.
-io::MeshPart scattered(const io::MeshData& whole) {
+// The cells scattered: cell c goes to rank (c / 5 + c % 3) mod size; the cells from `tail`
+// on to the last rank.
+io::MeshPart scattered(const io::MeshData& whole, std::int64_t tail = -1) {
   const io::MeshPart part = contiguous(whole);
+  const int size = test::world().size();
   std::vector<int> to;
   for (const std::int64_t c : part.cell_ids)
-    to.push_back(static_cast<int>((c / 5 + c % 3) % test::world().size()));
+    to.push_back(tail >= 0 && c >= tail ? size - 1 : static_cast<int>((c / 5 + c % 3) % size));
   return io::migrate(test::world(), part, to);
 }
 
@@ -198,6 +238,21 @@ TEST(MeasureOnRanks, TheWholeMeshReportsOnEveryRank) {
     expect_reports_of_whole(whole, contiguous(whole), listed);
     expect_reports_of_whole(whole, scattered(whole), listed);
   }
+}
+
+TEST(MeasureOnRanks, QuadsTheSameAsOneProcess) {
+  const io::MeshData whole = defective_quads();
+  const QualityReport r = quality_report(whole);
+  ASSERT_TRUE(r.topology_error.empty()) << r.topology_error;
+  EXPECT_GE(r.check.inverted_cells, 1);
+  EXPECT_EQ(r.check.duplicate_nodes, 1);
+  EXPECT_EQ(r.check.hanging_nodes, 1);
+  EXPECT_GE(r.check.nonmanifold_nodes, 1);
+  expect_reports_of_whole(whole, contiguous(whole), 100);
+  expect_reports_of_whole(whole, scattered(whole), 2);
+  // The half quads on the last rank, the quad whose edge their node hangs on (58) on rank 0
+  // (12 mod 2, 3 or 4): the hanging node is found across the ranks' border.
+  expect_reports_of_whole(whole, scattered(whole, 9 * 7), 100);
 }
 
 TEST(MeasureOnRanks, FarFromUnitSizeTheSameAsOneProcess) {
