@@ -357,15 +357,19 @@ int measure_on_ranks(const CLI::App& app, const cli::CommonOptions& common, cons
   cli::on_every_rank(comm, app, [&] {
     pieces = io::read_rank_pieces(a.input, reading, comm.rank(), comm.size());
   });
-  io::GhostedPart part;
+  // Each step whole inside on_every_rank: a rank that fails alone must not leave the others
+  // waiting in a collective it skipped.
+  io::MeshPart merged;
+  cli::on_every_rank(comm, app,
+                     [&] { merged = io::merge_rank_pieces(comm, std::move(pieces), reading); });
   cli::on_every_rank(comm, app, [&] {
-    io::MeshPart merged = io::merge_rank_pieces(comm, std::move(pieces), reading);
     cli::check_memory("measuring " + std::to_string(merged.data.n_cells()) + " cells on rank " +
                           std::to_string(comm.rank()),
                       static_cast<double>(merged.data.n_cells()) * cli::measure_bytes_per_cell,
                       common.memory_limit());
-    part = io::with_ghost_layer(comm, merged);
   });
+  const io::GhostedPart part = io::with_ghost_layer(comm, merged);
+  merged = io::MeshPart();
   times.emplace_back("read", timer.seconds());
   Measured m;
   Timer phase;

@@ -161,6 +161,10 @@ for args, code_wanted, words in (
     code, err = run("measure", "usage", 2, *args)
     check(code == code_wanted and err.count("error") == 1 and all(w in err for w in words),
           "%r on 2 ranks: exit %d, %r" % (args, code, err))
+# Beyond --max-memory on a rank: every rank stops (exit 5) with one message.
+code, err = run("measure", "usage", 3, "../defects.pvtu", "--max-memory", "10000")
+check(code == 5 and err.count("error") == 1 and "rank" in err,
+      "--max-memory on 3 ranks: exit %d, %r" % (code, err))
 # A piece missing: every rank stops with the message naming it.
 os.makedirs(path("broken"))
 for name in os.listdir(path()):
