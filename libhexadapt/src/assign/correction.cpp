@@ -57,16 +57,6 @@ struct Change {
   int material = 0;
 };
 
-void put_point(dist::Buffer& b, const Vec3& p) {
-  for (int d = 0; d < 3; ++d) b.put(p[d]);
-}
-
-Vec3 get_point(dist::Buffer& b) {
-  Vec3 p;
-  for (int d = 0; d < 3; ++d) p[d] = b.get<double>();
-  return p;
-}
-
 /// What the rank owning a selected node found, for every rank to apply in the same order.
 struct Outcome {
   std::int64_t order = 0;  ///< the node's place among the selected ones
@@ -179,7 +169,7 @@ class Corrector {
     mine.put(static_cast<std::uint64_t>(pending.size()));
     for (NodeId n : pending) {
       mine.put(where_.block.global(n));
-      put_point(mine, mesh_.point(n));
+      mine.put_point(mesh_.point(n));
       std::vector<std::int64_t> cells;
       for (CellId c : mesh_.node_cells(n)) cells.push_back(where_.block.global(c));
       mine.put_vector(cells);
@@ -190,7 +180,7 @@ class Corrector {
       for (std::uint64_t i = 0; i < n; ++i) {
         Pending p;
         p.node = b.get<std::int64_t>();
-        p.point = get_point(b);
+        p.point = b.get_point();
         p.cells = b.get_vector<std::int64_t>();
         all.push_back(std::move(p));
       }
@@ -253,7 +243,7 @@ class Corrector {
       b.put_vector(o.changes);
       if (o.failed) {
         b.put(where_.block.global(o.failure.node));
-        put_point(b, o.failure.position);
+        b.put_point(o.failure.position);
         b.put_vector(o.failure.materials);
         b.put(o.failure.stored);
       }
@@ -271,7 +261,7 @@ class Corrector {
         o.changes = r.get_vector<Change>();
         if (o.failed) {
           o.failure.node = NodeId(static_cast<index_t>(r.get<std::int64_t>()));
-          o.failure.position = get_point(r);
+          o.failure.position = r.get_point();
           o.failure.materials = r.get_vector<int>();
           o.failure.stored = r.get<int>();
         }

@@ -69,9 +69,8 @@ std::vector<SizeBreach> first_of_ranks(const dist::Communicator& comm, std::vect
       comm, std::move(mine), static_cast<std::size_t>(std::max(k, 0)),
       [](dist::Buffer& b, const SizeBreach& x) {
         b.put(x.cell);
-        for (double v : {x.shortest_edge, x.local_size, x.ratio, x.centroid.x(), x.centroid.y(),
-                         x.centroid.z()})
-          b.put(v);
+        for (double v : {x.shortest_edge, x.local_size, x.ratio}) b.put(v);
+        b.put_point(x.centroid);
       },
       [](dist::Buffer& b) {
         SizeBreach x;
@@ -79,7 +78,7 @@ std::vector<SizeBreach> first_of_ranks(const dist::Communicator& comm, std::vect
         x.shortest_edge = b.get<double>();
         x.local_size = b.get<double>();
         x.ratio = b.get<double>();
-        for (int d = 0; d < 3; ++d) x.centroid[d] = b.get<double>();
+        x.centroid = b.get_point();
         return x;
       },
       [](const SizeBreach& a, const SizeBreach& b) { return a.cell < b.cell; });

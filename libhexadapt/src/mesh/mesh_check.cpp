@@ -38,16 +38,6 @@ template std::vector<FaceRef> boundary_faces(const HexMesh&, const PartIds&);
 
 namespace {
 
-void put(dist::Buffer& b, const Vec3& p) {
-  for (int k = 0; k < 3; ++k) b.put(p[k]);
-}
-
-Vec3 get_point(dist::Buffer& b) {
-  Vec3 p;
-  for (int k = 0; k < 3; ++k) p[k] = b.get<double>();
-  return p;
-}
-
 template <class M>
 void find_unreferenced_nodes(const M& mesh, const PartIds& ids, const std::vector<Vec3>& points,
                              const MeshCheckOptions& options, MeshCheckResult& result) {
@@ -121,7 +111,7 @@ std::vector<NodeIssue> first_of_ranks(const dist::Communicator& comm, std::vecto
       comm, std::move(mine), static_cast<std::size_t>(std::max(k, 0)),
       [](dist::Buffer& b, const NodeIssue& n) {
         b.put(n.node);
-        put(b, n.position);
+        b.put_point(n.position);
         b.put(n.cell);
         b.put(n.local_face);
         b.put(n.other);
@@ -129,7 +119,7 @@ std::vector<NodeIssue> first_of_ranks(const dist::Communicator& comm, std::vecto
       [](dist::Buffer& b) {
         NodeIssue n;
         n.node = b.get<NodeId>();
-        n.position = get_point(b);
+        n.position = b.get_point();
         n.cell = b.get<CellId>();
         n.local_face = b.get<int>();
         n.other = b.get<NodeId>();
@@ -145,13 +135,13 @@ std::vector<CellIssue> first_of_ranks(const dist::Communicator& comm, std::vecto
       [](dist::Buffer& b, const CellIssue& c) {
         b.put(c.cell);
         b.put(c.quality);
-        put(b, c.centroid);
+        b.put_point(c.centroid);
       },
       [](dist::Buffer& b) {
         CellIssue c;
         c.cell = b.get<CellId>();
         c.quality = b.get<double>();
-        c.centroid = get_point(b);
+        c.centroid = b.get_point();
         return c;
       },
       [](const CellIssue& a, const CellIssue& b) { return a.cell < b.cell; });

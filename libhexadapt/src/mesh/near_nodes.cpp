@@ -1,6 +1,5 @@
 #include "near_nodes.h"
 
-#include <algorithm>
 #include <limits>
 
 #include "hexadapt/dist/routing.h"
@@ -58,16 +57,17 @@ NearNodes nodes_near(const dist::Communicator& comm, const std::array<Vec3, 2>& 
 
 std::array<Vec3, 2> global_bounding_box(const dist::Communicator& comm,
                                         const std::vector<Vec3>& points) {
-  const std::array<Vec3, 2> mine = bounding_box(points);
-  if (comm.size() == 1) return mine;
-  const bool empty =
-      mine[0] == mine[1] && mine[0] == Vec3::Zero() &&
-      std::none_of(points.begin(), points.end(), [](const Vec3& p) { return p.allFinite(); });
+  if (comm.size() == 1) return bounding_box(points);
+  // Every rank's finite points' box (empty: lo > hi); the box of their corners.
   const double inf = std::numeric_limits<double>::infinity();
+  Vec3 lo = Vec3::Constant(inf), hi = Vec3::Constant(-inf);
+  for (const Vec3& p : points)
+    if (p.allFinite()) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
   const std::vector<double> all = dist::all_gather_values(
-      comm, empty ? std::vector<double>{inf, inf, inf, -inf, -inf, -inf}
-                  : std::vector<double>{mine[0].x(), mine[0].y(), mine[0].z(), mine[1].x(),
-                                        mine[1].y(), mine[1].z()});
+      comm, std::vector<double>{lo.x(), lo.y(), lo.z(), hi.x(), hi.y(), hi.z()});
   std::vector<Vec3> corners;
   for (std::size_t i = 0; i + 6 <= all.size(); i += 6)
     if (all[i] <= all[i + 3]) {

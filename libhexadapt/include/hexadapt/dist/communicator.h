@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "hexadapt/core/exact_sum.h"
+#include "hexadapt/core/geometry.h"
 
 namespace hexadapt::dist {
 
@@ -94,6 +95,13 @@ class Buffer {
     if (n > 0) std::memcpy(bytes_.data() + at, first, n * sizeof(T));
   }
 
+  /// A point as its three coordinates (read back by get_point).
+  void put_point(const Vec3& p) { put_values(p.data(), 3); }
+  Vec3 get_point() {
+    Vec3 p;
+    get_values(p.data(), 3);
+    return p;
+  }
   bool done() const { return read_ == bytes_.size(); }
   /// Throws InternalError when the bytes run out (a rank sent something else).
   template <class T>
