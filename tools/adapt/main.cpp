@@ -2,6 +2,7 @@
 // and pillows, giving a conformal mesh whose cells each hold one material (paper sec. 5).
 #include <algorithm>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <string>
 #include <variant>
@@ -16,6 +17,9 @@
 #include "hexadapt/io/mesh_file.h"
 #include "hexadapt/reconstruct/model_io.h"
 #include "input_record.h"
+#include "memory.h"
+#include "rank_files.h"
+#include "ranks.h"
 
 namespace {
 
@@ -30,6 +34,7 @@ struct Args {
   std::string layers = to_string(AdaptOptions{}.layers);
   std::string model;
   cli::InputOptions in;
+  bool gather = false;  ///< on ranks: one output file written by rank 0
 };
 
 // The cells failing a criterion: which one, where, and by how much.
@@ -324,6 +329,276 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   return cli::ok;
 }
 
+// The node layers of a rank's slab that the ranks beside it hold too (the cuts): frozen, so
+// that the slabs' meshes keep the input's faces there and fit together.
+IdVector<NodeId, char> cut_nodes(const cli::RankInput& in) {
+  const auto axis = static_cast<std::size_t>(in.shape.dim - 1);
+  const index_t n = in.slab.block.held_nodes;
+  const index_t plane = n / (in.slab.held[axis] + 1);
+  IdVector<NodeId, char> frozen(static_cast<std::size_t>(n), 0);
+  const bool below = in.slab.first_layer > 0;
+  const bool above = in.slab.first_layer + in.slab.held[axis] < in.shape.cells[axis];
+  for (index_t k = 0; k < plane; ++k) {
+    if (below) frozen[NodeId(k)] = 1;
+    if (above) frozen[NodeId(n - plane + k)] = 1;
+  }
+  return frozen;
+}
+
+// What a rank's result adds to the run's, one value per figure (counts are exact in a double):
+// its cells, and the nodes it owns (all but its top cut, which the rank above owns).
+enum Figure {
+  cells_in,
+  cells,
+  nodes,
+  interface_nodes,
+  reached,
+  near,
+  blocked,
+  frozen_blocked,
+  below_threshold,
+  inverted,
+  below_min_edge,
+  dist_init,
+  dist_final,
+  surface_dist_init,
+  surface_dist_final,
+  min_quality,
+  min_edge_ratio,
+  input_min_quality,
+  loops,
+  seconds,
+  n_figures
+};
+
+template <class M>
+std::vector<double> rank_figures(const AdaptResult<M>& r, index_t input_cells,
+                                 index_t first_not_owned, index_t not_owned, double time) {
+  std::vector<double> f(n_figures, 0.0);
+  for (NodeId v : id_range<NodeId>(r.mesh.n_nodes())) {
+    if (v.value() >= first_not_owned && v.value() < first_not_owned + not_owned) continue;
+    f[nodes] += 1;
+    if (!r.has_target[v]) continue;
+    f[interface_nodes] += 1;
+    f[reached] += r.distance[v] == 0;
+    f[near] += r.near_interface[v] != 0;
+    f[blocked] += r.blocked[v] != 0;
+    f[frozen_blocked] += r.blocked[v] == static_cast<char>(BlockReason::frozen);
+    f[dist_final] += r.distance[v];
+    f[surface_dist_final] += r.surface_distance[v];
+  }
+  f[cells_in] = input_cells;
+  f[cells] = r.mesh.n_cells();
+  f[below_threshold] = r.n_below_threshold;
+  f[inverted] = r.n_inverted;
+  f[below_min_edge] = r.n_below_min_edge;
+  f[dist_init] = r.dist_init;
+  f[surface_dist_init] = r.surface_dist_init;
+  f[min_quality] = r.min_quality;
+  f[min_edge_ratio] = r.min_edge_ratio;
+  f[input_min_quality] = r.input_min_quality;
+  f[loops] = r.loops;
+  f[seconds] = time;
+  return f;
+}
+
+// The run's figures from every rank's, in rank order: sums, least qualities, most loops; and
+// each rank's own in `per_rank`.
+Json combined_result(const std::vector<double>& all, Json& per_rank) {
+  std::vector<double> t(n_figures, 0.0);
+  for (Figure m : {min_quality, min_edge_ratio, input_min_quality})
+    t[m] = std::numeric_limits<double>::infinity();
+  per_rank = {{"cells", Json::array()},
+              {"nodes", Json::array()},
+              {"interface_nodes", Json::array()},
+              {"near_interface", Json::array()},
+              {"frozen_blocked_nodes", Json::array()},
+              {"adapt_seconds", Json::array()}};
+  for (std::size_t at = 0; at + n_figures <= all.size(); at += n_figures) {
+    const double* f = all.data() + at;
+    for (int k = 0; k < n_figures; ++k) {
+      if (k == min_quality || k == min_edge_ratio || k == input_min_quality)
+        t[k] = std::min(t[k], f[k]);
+      else if (k == loops || k == seconds)
+        t[k] = std::max(t[k], f[k]);
+      else
+        t[k] += f[k];
+    }
+    per_rank["cells"].push_back(static_cast<std::int64_t>(f[cells]));
+    per_rank["nodes"].push_back(static_cast<std::int64_t>(f[nodes]));
+    per_rank["interface_nodes"].push_back(static_cast<std::int64_t>(f[interface_nodes]));
+    per_rank["near_interface"].push_back(static_cast<std::int64_t>(f[near]));
+    per_rank["frozen_blocked_nodes"].push_back(static_cast<std::int64_t>(f[frozen_blocked]));
+    per_rank["adapt_seconds"].push_back(f[seconds]);
+  }
+  const auto count = [&](Figure k) { return static_cast<std::int64_t>(t[k]); };
+  const auto ratio = [](double a, double b) { return b > 0 ? a / b : 0.0; };
+  return {{"cells_in", count(cells_in)},
+          {"cells", count(cells)},
+          {"nodes", count(nodes)},
+          {"interface_nodes", count(interface_nodes)},
+          {"reached", count(reached)},
+          {"near_interface", count(near)},
+          {"blocked_nodes", count(blocked)},
+          {"frozen_blocked_nodes", count(frozen_blocked)},
+          {"dist_init", t[dist_init]},
+          {"dist_final", t[dist_final]},
+          {"dist_ratio", ratio(t[dist_final], t[dist_init])},
+          {"surface_dist_init", t[surface_dist_init]},
+          {"surface_dist_final", t[surface_dist_final]},
+          {"surface_dist_ratio", ratio(t[surface_dist_final], t[surface_dist_init])},
+          {"min_quality", t[min_quality]},
+          {"cells_below_threshold", count(below_threshold)},
+          {"cells_inverted", count(inverted)},
+          {"cells_below_min_edge", count(below_min_edge)},
+          {"min_edge_ratio", t[min_edge_ratio]},
+          {"input_min_quality", t[input_min_quality]},
+          {"move_smooth_loops", count(loops)}};
+}
+
+// Every rank's failing cells (output ids shifted by the cells of the ranks before, as in the
+// gathered mesh), in rank order.
+Json rank_failures(const dist::Communicator& comm, const std::vector<CellFailure>& failures,
+                   index_t n_cells, double threshold) {
+  const std::vector<std::int64_t> counts =
+      dist::all_gather_values(comm, std::vector<std::int64_t>{n_cells});
+  index_t shift = 0;
+  for (int r = 0; r < comm.rank(); ++r)
+    shift += static_cast<index_t>(counts[static_cast<std::size_t>(r)]);
+  std::vector<CellFailure> mine = failures;
+  for (CellFailure& f : mine) f.cell = CellId(f.cell.value() + shift);
+  const std::string text = failures_json(mine, threshold).dump();
+  Json all = Json::array();
+  for (dist::Buffer& b : dist::all_gather(comm, [&] {
+         dist::Buffer out;
+         out.put_vector(std::vector<char>(text.begin(), text.end()));
+         return out;
+       }()))
+    for (Json& f : Json::parse(b.get_vector<char>())) all.push_back(std::move(f));
+  return all;
+}
+
+// On the ranks of an MPI job (the first pass of an iterative interface displacement): each rank
+// reads its slab of the grid and adapts it with the node layers it shares with the ranks beside
+// it frozen, so that the slabs' meshes fit together; it writes its mesh as one piece.
+int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& common,
+                       const dist::Communicator& comm) {
+  AdaptOptions options = args.options;
+  cli::on_every_rank(comm, app, [&] {
+    cli::check_files({{"input", args.input}},
+                     {{"-o", common.output, true, true}, {"--json", common.json}});
+    cli::check_rank_output("-o", common.output, args.gather, false);
+    options.method = parse_adapt_method(args.method);
+    options.layers = parse_layer_strategy(args.layers);
+    if (options.method != AdaptMethod::guaranteed)
+      throw OptionError("--method " + args.method +
+                        " runs on one process: on several ranks, guaranteed");
+    if (!args.model.empty())
+      throw OptionError(
+          "--model: the target correction on the whole grid's model runs on one process");
+  });
+  Timer clock;
+  PhaseTimes times;
+  cli::RankInput in = cli::read_on_ranks(comm, app, args.input, args.in.read_options(), 0);
+  if (!args.in.fractions.labels.empty())
+    args.in.fractions.label_values = cli::grid_labels(comm, app, args.in, args.input, in);
+  AssignedGrid grid;
+  cli::on_every_rank(comm, app, [&] {
+    cli::check_memory("adapting " + std::to_string(in.data.n_cells()) + " cells on rank " +
+                          std::to_string(comm.rank()),
+                      static_cast<double>(in.data.n_cells()) * cli::adapt_bytes_per_cell,
+                      common.memory_limit());
+    grid = io::to_assigned_grid(in.data, args.in.grid(io::MaterialSource::array), args.input);
+  });
+  options.boundary.frozen = cut_nodes(in);
+  options.progress = comm.rank() == 0 ? cli::terminal_progress(common) : nullptr;
+  times.emplace_back("read", clock.seconds());
+  clock.restart();
+  AnyAdaptResult result;
+  cli::on_every_rank(comm, app, [&] { result = adapt(grid, options); });
+  const double adapt_seconds = clock.seconds();
+  times.emplace_back("adapt", adapt_seconds);
+
+  const auto axis = static_cast<std::size_t>(in.shape.dim - 1);
+  const index_t plane = in.slab.block.held_nodes / (in.slab.held[axis] + 1);
+  const bool last = comm.rank() + 1 == comm.size();
+  const index_t top = in.slab.block.held_nodes - plane;  // the top cut: owned by the rank above
+  std::vector<double> figures;
+  std::vector<std::int64_t> bad;
+  Json failures;
+  io::MeshData piece;
+  std::visit(
+      [&](const auto& r) {
+        figures = rank_figures(r, grid.fractions.n_cells(), top, last ? 0 : plane, adapt_seconds);
+        for (CellId c : r.bad_input_cells) bad.push_back(in.slab.block.global(c));
+        failures = rank_failures(comm, r.failures, r.mesh.n_cells(), options.threshold);
+        if (!r.stopped_bad_input) piece = adapt_mesh_data(r, grid.names());
+      },
+      result);
+  result = AnyAdaptResult();
+  bad = dist::all_gather_values(comm, bad);
+  Json per_rank;
+  const Json combined = combined_result(dist::all_gather_values(comm, figures), per_rank);
+  Json report = cli::report_header(app);
+  report["input"] = args.input;
+  report["output"] = common.output;
+  report["method"] = to_string(options.method);
+  report["threshold"] = options.threshold;
+  report["min_edge"] = options.min_edge;
+  report["layers"] = to_string(options.layers);
+  report["materials"] = grid.names();
+  report["result"] = combined;
+  report["result"]["failures"] = failures;
+  if (comm.rank() != 0) {  // rank 0 writes the report and prints
+    common.json.clear();
+    common.quiet = true;
+  }
+  if (!bad.empty()) {
+    std::sort(bad.begin(), bad.end());
+    report["ranks"] = cli::ranks_json(comm, in.slab);
+    if (comm.rank() != 0) return cli::target_missed;
+    log_warning(std::to_string(bad.size()) + " input cells fail the threshold " +
+                std::to_string(options.threshold) +
+                " or the size criterion: nothing written (--allow-bad-input runs anyway)");
+    report["bad_input_cells"] = bad;
+    report["threshold_met"] = false;
+    report["exit_code"] = cli::target_missed;
+    report["times"] = cli::phase_times_json(times);
+    cli::write_report(common, report);
+    return cli::target_missed;
+  }
+  clock.restart();
+  for (auto& kv : cli::provenance(app)) piece.metadata.push_back(kv);
+  cli::pass_input_record(in.data, piece);
+  if (args.gather && !last) cli::drop_next_piece_nodes(piece, top, plane);
+  cli::write_disjoint_pieces(comm, app, piece, common.output, args.gather, common.write_options(),
+                             common.memory_limit());
+  times.emplace_back("write", clock.seconds());
+  report["ranks"] = cli::ranks_json(comm, in.slab);
+  report["ranks"].update(per_rank);
+  const auto below = combined["cells_below_threshold"].get<std::int64_t>() +
+                     combined["cells_below_min_edge"].get<std::int64_t>();
+  report["threshold_met"] = below == 0;
+  report["exit_code"] = below == 0 ? cli::ok : cli::target_missed;
+  report["times"] = cli::phase_times_json(times);
+  cli::write_report(common, report);
+  const auto n_blocked = combined["blocked_nodes"].get<std::int64_t>();
+  if (n_blocked > 0 && comm.rank() == 0)
+    log_warning(std::to_string(n_blocked) + " of " +
+                std::to_string(combined["interface_nodes"].get<std::int64_t>()) +
+                " interface nodes ended off their interface, " +
+                std::to_string(combined["frozen_blocked_nodes"].get<std::int64_t>()) +
+                " of them on the cuts between ranks (frozen there)");
+  if (below > 0) {
+    if (comm.rank() == 0)
+      log_warning(std::to_string(below) + " output cells fail the threshold " +
+                  std::to_string(options.threshold) + " or the size criterion\\nmesh written to " +
+                  common.output);
+    return cli::target_missed;
+  }
+  return cli::ok;
+}
+
 // The input, the method, the guarantee and the controlled move.
 void add_method_options(CLI::App& app, Args& args) {
   app.add_option("input", args.input, "Assigned grid (.vtu, .vtk, ...)")->required();
@@ -487,5 +762,11 @@ int main(int argc, char** argv) {
   cli::add_input_options(app, args.in);
   cli::add_common_options(app, common);
   cli::add_write_options(app, common);
-  return cli::run(app, argc, argv, common, [&] { return run_adapt(app, args, common); });
+  app.add_flag("--gather", args.gather,
+               "Under mpirun on several ranks: write one file of the whole mesh (any format) "
+               "instead of a .vtu piece per rank and the .pvtu naming them");
+  return cli::run_on_ranks(app, argc, argv, common, [&](const dist::Communicator& comm) {
+    return comm.size() > 1 ? run_adapt_on_ranks(app, args, common, comm)
+                           : run_adapt(app, args, common);
+  });
 }

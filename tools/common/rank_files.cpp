@@ -225,6 +225,27 @@ void check_rank_output(const std::string& flag, const std::string& path, bool ga
                     (structured ? "grid" : "mesh"));
 }
 
+void drop_next_piece_nodes(io::MeshData& piece, index_t first, index_t count) {
+  const auto n = static_cast<index_t>(piece.points.size());
+  if (first < 0 || count < 0 || first + count > n)
+    throw InternalError("drop_next_piece_nodes: nodes out of the piece");
+  const index_t kept = n - count;
+  const auto renumbered = [&](index_t v) {
+    if (v < first) return v;
+    return v < first + count ? kept + v - first : v - count;
+  };
+  for (NodeId& v : piece.cells) v = NodeId(renumbered(v.value()));
+  const auto drop = [&](auto& values, std::size_t width) {
+    const auto at = [&](index_t k) {
+      return values.begin() + static_cast<std::ptrdiff_t>(width * static_cast<std::size_t>(k));
+    };
+    values.erase(at(first), at(first + count));
+  };
+  drop(piece.points, 1);
+  for (io::DataArray& a : piece.point_data)
+    drop(a.values, static_cast<std::size_t>(a.n_components));
+}
+
 void write_disjoint_pieces(const dist::Communicator& comm, const CLI::App& app,
                            const io::MeshData& piece, const std::string& path, bool gather,
                            const io::WriteOptions& options, double memory_limit) {

@@ -44,8 +44,15 @@ void write_on_ranks(const dist::Communicator& comm, const CLI::App& app, io::Mes
                     const RankInput& input, const std::string& path, bool gather,
                     const io::WriteOptions& options, double memory_limit);
 
+/// Makes `piece` fit write_disjoint_pieces' gathering when its nodes [first, first + count) are
+/// the first `count` nodes of the next rank's piece, in the same order (a slab's top node
+/// layer, which the rank above owns): drops them, and its cells name them by the ids past its
+/// own points that the next piece's first nodes take in the gathered mesh.
+void drop_next_piece_nodes(io::MeshData& piece, index_t first, index_t count);
+
 /// Writes every rank's `piece`, the part of one unstructured mesh whose cells the rank owns (no
-/// point shared with another piece, the whole being the pieces in rank order), to `path`: a
+/// point shared with another piece but as drop_next_piece_nodes leaves them, the whole being
+/// the pieces in rank order), to `path`: a
 /// .pvtu naming one .vtu per rank that has cells, or with `gather` one file written by
 /// rank 0 with the bytes of one process writing the whole mesh (checked against
 /// `memory_limit` as write_on_ranks does). Errors are common to every rank.

@@ -72,6 +72,8 @@ void check_options(const AdaptOptions& o) {
       !(o.targets.volume_tolerance >= 0))
     throw OptionError("volume_sweeps, volume_max_shift and volume_tolerance must be >= 0");
   check_options(o.correction);
+  if (o.method == AdaptMethod::base && !o.boundary.frozen.empty())
+    throw OptionError("frozen nodes are held by the guaranteed method only");
 }
 
 // The model's facets must name materials of the fractions.
@@ -128,6 +130,10 @@ AdaptResult<M> adapt(const M& grid, const Fractions& fractions, const CellMateri
                      const AdaptOptions& options, const reconstruct::InterfaceModel* model) {
   check_options(options);
   check_model(model, M::dim, fractions.n_materials());
+  const std::size_t frozen = options.boundary.frozen.size();
+  if (frozen != 0 && frozen != static_cast<std::size_t>(grid.n_nodes()))
+    throw OptionError("{boundary.frozen} has " + std::to_string(frozen) + " flags for a grid of " +
+                      std::to_string(grid.n_nodes()) + " nodes");
   const UnitFrame frame = unit_frame(grid);
   std::optional<reconstruct::InterfaceModel> local_model;
   if (model) {

@@ -25,7 +25,8 @@ io::MeshData adapt_mesh_data(const AdaptResult<M>& result,
   data.set_point_array(std::move(distance));
   data.set_point_array(
       {"surface_distance", 1, io::ScalarType::float64, result.surface_distance.raw()});
-  // Why a node is short of its target (BlockReason: 0 none, 1 quality of the cells around).
+  // Why a node is short of its target (BlockReason: 0 none, 1 quality of the cells around,
+  // 2 and no cavity, 3 frozen).
   io::DataArray blocked{"blocked", 1, io::ScalarType::int32, {}};
   for (NodeId v : id_range<NodeId>(result.mesh.n_nodes()))
     blocked.values.push_back(result.blocked.empty() ? 0 : result.blocked[v]);

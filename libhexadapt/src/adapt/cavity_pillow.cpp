@@ -123,6 +123,17 @@ class SeedSet {
   std::size_t first_ = 0;
 };
 
+// True when a cell of the set has a frozen node.
+template <class M>
+bool touches_frozen(const EditableMesh<M>& mesh, const std::vector<CellId>& set,
+                    const BoundaryOptions& boundary) {
+  if (boundary.frozen.empty()) return false;
+  for (CellId c : set)
+    for (NodeId v : mesh.cell_nodes(c))
+      if (boundary.is_frozen(v)) return true;
+  return false;
+}
+
 // The patch of the set; the whole mesh when asked, or when the ring around the set cannot
 // be a mesh of its own (a 2D ring pinched at a node).
 template <class M>
@@ -152,8 +163,10 @@ TriedCavity<M> try_cavity(const CavityPatch<M>& patch, const SizeCriterion& size
                           const StepSettings& o) {
   const M& mesh = patch.mesh;
   const IdVector<CellId, char>& set = patch.in_set;
+  // The patch numbers its nodes its own way; the cavity touches no frozen node (cavity_pillow).
+  const BoundaryOptions boundary = o.boundary.without_frozen();
   TriedCavity<M> t{
-      pillow_cells(mesh, set, boundary_constraints(mesh, o.boundary), o.pillow, size), {}, 1};
+      pillow_cells(mesh, set, boundary_constraints(mesh, boundary), o.pillow, size), {}, 1};
   t.size = size.remapped(t.pillowed.cell_origin.raw());
   const M& pm = t.pillowed.mesh;
   auto in_cavity = [&](CellId c) { return c.value() >= mesh.n_cells() || set[c] != 0; };
@@ -162,7 +175,7 @@ TriedCavity<M> try_cavity(const CavityPatch<M>& patch, const SizeCriterion& size
     const auto cells = pm.node_cells(n);
     movable[n] = !cells.empty() && std::all_of(cells.begin(), cells.end(), in_cavity);
   }
-  smooth(t.pillowed.mesh, movable, boundary_constraints(pm, o.boundary), o.smooth, nullptr, t.size);
+  smooth(t.pillowed.mesh, movable, boundary_constraints(pm, boundary), o.smooth, nullptr, t.size);
   for (CellId c : id_range<CellId>(pm.n_cells()))
     if (in_cavity(c)) t.worst = std::min(t.worst, cell_score(pm, c, t.size));
   return t;
@@ -233,7 +246,10 @@ CavityResult<M> cavity_pillow(const M& mesh, const CellMaterials& material, int 
       a.cells = static_cast<index_t>(set.size());
       CavityPatch<M> patch = patch_of(work, set, options.whole_mesh);
       std::optional<TriedCavity<M>> tried;
-      for (bool whole = options.whole_mesh;; whole = true) {
+      // A cavity around a frozen node would change faces that must stay the input's: it
+      // fails, and its seeds shrink it.
+      for (bool whole = options.whole_mesh; !touches_frozen(work, set, shared.boundary);
+           whole = true) {
         try {
           tried.emplace(try_cavity(
               patch, size.remapped(patch_origin(r.cell_origin.raw(), patch.cells)), shared));

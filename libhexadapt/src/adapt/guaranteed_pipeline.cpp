@@ -14,6 +14,7 @@
 #include "guaranteed_pipeline.h"
 
 #include <algorithm>
+#include <optional>
 #include <string>
 
 #include "hexadapt/adapt/local_topology.h"
@@ -490,6 +491,57 @@ AdaptResult<M> first_layer(const M& grid, const CellMaterials& material, const T
   return finish(std::move(r));
 }
 
+// Where the frozen nodes would go: the targets without the freeze (none when nothing is
+// frozen). The run's own targets put each frozen node on itself, so that no step moves it.
+template <class M>
+std::optional<Targets> frozen_aims(const M& grid, const Fractions& fractions,
+                                   const CellMaterials& material, const AdaptOptions& options) {
+  if (options.boundary.frozen.empty()) return std::nullopt;
+  return compute_targets(grid, fractions, material,
+                         boundary_constraints(grid, options.boundary.without_frozen()),
+                         options.targets);
+}
+
+// Counts the frozen nodes against their aims: a frozen interface node off its interface is
+// blocked (BlockReason::frozen) and its distances are the ones it would have had to go.
+template <class M>
+void account_frozen(AdaptResult<M>& r, const M& grid, const Targets& aims,
+                    const AdaptOptions& options) {
+  const auto free_boundary = boundary_constraints(grid, options.boundary.without_frozen());
+  SizeCriterion size;
+  size.local_size = std::move(r.local_size);
+  for (NodeId v : id_range<NodeId>(grid.n_nodes())) {
+    if (!options.boundary.is_frozen(v) || !aims.has[v]) continue;
+    // A grid node no step moved: its target in the run was its own position.
+    const Vec3 p = r.mesh.point(v);
+    NodeConstraint surface = free_boundary[v];
+    surface.add(aims.interface[v]);
+    const double d = (p - aims.position[v]).norm();
+    const double sd = surface_distance(p, aims.position[v], surface);
+    r.target[v] = aims.position[v];
+    r.distance[v] = d;
+    r.surface_distance[v] = sd;
+    r.dist_init += d;
+    r.dist_final += d;
+    r.surface_dist_init += sd;
+    r.surface_dist_final += sd;
+    r.n_reached -= d != 0;
+    const double h = node_local_size(r.mesh, v, size);
+    if (sd <= options.near_interface * h) continue;
+    r.near_interface[v] = 0;
+    --r.n_near_interface;
+    r.blocked[v] = static_cast<char>(BlockReason::frozen);
+    ++r.n_blocked;
+    ++r.n_frozen_blocked;
+    if (sd > r.farthest_distance) {
+      r.farthest = v;
+      r.farthest_distance = sd;
+      r.farthest_local_size = h;
+    }
+  }
+  r.local_size = std::move(size.local_size);
+}
+
 // The options as the steps take them: no smoothing sinks a cell below the threshold.
 AdaptOptions with_shared_settings(AdaptOptions o) {
   o.smooth.floor = o.threshold;
@@ -526,6 +578,7 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
 
   const auto grid_boundary = boundary_constraints(mesh, options.boundary);
   Targets targets = compute_targets(mesh, fractions, material, grid_boundary, options.targets);
+  const std::optional<Targets> aims = frozen_aims(mesh, fractions, material, options);
   r.n_interface_nodes = targets.n_interface_nodes;
   record_step(r, mesh, "targets", clock, options.progress, 0.1, "layers");
   correct(mesh, material, grid_boundary, targets, model, r, clock, options);
@@ -566,6 +619,7 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
         options.layers == LayerStrategy::automatic ? LayerStrategy::cavities : options.layers, r,
         layers);
   }
+  if (aims) account_frozen(r, grid, *aims, options);
   if (good_input && (r.n_below_threshold > 0 || r.n_below_min_edge > 0))
     throw InternalError("guaranteed pipeline left " + std::to_string(r.n_below_threshold) +
                         " cells below the threshold " + std::to_string(options.threshold) +

@@ -66,6 +66,24 @@ Attempt<M> try_pillow(const M& mesh, const IdVector<CellId, char>& set,
 
 // Takes out of the set the cells within vertex distance `range` of the failing origins
 // (breadth first). Returns how many left.
+// Takes the cells around frozen nodes out of the set (their faces must stay the input's);
+// returns how many were in it.
+template <class M>
+index_t leave_out_frozen(const M& mesh, const BoundaryOptions& boundary,
+                         IdVector<CellId, char>& set) {
+  if (boundary.frozen.empty()) return 0;
+  index_t removed = 0;
+  for (CellId c : id_range<CellId>(mesh.n_cells())) {
+    if (!set[c]) continue;
+    const auto nodes = mesh.cell_nodes(c);
+    if (std::none_of(nodes.begin(), nodes.end(), [&](NodeId v) { return boundary.is_frozen(v); }))
+      continue;
+    set[c] = 0;
+    ++removed;
+  }
+  return removed;
+}
+
 template <class M>
 index_t carve(const M& mesh, const std::vector<CellId>& origins, int range,
               IdVector<CellId, char>& set) {
@@ -197,6 +215,7 @@ InterfacePillowResult<M> pillow_interfaces(const M& mesh, const CellMaterials& m
         ++log.left_out;
         ++log.sheet_cells;
       }
+    log.left_out += leave_out_frozen(r.mesh, shared.boundary, set);
     while (log.rounds < options.rounds && std::find(set.begin(), set.end(), 1) != set.end()) {
       ++log.rounds;
       std::optional<Attempt<M>> tried;

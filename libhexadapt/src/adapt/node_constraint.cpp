@@ -28,9 +28,11 @@ void NodeConstraint::add(const Vec3& direction) {
 
 void NodeConstraint::add(const NodeConstraint& other) {
   for (int k = 0; k < other.n_normals(); ++k) add(other.normal(k));
+  frozen_ = frozen_ || other.frozen_;
 }
 
 Vec3 NodeConstraint::project(const Vec3& displacement) const {
+  if (frozen_) return Vec3::Zero();
   Vec3 d = displacement;
   for (int k = 0; k < n_; ++k) d -= d.dot(normal(k)) * normal(k);
   return d;
@@ -62,8 +64,10 @@ IdVector<NodeId, NodeConstraint> boundary_constraints(const M& mesh,
       }
     }
   IdVector<NodeId, NodeConstraint> out(static_cast<std::size_t>(mesh.n_nodes()));
-  for (NodeId v : id_range<NodeId>(mesh.n_nodes()))
+  for (NodeId v : id_range<NodeId>(mesh.n_nodes())) {
     for (const Vec3& s : clusters[v]) out[v].add(s);
+    if (options.is_frozen(v)) out[v].freeze();
+  }
   return out;
 }
 

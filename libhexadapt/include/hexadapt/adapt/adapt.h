@@ -121,6 +121,7 @@ enum class BlockReason : char {
   none = 0,
   quality = 1,  ///< a further step would put a cell around it below the threshold
   cavity = 2,   ///< and a cavity around it (for one of its materials) failed at every range
+  frozen = 3,   ///< a frozen node (BoundaryOptions::frozen), held where it is
 };
 
 /// The cavities pillowed at the end of a run around the nodes still short of their targets
@@ -177,7 +178,8 @@ struct AdaptResult {
   bool stopped_bad_input = false;       ///< true: nothing was done (see bad_input_cells)
   double input_min_quality = 1;         ///< of the input grid
   IdVector<NodeId, char> blocked;       ///< BlockReason per node (all none for base)
-  index_t n_blocked = 0;  ///< interface nodes farther than near_interface from their surface
+  index_t n_blocked = 0;         ///< interface nodes farther than near_interface from their surface
+  index_t n_frozen_blocked = 0;  ///< of those, frozen nodes (BlockReason::frozen)
   /// The worst cells next to blocked nodes, lowest quality first (at most 10).
   std::vector<std::pair<CellId, double>> blocking_cells;
   int loops = 0;                                   ///< move-smooth rounds run

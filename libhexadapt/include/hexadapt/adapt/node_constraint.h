@@ -3,9 +3,10 @@
 // A constraint is a set of up to three orthonormal normals; an allowed displacement has no
 // component along any of them. No normal: free; one: slides on a plane (2D: on a line, since
 // 2D points keep their z); two in 3D: slides along a line (a box edge, a triple curve);
-// `dim` normals: fixed. The domain boundary is found from the kernel (faces with no cell
-// across), never from a bounding box, so jittered and unstructured grids work (paper sec. 5,
-// DESIGN 4.3: "domain-boundary nodes stay on the boundary").
+// `dim` normals: fixed. A frozen node is fixed whatever its normals, which still say where it
+// lies (a rank border on its plane, an interface). The domain boundary is found from the kernel
+// (faces with no cell across), never from a bounding box, so jittered and unstructured grids work
+// (paper sec. 5, DESIGN 4.3: "domain-boundary nodes stay on the boundary").
 #pragma once
 
 #include <array>
@@ -20,27 +21,44 @@ class NodeConstraint {
   int n_normals() const { return n_; }
   const Vec3& normal(int k) const { return normals_[static_cast<std::size_t>(k)]; }
   /// True when every displacement is forbidden in a `dim`-dimensional mesh.
-  bool fixed(int dim) const { return n_ >= dim; }
+  bool fixed(int dim) const { return frozen_ || n_ >= dim; }
+  /// Forbids every displacement, the normals kept.
+  void freeze() { frozen_ = true; }
+  bool frozen() const { return frozen_; }
   /// Adds the direction unless it is (nearly) spanned by the normals already held.
   void add(const Vec3& direction);
-  /// Adds every normal of `other`.
+  /// Adds every normal of `other`, frozen when it is.
   void add(const NodeConstraint& other);
-  /// The displacement with its components along the normals removed.
+  /// The displacement with its components along the normals removed (zero when frozen).
   Vec3 project(const Vec3& displacement) const;
 
  private:
   std::array<Vec3, 3> normals_;
   int n_ = 0;
+  bool frozen_ = false;
 };
 
 struct BoundaryOptions {
   /// Two boundary faces at a node whose normals differ by more than this angle (degrees)
   /// make a feature: the node keeps to the edge (or corner) between them.
   double feature_angle = 35.0;
+  /// The input nodes that never move (1), by input node id; empty: none. A part of a grid
+  /// adapted on its own, as one rank's, freezes the nodes it shares with the other parts, so
+  /// that the parts' faces there stay the input's and the parts fit together. The cells around
+  /// a frozen node are never pillowed (guaranteed method only).
+  IdVector<NodeId, char> frozen;
+
+  /// The same options without frozen nodes (for a patch of the mesh with its own node ids).
+  BoundaryOptions without_frozen() const {
+    BoundaryOptions out;
+    out.feature_angle = feature_angle;
+    return out;
+  }
+  bool is_frozen(NodeId v) const { return v.idx() < frozen.size() && frozen[v] != 0; }
 };
 
 /// The boundary constraint of every node: free inside, on its plane on a boundary face, on
-/// the edge line on a feature edge, fixed at a corner.
+/// the edge line on a feature edge, fixed at a corner; options.frozen nodes frozen.
 template <class M>
 IdVector<NodeId, NodeConstraint> boundary_constraints(const M& mesh,
                                                       const BoundaryOptions& options = {});

@@ -1,0 +1,146 @@
+// Parts of a grid adapted each on its own, with the nodes they share frozen, fit together into
+// one conformal mesh: what every rank's slab does under MPI.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "adapt/adapt_cases.h"
+#include "adapt/generated_case.h"
+#include "hexadapt/adapt/adapt.h"
+#include "hexadapt/mesh/mesh_check.h"
+#include "hexadapt/quality/scaled_jacobian.h"
+
+namespace hexadapt {
+namespace {
+
+// Layers [k0, k1) of a structured nx x ny x nz grid (cell (i, j, k) is i + nx (j + ny k)), with
+// their fractions and materials; the nodes of a cut plane (k0 > 0, k1 < nz) frozen.
+struct Part {
+  HexMesh grid;
+  Fractions fractions;
+  CellMaterials material;
+  index_t node_offset = 0;
+  index_t plane = 0;  // nodes per node layer
+  IdVector<NodeId, char> frozen;
+};
+
+Part part_of(const HexMesh& grid, const Fractions& f, const CellMaterials& m, int nx, int ny,
+             int nz, int k0, int k1) {
+  Part p;
+  p.plane = (nx + 1) * (ny + 1);
+  p.node_offset = k0 * p.plane;
+  const index_t c0 = k0 * nx * ny, c1 = k1 * nx * ny;
+  std::vector<Vec3> points;
+  for (index_t v = p.node_offset; v < (k1 + 1) * p.plane; ++v)
+    points.push_back(grid.point(NodeId(v)));
+  std::vector<HexMesh::CellNodes> cells;
+  p.fractions = Fractions(c1 - c0, f.names());
+  for (index_t c = c0; c < c1; ++c) {
+    HexMesh::CellNodes nodes = grid.cell_nodes(CellId(c));
+    for (NodeId& v : nodes) v = NodeId(v.value() - p.node_offset);
+    cells.push_back(nodes);
+    for (int k = 0; k < f.n_materials(); ++k) p.fractions(CellId(c - c0), k) = f(CellId(c), k);
+    p.material.push_back(m[CellId(c)]);
+  }
+  p.grid = HexMesh(std::move(points), std::move(cells));
+  p.frozen.assign(static_cast<std::size_t>(p.grid.n_nodes()), 0);
+  for (index_t v = 0; v < p.plane; ++v) {
+    if (k0 > 0) p.frozen[NodeId(v)] = 1;
+    if (k1 < nz) p.frozen[NodeId(p.grid.n_nodes() - 1 - v)] = 1;
+  }
+  return p;
+}
+
+// The two parts' meshes as one: the upper part's bottom node layer is the lower part's top one.
+HexMesh stitched(const Part& low, const HexMesh& a, const Part& high, const HexMesh& b) {
+  std::vector<Vec3> points;
+  for (NodeId v : id_range<NodeId>(a.n_nodes())) points.push_back(a.point(v));
+  const index_t shared_first = high.node_offset - low.node_offset;
+  std::vector<index_t> to(static_cast<std::size_t>(b.n_nodes()));
+  for (NodeId v : id_range<NodeId>(b.n_nodes())) {
+    if (v.value() < high.plane) {
+      to[v.idx()] = shared_first + v.value();
+      EXPECT_EQ(b.point(v), a.point(NodeId(to[v.idx()]))) << "a frozen node moved";
+      continue;
+    }
+    to[v.idx()] = static_cast<index_t>(points.size());
+    points.push_back(b.point(v));
+  }
+  std::vector<HexMesh::CellNodes> cells;
+  for (CellId c : id_range<CellId>(a.n_cells())) cells.push_back(a.cell_nodes(c));
+  for (CellId c : id_range<CellId>(b.n_cells())) {
+    HexMesh::CellNodes nodes = b.cell_nodes(c);
+    for (NodeId& v : nodes) v = NodeId(to[v.idx()]);
+    cells.push_back(nodes);
+  }
+  return HexMesh(std::move(points), std::move(cells));
+}
+
+AdaptOptions frozen_options(const Part& p) {
+  AdaptOptions o;
+  o.boundary.frozen = p.frozen;
+  return o;
+}
+
+// The asteroid at 20^3 cut at layer 9: each half adapted with the cut plane frozen keeps the
+// guarantee, its frozen nodes where they were, and the halves make one conformal ball (every
+// face of one or two cells, no duplicate or hanging node). The frozen interface nodes off
+// their surface are counted as blocked, with their own reason, against their free targets.
+TEST(FrozenNodes, PartsAdaptedAloneFitTogether) {
+  test::with_generated_case({"asteroid", {20, 20, 20}}, [](const auto& grid, const Fractions& f,
+                                                           const IdVector<CellId, int>& m) {
+    if constexpr (std::is_same_v<std::decay_t<decltype(grid)>, HexMesh>) {
+      const Part low = part_of(grid, f, m, 20, 20, 20, 0, 9);
+      const Part high = part_of(grid, f, m, 20, 20, 20, 9, 20);
+      const auto a = adapt(low.grid, low.fractions, low.material, frozen_options(low));
+      const auto b = adapt(high.grid, high.fractions, high.material, frozen_options(high));
+      index_t frozen_blocked = 0;
+      for (const auto* r : {&a, &b}) {
+        ASSERT_FALSE(r->stopped_bad_input);
+        EXPECT_EQ(r->n_below_threshold + r->n_below_min_edge, 0);
+        EXPECT_GE(min_quality(r->mesh), 0.3);
+        EXPECT_GT(r->n_interface_layer_cells, 0);
+        index_t marked = 0;
+        for (char why : r->blocked) marked += why == static_cast<char>(BlockReason::frozen);
+        EXPECT_EQ(marked, r->n_frozen_blocked);
+        frozen_blocked += r->n_frozen_blocked;
+      }
+      EXPECT_GT(frozen_blocked, 0);
+      for (index_t v = 0; v < high.plane; ++v) {
+        const NodeId top(low.grid.n_nodes() - high.plane + v);
+        EXPECT_EQ(a.mesh.point(top), low.grid.point(top));
+        if (a.has_target[top] && a.blocked[top] == static_cast<char>(BlockReason::frozen)) {
+          EXPECT_GT(a.distance[top], 0);
+        }
+      }
+      const HexMesh whole = stitched(low, a.mesh, high, b.mesh);
+      EXPECT_EQ(whole.n_cells(), a.mesh.n_cells() + b.mesh.n_cells());
+      test::check_conformal_ball(whole);
+      const MeshCheckResult check = check_mesh(whole);
+      EXPECT_TRUE(check.ok()) << "hanging " << check.hanging_nodes << " duplicate "
+                              << check.duplicate_nodes << " nonmanifold "
+                              << check.nonmanifold_nodes;
+    }
+  });
+}
+
+// Frozen nodes are the guaranteed method's; a mask that is not one flag per node is refused.
+TEST(FrozenNodes, RejectsBadMasks) {
+  const HexMesh grid = make_hex_grid(2, 2, 2);
+  Fractions f(grid.n_cells(), {"a", "b"});
+  for (CellId c : id_range<CellId>(grid.n_cells())) f(c, 0) = 1;
+  const CellMaterials m(static_cast<std::size_t>(grid.n_cells()), 0);
+  AdaptOptions o;
+  o.boundary.frozen.assign(3, 1);
+  EXPECT_THROW(adapt(grid, f, m, o), OptionError);
+  o.boundary.frozen.assign(static_cast<std::size_t>(grid.n_nodes()), 1);
+  o.method = AdaptMethod::base;
+  EXPECT_THROW(adapt(grid, f, m, o), OptionError);
+  o.method = AdaptMethod::guaranteed;
+  const auto r = adapt(grid, f, m, o);
+  for (NodeId v : id_range<NodeId>(grid.n_nodes())) EXPECT_EQ(r.mesh.point(v), grid.point(v));
+}
+
+}  // namespace
+}  // namespace hexadapt
