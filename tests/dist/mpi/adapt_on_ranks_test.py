@@ -1,0 +1,196 @@
+#!/usr/bin/python3
+"""hexadapt-adapt under mpirun on 2 and 3 ranks, on the asteroid (a true 3D case) and on the
+.pvts of hexadapt-assign on ranks: every rank's slab adapted with its cuts frozen makes one
+mesh, checked with VTK on its own: its pieces fit (once their coincident points are merged,
+every face of one or two cells and the faces of one cell all on the domain's box), every cell
+keeps the scaled Jacobian threshold (vtkMeshQuality), the nodes of the cuts are where the
+input has them; --gather writes that mesh as one file, the same bytes at every run; what runs
+on one process only, bad input cells and a missing piece stop every rank with one message.
+
+usage: adapt_on_ranks_test.py TOOLS_DIR WORK_DIR MPIEXEC
+"""
+import filecmp
+import json
+import os
+import sys
+from collections import Counter
+
+import numpy as np
+import vtk
+from vtk.util import numpy_support as ns
+
+from tool_runs import ToolRuns
+
+RUNS = ToolRuns(*sys.argv[1:4])
+check, path, run = RUNS.check, RUNS.path, RUNS.run
+
+N = (14, 14, 16)  # cells per axis; the cuts run across z
+
+
+def read(name):
+    reader = (vtk.vtkXMLPUnstructuredGridReader() if name.endswith(".pvtu")
+              else vtk.vtkXMLUnstructuredGridReader())
+    reader.SetFileName(path(name))
+    reader.Update()
+    return reader.GetOutput()
+
+
+def merged(mesh):
+    """The points and hexes of the mesh with its coincident points merged (the pieces' shared
+    nodes)."""
+    p = ns.vtk_to_numpy(mesh.GetPoints().GetData())
+    conn = ns.vtk_to_numpy(mesh.GetCells().GetConnectivityArray()).reshape(-1, 8)
+    points, inverse = np.unique(p, axis=0, return_inverse=True)
+    return points, inverse.reshape(-1)[conn]
+
+
+def faces_of_one_cell(conn):
+    """Fails on a face of more than two cells; returns the faces of one cell (point ids)."""
+    local = ((0, 1, 2, 3), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7))
+    count = Counter(tuple(sorted(c[list(f)])) for c in conn for f in local)
+    check(max(count.values()) <= 2, "a face of more than two cells")
+    return [f for f, n in count.items() if n == 1]
+
+
+def check_one_mesh(name, label, threshold=0.3):
+    """The pieces (or the one file) in `name` make one conformal mesh over the box of N
+    whose every cell keeps the threshold. Returns its merged points and hexes."""
+    mesh = read(name)
+    p, conn = merged(mesh)
+    lo, hi = p.min(axis=0), p.max(axis=0)
+    on_box = np.isclose(p, lo).any(axis=1) | np.isclose(p, hi).any(axis=1)
+    open_faces = [f for f in faces_of_one_cell(conn) if not all(on_box[list(f)])]
+    check(not open_faces, "%s: %d faces of one cell inside the domain (the pieces do not fit)"
+          % (label, len(open_faces)))
+    quality = vtk.vtkMeshQuality()
+    quality.SetInputData(mesh)
+    quality.SetHexQualityMeasureToScaledJacobian()
+    quality.Update()
+    q = ns.vtk_to_numpy(quality.GetOutput().GetCellData().GetArray("Quality"))
+    check(q.min() >= threshold - 1e-9, "%s: a cell at scaled Jacobian %g" % (label, q.min()))
+    return p, conn
+
+
+def report(folder):
+    with open(path(folder, "out.json")) as f:
+        return json.load(f)
+
+
+def input_points():
+    r = vtk.vtkXMLStructuredGridReader()
+    r.SetFileName(path("assigned.vts"))
+    r.Update()
+    return ns.vtk_to_numpy(r.GetOutput().GetPoints().GetData()).reshape(N[2] + 1, -1, 3)
+
+
+code, err = run("generate", ".", 0, "asteroid", "--dims", ",".join(map(str, N)), "-o", "vf.vts")
+check(code == 0, "generate exits %d: %s" % (code, err))
+code, err = run("assign", ".", 0, "vf.vts", "-o", "assigned.vts")
+check(code == 0, "assign exits %d: %s" % (code, err))
+code, err = run("adapt", "serial", 0, "../assigned.vts", "-o", "out.vtu", "--json", "out.json")
+check(code == 0, "adapt on one process exits %d: %s" % (code, err))
+serial = report("serial")["result"]
+grid_points = input_points()
+
+for ranks in (2, 3):
+    folder = "pieces_%d" % ranks
+    code, err = run("adapt", folder, ranks, "../assigned.vts", "-o", "out.pvtu", "--json",
+                    "out.json")
+    check(code == 0, "adapt on %d ranks exits %d: %s" % (ranks, code, err))
+    check(sorted(f for f in os.listdir(path(folder)) if f.startswith("out_")) ==
+          ["out_%d.vtu" % r for r in range(ranks)], "%d ranks: not one piece per rank" % ranks)
+    points, hexes = check_one_mesh(folder + "/out.pvtu", "%d ranks" % ranks)
+    r = report(folder)
+    res, on = r["result"], r["ranks"]
+    check(res["cells"] == len(hexes) and res["nodes"] == len(points),
+          "%d ranks: the report's %d cells, %d nodes; the pieces' %d, %d" % (
+              ranks, res["cells"], res["nodes"], len(hexes), len(points)))
+    check(res["cells_below_threshold"] == 0 and res["min_quality"] >= 0.3
+          and res["cells_in"] == N[0] * N[1] * N[2],
+          "%d ranks: the report's figures %r" % (ranks, res))
+    check(on["count"] == ranks and len(on["cells"]) == ranks and sum(on["cells"]) == res["cells"]
+          and sum(on["interface_nodes"]) == res["interface_nodes"],
+          "%d ranks: the ranks block %r" % (ranks, on))
+    # Within what the frozen cuts cost: their own interface nodes, and a few beside them.
+    check(res["interface_nodes"] > 0.9 * serial["interface_nodes"]
+          and res["near_interface"] >= res["interface_nodes"] - 3 * res["frozen_blocked_nodes"]
+          - 10, "%d ranks: %r near of %r (serial %r of %r)" % (
+              ranks, res["near_interface"], res["interface_nodes"], serial["near_interface"],
+              serial["interface_nodes"]))
+    # The nodes of every cut are the input's, in both pieces beside it.
+    for rank, (first, _) in enumerate(on["layers"]):
+        if rank == 0:
+            continue
+        cut = grid_points[first]
+        for side in (rank - 1, rank):
+            piece = read("%s/out_%d.vtu" % (folder, side))
+            p = ns.vtk_to_numpy(piece.GetPoints().GetData())
+            found = {tuple(x) for x in p}
+            missing = sum(tuple(x) not in found for x in cut)
+            check(missing == 0, "%d ranks: %d nodes of the cut at layer %d moved in piece %d"
+                  % (ranks, missing, first, side))
+    # --gather: the same mesh as one file, its nodes shared, the same bytes at every run.
+    for attempt in ("gather", "again"):
+        code, err = run("adapt", folder + "_" + attempt, ranks, "../assigned.vts", "-o",
+                        "out.vtu", "--gather")
+        check(code == 0, "adapt --gather on %d ranks exits %d: %s" % (ranks, code, err))
+    one = read(folder + "_gather/out.vtu")
+    check(one.GetNumberOfPoints() == res["nodes"] and one.GetNumberOfCells() == res["cells"],
+          "%d ranks: the gathered file has %d nodes and %d cells" % (
+              ranks, one.GetNumberOfPoints(), one.GetNumberOfCells()))
+    check(len(merged(one)[0]) == one.GetNumberOfPoints(),
+          "%d ranks: the gathered file repeats nodes" % ranks)
+    check_one_mesh(folder + "_gather/out.vtu", "%d ranks, gathered" % ranks)
+    check(filecmp.cmp(path(folder + "_gather", "out.vtu"), path(folder + "_again", "out.vtu"),
+                      shallow=False), "%d ranks: two runs gather different bytes" % ranks)
+    code, err = run("measure", folder, 0, "out.pvtu", "--reference", "../vf.vts")
+    check(code == 0, "measure of the %d ranks' pieces exits %d: %s" % (ranks, code, err))
+
+# The chain on ranks: assign writes .vts pieces, adapt reads its slabs of them.
+code, err = run("assign", "chain", 3, "../vf.vts", "-o", "assigned.pvts")
+check(code == 0, "assign on 3 ranks exits %d: %s" % (code, err))
+code, err = run("adapt", "chain", 3, "assigned.pvts", "-o", "out.pvtu", "--json", "out.json")
+check(code == 0, "adapt on 3 ranks of assign's pieces exits %d: %s" % (code, err))
+check_one_mesh("chain/out.pvtu", "the chain")
+
+# What runs on one process, or cannot be written as pieces: exit 1, one message.
+for args, what in ((("--method", "base"), "--method base"), (("--model", "../vf.vts"), "--model"),
+                   (("-o", "out.vtu"), ".vtu without --gather")):
+    options = ("-o", "out.pvtu") + args if args[0] != "-o" else args
+    code, err = run("adapt", "refused", 2, "../assigned.vts", *options)
+    check(code == 1 and err.count("error:") == 1,
+          "%s on 2 ranks: exit %d, %r" % (what, code, err))
+check(not os.path.exists(path("refused", "out.pvtu")), "a refused run wrote its output")
+
+# Input cells below the threshold: every rank stops, naming them as one process does.
+g = vtk.vtkXMLStructuredGridReader()
+g.SetFileName(path("assigned.vts"))
+g.Update()
+bad = g.GetOutput()
+p = ns.vtk_to_numpy(bad.GetPoints().GetData())
+nx, ny = N[0] + 1, N[1] + 1
+for k in (3, 12):  # a node pushed through its neighbour in two slabs
+    p[2 + nx * (2 + ny * k)] += 1.6 * (p[3] - p[2])
+w = vtk.vtkXMLStructuredGridWriter()
+w.SetFileName(path("bad.vts"))
+w.SetInputData(bad)
+w.Write()
+code, err = run("adapt", "bad_serial", 0, "../bad.vts", "-o", "out.vtu", "--json", "out.json")
+want = report("bad_serial").get("bad_input_cells")
+check(code == 3 and want, "bad input on one process: exit %d, %r" % (code, want))
+for ranks in (2, 3):
+    folder = "bad_%d" % ranks
+    code, err = run("adapt", folder, ranks, "../bad.vts", "-o", "out.pvtu", "--json", "out.json")
+    got = report(folder).get("bad_input_cells")
+    check(code == 3 and got == want and err.count("warning:") == 1
+          and not os.path.exists(path(folder, "out.pvtu")),
+          "bad input on %d ranks: exit %d, cells %r (one process: %r), %r" % (
+              ranks, code, got, want, err))
+
+# A missing piece: exit 2 naming it, on every rank count.
+os.remove(path("chain", "assigned_1.vts"))
+code, err = run("adapt", "chain_missing", 3, "../chain/assigned.pvts", "-o", "out.pvtu")
+check(code == 2 and "assigned_1.vts" in err and err.count("error:") == 1,
+      "a missing piece on 3 ranks: exit %d, %r" % (code, err))
+
+sys.exit(RUNS.finish())
