@@ -125,6 +125,55 @@ TEST(FrozenNodes, PartsAdaptedAloneFitTogether) {
   });
 }
 
+// Nodes frozen in a whole grid (a plane across the asteroid at 16^3) and let go afterwards:
+// resume_moves brings them onto their interface from the adapted mesh, keeps every cell
+// passing, and leaves the nodes still frozen where they were.
+TEST(FrozenNodes, LetGoTheyMoveOn) {
+  test::with_generated_case({"asteroid", {16, 16, 16}}, [](const auto& grid, const Fractions& f,
+                                                           const IdVector<CellId, int>& m) {
+    using M = std::decay_t<decltype(grid)>;
+    if constexpr (std::is_same_v<M, HexMesh>) {
+      const index_t plane = 17 * 17;
+      AdaptOptions o;
+      o.boundary.frozen.assign(static_cast<std::size_t>(grid.n_nodes()), 0);
+      for (index_t k = 0; k < plane; ++k) o.boundary.frozen[NodeId(8 * plane + k)] = 1;
+      auto r = adapt(grid, f, m, o);
+      ASSERT_GT(r.n_frozen_blocked, 0);
+      // Let the plane go but for its first row, which stays frozen.
+      Targets targets;
+      targets.has = r.has_target;
+      targets.position = r.target;
+      targets.interface = r.sliding;
+      IdVector<NodeId, NodeConstraint> sliding = r.sliding;
+      for (index_t k = 0; k < plane; ++k) {
+        const NodeId v(8 * plane + k);
+        NodeConstraint free;
+        for (int n = 0; n < sliding[v].n_normals(); ++n) free.add(sliding[v].normal(n));
+        if (k >= 17) sliding[v] = free;
+      }
+      const M before = r.mesh;
+      const SizeCriterion size{o.min_edge, r.local_size};
+      resume_moves(r.mesh, targets, sliding, size, o);
+      EXPECT_TRUE(failing_cells(r.mesh, o.threshold, size).empty());
+      index_t near_before = 0, near_after = 0, moved = 0;
+      for (index_t k = 0; k < plane; ++k) {
+        const NodeId v(8 * plane + k);
+        if (k < 17) {
+          EXPECT_EQ(r.mesh.point(v), before.point(v));
+          continue;
+        }
+        moved += r.mesh.point(v) != before.point(v);
+        if (!r.has_target[v]) continue;
+        const double h = node_local_size(r.mesh, v, size) * o.near_interface;
+        near_before += surface_distance(before.point(v), r.target[v], sliding[v]) <= h;
+        near_after += surface_distance(r.mesh.point(v), r.target[v], sliding[v]) <= h;
+      }
+      EXPECT_GT(moved, 0);
+      EXPECT_GT(near_after, near_before);
+    }
+  });
+}
+
 // Frozen nodes are the guaranteed method's; a mask that is not one flag per node is refused.
 TEST(FrozenNodes, RejectsBadMasks) {
   const HexMesh grid = make_hex_grid(2, 2, 2);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli.h"
+#include "cut_bands.h"
 #include "hexadapt/adapt/adapt.h"
 #include "hexadapt/adapt/adapt_io.h"
 #include "hexadapt/core/error.h"
@@ -329,18 +330,66 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   return cli::ok;
 }
 
-// The node layers of a rank's slab that the ranks beside it hold too (the cuts): frozen, so
-// that the slabs' meshes keep the input's faces there and fit together.
-IdVector<NodeId, char> cut_nodes(const cli::RankInput& in) {
+// The rings of cells on each side of a cut whose nodes the second pass moves on.
+constexpr int cut_rings = 4;
+
+// A rank's own layers of the grid, with what the cuts (the node layers it shares with the
+// ranks beside it) need.
+struct OwnSlab {
+  io::MeshData data;  ///< the own layers' data
+  AssignedGrid grid;
+  index_t first_cell = 0;  ///< local id of the first own cell among those read
+  index_t nodes = 0;       ///< of the own layers
+  index_t plane = 0;       ///< nodes per cut
+  bool below = false, above = false;
+  Targets top_cut;  ///< the top cut's targets from the input cells on both sides
+};
+
+// The slab's own layers from the layers read (one ghost layer on each side that has a
+// neighbour), and the targets of its top cut's nodes from the grid read, where those nodes
+// have every cell of their own.
+OwnSlab own_slab(cli::RankInput& in, const Args& args, const AdaptOptions& options) {
   const auto axis = static_cast<std::size_t>(in.shape.dim - 1);
-  const index_t n = in.slab.block.held_nodes;
-  const index_t plane = n / (in.slab.held[axis] + 1);
+  const int first = in.slab.first_layer;
+  const std::array<int, 2> owned{in.slab.owned_layers[0] - first, in.slab.owned_layers[1] - first};
+  const io::AssignedGridOptions how = args.in.grid(io::MaterialSource::array);
+  OwnSlab s;
+  s.below = in.slab.owned_layers[0] > 0;
+  s.above = in.slab.owned_layers[1] < in.shape.cells[axis];
+  if (s.above) {
+    const AssignedGrid read = io::to_assigned_grid(in.data, how, args.input);
+    std::visit(
+        [&](const auto& m) {
+          const Targets t = compute_targets(
+              m, read.fractions, read.material,
+              boundary_constraints(m, options.boundary.without_frozen()), options.targets);
+          const index_t plane = m.n_nodes() / (in.slab.held[axis] + 1);
+          for (index_t k = 0; k < plane; ++k) {
+            const NodeId v(owned[1] * plane + k);
+            s.top_cut.has.push_back(t.has[v]);
+            s.top_cut.position.push_back(t.position[v]);
+            s.top_cut.interface.push_back(t.interface[v]);
+          }
+        },
+        read.mesh);
+  }
+  s.data = std::move(in.data);
+  io::keep_layers(s.data, owned, args.input);
+  s.grid = io::to_assigned_grid(s.data, how, args.input);
+  s.first_cell = in.slab.block.owned_cell_first;
+  s.nodes = static_cast<index_t>(s.data.points.size());
+  s.plane = s.nodes / (owned[1] - owned[0] + 1);
+  return s;
+}
+
+// The cuts' nodes, frozen so that the slabs' meshes keep the input's faces there and fit
+// together.
+IdVector<NodeId, char> cut_nodes(const OwnSlab& s) {
+  const index_t n = s.nodes;
   IdVector<NodeId, char> frozen(static_cast<std::size_t>(n), 0);
-  const bool below = in.slab.first_layer > 0;
-  const bool above = in.slab.first_layer + in.slab.held[axis] < in.shape.cells[axis];
-  for (index_t k = 0; k < plane; ++k) {
-    if (below) frozen[NodeId(k)] = 1;
-    if (above) frozen[NodeId(n - plane + k)] = 1;
+  for (index_t k = 0; k < s.plane; ++k) {
+    if (s.below) frozen[NodeId(k)] = 1;
+    if (s.above) frozen[NodeId(n - s.plane + k)] = 1;
   }
   return frozen;
 }
@@ -456,6 +505,19 @@ Json combined_result(const std::vector<double>& all, Json& per_rank) {
           {"move_smooth_loops", count(loops)}};
 }
 
+// Every rank's `mine`, in rank order.
+Json all_ranks(const dist::Communicator& comm, const Json& mine) {
+  const std::string text = mine.dump();
+  dist::Buffer out;
+  out.put_vector(std::vector<char>(text.begin(), text.end()));
+  Json all = Json::array();
+  for (dist::Buffer& b : dist::all_gather(comm, out)) {
+    const std::vector<char> bytes = b.get_vector<char>();
+    all.push_back(Json::parse(bytes.begin(), bytes.end()));
+  }
+  return all;
+}
+
 // Every rank's failing cells (output ids shifted by the cells of the ranks before, as in the
 // gathered mesh), in rank order.
 Json rank_failures(const dist::Communicator& comm, const std::vector<CellFailure>& failures,
@@ -467,14 +529,9 @@ Json rank_failures(const dist::Communicator& comm, const std::vector<CellFailure
     shift += static_cast<index_t>(counts[static_cast<std::size_t>(r)]);
   std::vector<CellFailure> mine = failures;
   for (CellFailure& f : mine) f.cell = CellId(f.cell.value() + shift);
-  const std::string text = failures_json(mine, threshold).dump();
   Json all = Json::array();
-  for (dist::Buffer& b : dist::all_gather(comm, [&] {
-         dist::Buffer out;
-         out.put_vector(std::vector<char>(text.begin(), text.end()));
-         return out;
-       }()))
-    for (Json& f : Json::parse(b.get_vector<char>())) all.push_back(std::move(f));
+  for (Json& rank : all_ranks(comm, failures_json(mine, threshold)))
+    for (Json& f : rank) all.push_back(std::move(f));
   return all;
 }
 
@@ -499,44 +556,64 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
   });
   Timer clock;
   PhaseTimes times;
-  cli::RankInput in = cli::read_on_ranks(comm, app, args.input, args.in.read_options(), 0);
+  cli::RankInput in = cli::read_on_ranks(comm, app, args.input, args.in.read_options(), 1);
   if (!args.in.fractions.labels.empty())
     args.in.fractions.label_values = cli::grid_labels(comm, app, args.in, args.input, in);
-  AssignedGrid grid;
+  OwnSlab part;
   cli::on_every_rank(comm, app, [&] {
-    cli::check_memory("adapting " + std::to_string(in.data.n_cells()) + " cells on rank " +
-                          std::to_string(comm.rank()),
-                      static_cast<double>(in.data.n_cells()) * cli::adapt_bytes_per_cell,
-                      common.memory_limit());
-    grid = io::to_assigned_grid(in.data, args.in.grid(io::MaterialSource::array), args.input);
+    const index_t cells = in.slab.block.owned_cell_end - in.slab.block.owned_cell_first;
+    cli::check_memory(
+        "adapting " + std::to_string(cells) + " cells on rank " + std::to_string(comm.rank()),
+        static_cast<double>(cells) * cli::adapt_bytes_per_cell, common.memory_limit());
+    part = own_slab(in, args, options);
   });
-  options.boundary.frozen = cut_nodes(in);
+  options.boundary.frozen = cut_nodes(part);
   options.progress = comm.rank() == 0 ? cli::terminal_progress(common) : nullptr;
   times.emplace_back("read", clock.seconds());
   clock.restart();
   AnyAdaptResult result;
-  cli::on_every_rank(comm, app, [&] { result = adapt(grid, options); });
+  cli::on_every_rank(comm, app, [&] { result = adapt(part.grid, options); });
   const double adapt_seconds = clock.seconds();
   times.emplace_back("adapt", adapt_seconds);
-
-  const auto axis = static_cast<std::size_t>(in.shape.dim - 1);
-  const index_t plane = in.slab.block.held_nodes / (in.slab.held[axis] + 1);
-  const bool last = comm.rank() + 1 == comm.size();
-  const index_t top = in.slab.block.held_nodes - plane;  // the top cut: owned by the rank above
-  std::vector<double> figures;
   std::vector<std::int64_t> bad;
-  Json failures;
+  std::visit(
+      [&](const auto& r) {
+        for (CellId c : r.bad_input_cells)
+          bad.push_back(in.slab.block.global(CellId(c.value() + part.first_cell)));
+      },
+      result);
+  bad = dist::all_gather_values(comm, bad);
+  if (bad.empty()) {
+    clock.restart();
+    std::visit(
+        [&](auto& r) {
+          using M = std::decay_t<decltype(r.mesh)>;
+          cli::SlabMesh<M> slab{r,          part.plane, part.nodes,
+                                part.below, part.above, std::move(part.top_cut)};
+          cli::resume_across_cuts(comm, slab, cut_rings, options);
+        },
+        result);
+    times.emplace_back("cuts", clock.seconds());
+  }
+
+  const bool last = comm.rank() + 1 == comm.size();
+  const index_t top = part.nodes - part.plane;  // the top cut: owned by the rank above
+  std::vector<double> figures;
+  Json failures, steps;
   io::MeshData piece;
   std::visit(
       [&](const auto& r) {
-        figures = rank_figures(r, grid.fractions.n_cells(), top, last ? 0 : plane, adapt_seconds);
-        for (CellId c : r.bad_input_cells) bad.push_back(in.slab.block.global(c));
+        figures = rank_figures(r, part.grid.fractions.n_cells(), top, last ? 0 : part.plane,
+                               adapt_seconds);
         failures = rank_failures(comm, r.failures, r.mesh.n_cells(), options.threshold);
-        if (!r.stopped_bad_input) piece = adapt_mesh_data(r, grid.names());
+        steps = all_ranks(comm, {{"layers", to_string(r.layers)},
+                                 {"mend_failing", r.mend_failing},
+                                 {"interface_layer_cells", r.n_interface_layer_cells},
+                                 {"cavities_published", r.n_cavities_published}});
+        if (!r.stopped_bad_input) piece = adapt_mesh_data(r, part.grid.names());
       },
       result);
   result = AnyAdaptResult();
-  bad = dist::all_gather_values(comm, bad);
   Json per_rank;
   const Json combined = combined_result(dist::all_gather_values(comm, figures), per_rank);
   Json report = cli::report_header(app);
@@ -546,7 +623,7 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
   report["threshold"] = options.threshold;
   report["min_edge"] = options.min_edge;
   report["layers"] = to_string(options.layers);
-  report["materials"] = grid.names();
+  report["materials"] = part.grid.names();
   report["result"] = combined;
   report["result"]["failures"] = failures;
   if (comm.rank() != 0) {  // rank 0 writes the report and prints
@@ -569,13 +646,14 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
   }
   clock.restart();
   for (auto& kv : cli::provenance(app)) piece.metadata.push_back(kv);
-  cli::pass_input_record(in.data, piece);
-  if (args.gather && !last) cli::drop_next_piece_nodes(piece, top, plane);
+  cli::pass_input_record(part.data, piece);
+  if (args.gather && !last) cli::drop_next_piece_nodes(piece, top, part.plane);
   cli::write_disjoint_pieces(comm, app, piece, common.output, args.gather, common.write_options(),
                              common.memory_limit());
   times.emplace_back("write", clock.seconds());
   report["ranks"] = cli::ranks_json(comm, in.slab);
   report["ranks"].update(per_rank);
+  report["ranks"]["runs"] = steps;
   const auto below = combined["cells_below_threshold"].get<std::int64_t>() +
                      combined["cells_below_min_edge"].get<std::int64_t>();
   report["threshold_met"] = below == 0;

@@ -491,15 +491,16 @@ AdaptResult<M> first_layer(const M& grid, const CellMaterials& material, const T
   return finish(std::move(r));
 }
 
-// Where the frozen nodes would go: the targets without the freeze (none when nothing is
-// frozen). The run's own targets put each frozen node on itself, so that no step moves it.
+// The targets computed without the freeze (frozen nodes counted at them in each material's
+// volume), and the same with every frozen node on itself, so that no step moves it: where
+// the frozen nodes would go, or none when nothing is frozen.
 template <class M>
-std::optional<Targets> frozen_aims(const M& grid, const Fractions& fractions,
-                                   const CellMaterials& material, const AdaptOptions& options) {
+std::optional<Targets> hold_frozen(const M& grid, Targets& targets, const AdaptOptions& options) {
   if (options.boundary.frozen.empty()) return std::nullopt;
-  return compute_targets(grid, fractions, material,
-                         boundary_constraints(grid, options.boundary.without_frozen()),
-                         options.targets);
+  std::optional<Targets> aims = targets;
+  for (NodeId v : id_range<NodeId>(grid.n_nodes()))
+    if (options.boundary.is_frozen(v)) targets.position[v] = grid.point(v);
+  return aims;
 }
 
 // Counts the frozen nodes against their aims: a frozen interface node off its interface is
@@ -577,8 +578,13 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
   record_step(r, mesh, "check", clock, options.progress, 0.05, "targets");
 
   const auto grid_boundary = boundary_constraints(mesh, options.boundary);
-  Targets targets = compute_targets(mesh, fractions, material, grid_boundary, options.targets);
-  const std::optional<Targets> aims = frozen_aims(mesh, fractions, material, options);
+  Targets targets =
+      compute_targets(mesh, fractions, material,
+                      options.boundary.frozen.empty()
+                          ? grid_boundary
+                          : boundary_constraints(mesh, options.boundary.without_frozen()),
+                      options.targets);
+  const std::optional<Targets> aims = hold_frozen(mesh, targets, options);
   r.n_interface_nodes = targets.n_interface_nodes;
   record_step(r, mesh, "targets", clock, options.progress, 0.1, "layers");
   correct(mesh, material, grid_boundary, targets, model, r, clock, options);
@@ -638,3 +644,43 @@ template AdaptResult<HexMesh> run_guaranteed_pipeline<HexMesh>(const HexMesh&, c
                                                                const reconstruct::InterfaceModel*);
 
 }  // namespace hexadapt::detail
+
+namespace hexadapt {
+
+template <class M>
+ResumeResult resume_moves(M& mesh, const Targets& given_targets,
+                          const IdVector<NodeId, NodeConstraint>& sliding,
+                          const SizeCriterion& size, const AdaptOptions& given) {
+  const auto nn = static_cast<std::size_t>(mesh.n_nodes());
+  if (given_targets.has.size() != nn || given_targets.position.size() != nn ||
+      sliding.size() != nn || size.local_size.size() != static_cast<std::size_t>(mesh.n_cells()))
+    throw InternalError("resume_moves: targets, constraints or sizes do not match the mesh");
+  // A frozen node is on its target for the steps, so that none moves it (as in the pipeline).
+  Targets targets = given_targets;
+  for (NodeId v : id_range<NodeId>(mesh.n_nodes()))
+    if (sliding[v].frozen()) targets.position[v] = mesh.point(v);
+  const AdaptOptions options = detail::with_shared_settings(given);
+  ResumeResult r;
+  r.loops = detail::move_smooth_loop(mesh, targets, sliding, size, options);
+  const std::vector<Vec3> before = detail::points_of(mesh);
+  r.reach = reach_surfaces(mesh, targets, sliding, size, options.reach, options.smooth,
+                           options.threshold, options.near_interface);
+  if (r.reach.moves > 0) {
+    AdaptOptions rest = options;
+    rest.max_loops = std::min(detail::resumed_loops, options.max_loops);
+    const std::vector<NodeId> around = detail::nodes_around_moves(mesh, before, {});
+    r.loops += detail::move_smooth_loop(mesh, targets, sliding, size, rest, r.loops, &around);
+  }
+  r.late_reach =
+      reach_targets(mesh, targets, sliding, size, options.reach, options.smooth, options.threshold);
+  return r;
+}
+
+template ResumeResult resume_moves<QuadMesh>(QuadMesh&, const Targets&,
+                                             const IdVector<NodeId, NodeConstraint>&,
+                                             const SizeCriterion&, const AdaptOptions&);
+template ResumeResult resume_moves<HexMesh>(HexMesh&, const Targets&,
+                                            const IdVector<NodeId, NodeConstraint>&,
+                                            const SizeCriterion&, const AdaptOptions&);
+
+}  // namespace hexadapt

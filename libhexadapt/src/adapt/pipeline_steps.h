@@ -42,6 +42,7 @@ void finish_result(AdaptResult<M>& r, const IdVector<NodeId, Vec3>& target,
   const M& mesh = r.mesh;
   r.target = target;
   r.has_target = has;
+  if (surface) r.sliding = *surface;
   const auto nn = static_cast<std::size_t>(mesh.n_nodes());
   r.distance.assign(nn, 0.0);
   r.surface_distance.assign(nn, 0.0);
@@ -75,7 +76,8 @@ void finish_result(AdaptResult<M>& r, const IdVector<NodeId, Vec3>& target,
     const double q = mesh.cell_quality(c);
     r.n_below_threshold += q < options.threshold;
     r.n_inverted += q <= 0;
-    r.min_edge_ratio = std::min(r.min_edge_ratio, cell_edge_lengths(mesh, c).min / size.local_size[c]);
+    r.min_edge_ratio =
+        std::min(r.min_edge_ratio, cell_edge_lengths(mesh, c).min / size.local_size[c]);
   }
   if (mesh.n_cells() == 0) r.min_edge_ratio = 0;
   std::vector<CellFailure> failures = failing_cells(mesh, options.threshold, size);

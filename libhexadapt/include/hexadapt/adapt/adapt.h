@@ -152,6 +152,9 @@ struct AdaptResult {
   /// distance for the base method, whose nodes do not slide).
   IdVector<NodeId, double> surface_distance;
   IdVector<NodeId, char> near_interface;  ///< within near_interface local sizes of it
+  /// guaranteed: where each node may move at the end (its boundary and interface directions;
+  /// frozen nodes frozen): what resume_moves takes to move the nodes on.
+  IdVector<NodeId, NodeConstraint> sliding;
   std::vector<AdaptStep> steps;
   index_t n_interface_nodes = 0;
   index_t n_reached = 0;           ///< interface nodes on their target at the end
@@ -219,5 +222,24 @@ using AnyAdaptResult = std::variant<AdaptResult<QuadMesh>, AdaptResult<HexMesh>>
 /// The same on an assigned grid (io::to_assigned_grid); InputError when it has no material.
 AnyAdaptResult adapt(const AssignedGrid& grid, const AdaptOptions& options = {},
                      const reconstruct::InterfaceModel* model = nullptr);
+
+/// What resume_moves did.
+struct ResumeResult {
+  int loops = 0;           ///< move-smooth rounds
+  ReachResult reach;       ///< the nodes put on their surface
+  ReachResult late_reach;  ///< the nodes put on their targets
+};
+
+/// Moves the nodes of a mesh the guaranteed method adapted on toward their targets, as its
+/// last steps do: the move-smooth loop, the reach step and the loop again around what it moved,
+/// then the nodes still short of their targets with their neighbours (no cell is added). A
+/// cell passing the threshold and `size` keeps passing. For a mesh whose frozen nodes were
+/// let go, e.g. where the parts adapted on ranks meet; `targets` gives each node's target (its
+/// own position when it has none) and `sliding` where it may slide (AdaptResult::sliding);
+/// the nodes `sliding` freezes stay where they are, whatever their targets.
+template <class M>
+ResumeResult resume_moves(M& mesh, const Targets& targets,
+                          const IdVector<NodeId, NodeConstraint>& sliding,
+                          const SizeCriterion& size, const AdaptOptions& options);
 
 }  // namespace hexadapt
