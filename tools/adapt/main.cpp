@@ -242,22 +242,38 @@ void log_steps(const AdaptResult<M>& r, double near) {
 }
 
 // The guaranteed method does not start from cells already failing a criterion: name them.
+// `bad`: their ids, increasing; `worst`: failures_text of the worst.
 int refuse_bad_input(const cli::CommonOptions& common, Json& report, const PhaseTimes& times,
-                     const std::vector<CellId>& bad, const std::vector<CellFailure>& worst,
+                     const std::vector<std::int64_t>& bad, const std::string& worst,
                      double threshold) {
   log_warning(std::to_string(bad.size()) + " input cells fail the threshold " +
               std::to_string(threshold) +
-              " or the size criterion (--min-edge); the worst:" + failures_text(worst, threshold) +
+              " or the size criterion (--min-edge); the worst:" + worst +
               "\nnothing written (--allow-bad-input runs anyway, without the guarantee; "
               "--min-edge 0 drops the size criterion)");
-  Json cells = Json::array();
-  for (CellId c : bad) cells.push_back(c.value());
-  report["bad_input_cells"] = cells;
+  report["bad_input_cells"] = bad;
   report["threshold_met"] = false;
   report["exit_code"] = cli::target_missed;
   report["times"] = cli::phase_times_json(times);
   cli::write_report(common, report);
   return cli::target_missed;
+}
+
+// The report's first fields: the run's input, output and options.
+Json report_start(const CLI::App& app, const Args& args, const cli::CommonOptions& common,
+                  const AdaptOptions& options, const std::vector<std::string>& materials) {
+  Json report = cli::report_header(app);
+  report["input"] = args.input;
+  report["output"] = common.output;
+  report["method"] = to_string(options.method);
+  report["threshold"] = options.threshold;
+  report["min_edge"] = options.min_edge;
+  report["layers"] = to_string(options.layers);
+  report["steps"] = options.move.steps;
+  report["drag"] = options.move.drag;
+  report["materials"] = materials;
+  report["model"] = args.model;
+  return report;
 }
 
 int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& common) {
@@ -281,25 +297,15 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   times.emplace_back("read", clock.seconds());
   clock.restart();
 
-  Json report = cli::report_header(app);
-  report["input"] = args.input;
-  report["output"] = common.output;
-  report["method"] = to_string(options.method);
-  report["threshold"] = options.threshold;
-  report["min_edge"] = options.min_edge;
-  report["layers"] = to_string(options.layers);
-  report["steps"] = options.move.steps;
-  report["drag"] = options.move.drag;
-  report["materials"] = grid.names();
-  report["model"] = args.model;
+  Json report = report_start(app, args, common, options, grid.names());
   io::MeshData out;
   index_t below = 0;
-  std::vector<CellId> bad_input;
+  std::vector<std::int64_t> bad_input;
   std::vector<CellFailure> worst;
   bool stopped = false;
   std::visit(
       [&](const auto& r) {
-        bad_input = r.bad_input_cells;
+        for (CellId c : r.bad_input_cells) bad_input.push_back(c.value());
         worst = r.failures;
         stopped = r.stopped_bad_input;
         for (const auto& s : r.steps) times.emplace_back(s.name, s.seconds);
@@ -311,7 +317,9 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
       },
       adapt(grid, options, args.model.empty() ? nullptr : &model.model));
   clock.restart();
-  if (stopped) return refuse_bad_input(common, report, times, bad_input, worst, options.threshold);
+  if (stopped)
+    return refuse_bad_input(common, report, times, bad_input,
+                            failures_text(worst, options.threshold), options.threshold);
   for (auto& kv : cli::provenance(app)) out.metadata.push_back(kv);
   cli::pass_input_record(in, out);
   io::write_mesh(out, common.output, common.write_options());
@@ -535,9 +543,11 @@ Json rank_failures(const dist::Communicator& comm, const std::vector<CellFailure
   return all;
 }
 
-// On the ranks of an MPI job (the first pass of an iterative interface displacement): each rank
-// reads its slab of the grid and adapts it with the node layers it shares with the ranks beside
-// it frozen, so that the slabs' meshes fit together; it writes its mesh as one piece.
+// On the ranks of an MPI job, after ParMmg's iterative interface displacement: each rank reads
+// its slab of the grid and adapts it with the node layers it shares with the ranks beside it
+// (the cuts) frozen, so that the slabs' meshes fit together; then the nodes around every cut
+// move on, the two ranks beside it moving the same band (cut_bands.h); each rank writes its
+// mesh as one piece.
 int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& common,
                        const dist::Communicator& comm) {
   AdaptOptions options = args.options;
@@ -575,11 +585,20 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
   cli::on_every_rank(comm, app, [&] { result = adapt(part.grid, options); });
   const double adapt_seconds = clock.seconds();
   times.emplace_back("adapt", adapt_seconds);
+  // Bad input cells named by their ids in the whole grid, as one process names them.
+  const auto global = [&](CellId c) {
+    return in.slab.block.global(CellId(c.value() + part.first_cell));
+  };
   std::vector<std::int64_t> bad;
+  std::string worst_input;
   std::visit(
       [&](const auto& r) {
-        for (CellId c : r.bad_input_cells)
-          bad.push_back(in.slab.block.global(CellId(c.value() + part.first_cell)));
+        for (CellId c : r.bad_input_cells) bad.push_back(global(c));
+        std::vector<CellFailure> worst =
+            r.stopped_bad_input ? r.failures : std::vector<CellFailure>{};
+        for (CellFailure& f : worst) f.cell = CellId(static_cast<index_t>(global(f.cell)));
+        for (const Json& text : all_ranks(comm, failures_text(worst, options.threshold)))
+          worst_input += text.get<std::string>();
       },
       result);
   bad = dist::all_gather_values(comm, bad);
@@ -616,33 +635,14 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
   result = AnyAdaptResult();
   Json per_rank;
   const Json combined = combined_result(dist::all_gather_values(comm, figures), per_rank);
-  Json report = cli::report_header(app);
-  report["input"] = args.input;
-  report["output"] = common.output;
-  report["method"] = to_string(options.method);
-  report["threshold"] = options.threshold;
-  report["min_edge"] = options.min_edge;
-  report["layers"] = to_string(options.layers);
-  report["materials"] = part.grid.names();
+  Json report = report_start(app, args, common, options, part.grid.names());
   report["result"] = combined;
   report["result"]["failures"] = failures;
-  if (comm.rank() != 0) {  // rank 0 writes the report and prints
-    common.json.clear();
-    common.quiet = true;
-  }
+  if (comm.rank() != 0) common.json.clear();  // rank 0 writes the report (and logs)
   if (!bad.empty()) {
     std::sort(bad.begin(), bad.end());
     report["ranks"] = cli::ranks_json(comm, in.slab);
-    if (comm.rank() != 0) return cli::target_missed;
-    log_warning(std::to_string(bad.size()) + " input cells fail the threshold " +
-                std::to_string(options.threshold) +
-                " or the size criterion: nothing written (--allow-bad-input runs anyway)");
-    report["bad_input_cells"] = bad;
-    report["threshold_met"] = false;
-    report["exit_code"] = cli::target_missed;
-    report["times"] = cli::phase_times_json(times);
-    cli::write_report(common, report);
-    return cli::target_missed;
+    return refuse_bad_input(common, report, times, bad, worst_input, options.threshold);
   }
   clock.restart();
   for (auto& kv : cli::provenance(app)) piece.metadata.push_back(kv);
@@ -661,17 +661,18 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
   report["times"] = cli::phase_times_json(times);
   cli::write_report(common, report);
   const auto n_blocked = combined["blocked_nodes"].get<std::int64_t>();
-  if (n_blocked > 0 && comm.rank() == 0)
+  const auto n_frozen = combined["frozen_blocked_nodes"].get<std::int64_t>();
+  if (n_blocked > 0)
     log_warning(std::to_string(n_blocked) + " of " +
                 std::to_string(combined["interface_nodes"].get<std::int64_t>()) +
-                " interface nodes ended off their interface, " +
-                std::to_string(combined["frozen_blocked_nodes"].get<std::int64_t>()) +
-                " of them on the cuts between ranks (frozen there)");
+                " interface nodes ended off their interface" +
+                (n_frozen > 0
+                     ? ", " + std::to_string(n_frozen) + " of them held on the cuts between ranks"
+                     : ""));
   if (below > 0) {
-    if (comm.rank() == 0)
-      log_warning(std::to_string(below) + " output cells fail the threshold " +
-                  std::to_string(options.threshold) + " or the size criterion\\nmesh written to " +
-                  common.output);
+    log_warning(std::to_string(below) + " output cells fail the threshold " +
+                std::to_string(options.threshold) + " or the size criterion\nmesh written to " +
+                common.output);
     return cli::target_missed;
   }
   return cli::ok;
