@@ -132,7 +132,8 @@ AdaptResult<M> adapt(const M& grid, const Fractions& fractions, const CellMateri
   check_model(model, M::dim, fractions.n_materials());
   const std::size_t frozen = options.boundary.frozen.size();
   if (frozen != 0 && frozen != static_cast<std::size_t>(grid.n_nodes()))
-    throw OptionError("{boundary.frozen} has " + std::to_string(frozen) + " flags for a grid of " +
+    throw OptionError("the frozen-node mask (BoundaryOptions::frozen) has " +
+                      std::to_string(frozen) + " flags for a grid of " +
                       std::to_string(grid.n_nodes()) + " nodes");
   const UnitFrame frame = unit_frame(grid);
   std::optional<reconstruct::InterfaceModel> local_model;
