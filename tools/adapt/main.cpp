@@ -591,8 +591,10 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
   };
   std::vector<std::int64_t> bad;
   std::string worst_input;
+  bool stopped = false;
   std::visit(
       [&](const auto& r) {
+        stopped = r.stopped_bad_input;
         for (CellId c : r.bad_input_cells) bad.push_back(global(c));
         std::vector<CellFailure> worst =
             r.stopped_bad_input ? r.failures : std::vector<CellFailure>{};
@@ -602,7 +604,9 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
       },
       result);
   bad = dist::all_gather_values(comm, bad);
-  if (bad.empty()) {
+  const std::vector<char> stops = dist::all_gather_values(comm, std::vector<char>{stopped});
+  stopped = std::find(stops.begin(), stops.end(), 1) != stops.end();
+  if (!stopped) {
     clock.restart();
     std::visit(
         [&](auto& r) {
@@ -638,9 +642,10 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
   Json report = report_start(app, args, common, options, part.grid.names());
   report["result"] = combined;
   report["result"]["failures"] = failures;
+  report["result"]["input_cells_below_threshold"] = bad.size();
   if (comm.rank() != 0) common.json.clear();  // rank 0 writes the report (and logs)
-  if (!bad.empty()) {
-    std::sort(bad.begin(), bad.end());
+  std::sort(bad.begin(), bad.end());
+  if (stopped) {
     report["ranks"] = cli::ranks_json(comm, in.slab);
     return refuse_bad_input(common, report, times, bad, worst_input, options.threshold);
   }

@@ -188,6 +188,16 @@ for ranks in (2, 3):
           "bad input on %d ranks: exit %d, cells %r (one process: %r), %r" % (
               ranks, code, got, want, err))
 
+# --allow-bad-input runs on every rank as on one process.
+code, err = run("adapt", "bad_allowed", 0, "../bad.vts", "-o", "out.vtu", "--json", "out.json",
+                "--allow-bad-input")
+want = (code, report("bad_allowed")["result"]["input_cells_below_threshold"])
+code, err = run("adapt", "bad_allowed_2", 2, "../bad.vts", "-o", "out.pvtu", "--json", "out.json",
+                "--allow-bad-input")
+got = (code, report("bad_allowed_2")["result"]["input_cells_below_threshold"])
+check(got == want and os.path.exists(path("bad_allowed_2", "out.pvtu")),
+      "--allow-bad-input on 2 ranks: exit and bad input cells %r, one process %r" % (got, want))
+
 # A missing piece: exit 2 naming it, on every rank count.
 os.remove(path("chain", "assigned_1.vts"))
 code, err = run("adapt", "chain_missing", 3, "../chain/assigned.pvts", "-o", "out.pvtu")
