@@ -6,6 +6,7 @@
 #include "hexadapt/adapt/size_criterion.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/mesh/quad_mesh.h"
+#include "hexadapt/mesh/unit_frame.h"
 
 namespace hexadapt::cli {
 
@@ -189,6 +190,22 @@ Band<M> joined(std::array<dist::Buffer, 2> halves, double min_edge, const Bounda
   return band;
 }
 
+// Moves the band's nodes on in the frame the pipeline runs in (mesh/unit_frame.h), so that
+// the moves are the same in any unit; a node that did not move keeps its bits.
+template <class M>
+void move_in_unit_frame(Band<M>& band, const AdaptOptions& options) {
+  const UnitFrame frame = unit_frame(band.mesh);
+  M local = to_local(band.mesh, frame);
+  Targets targets = band.targets;
+  for (Vec3& t : targets.position) t = frame.to_local(t);
+  SizeCriterion size = band.size;
+  for (double& h : size.local_size) h = frame.to_local(h);
+  const M before = local;
+  resume_moves(local, targets, band.sliding, size, options);
+  for (NodeId v : id_range<NodeId>(local.n_nodes()))
+    if (local.point(v) != before.point(v)) band.mesh.set_point(v, frame.to_world(local.point(v)));
+}
+
 // The band's new positions and figures onto the rank's own nodes of half `h`.
 template <class M>
 void take_back(const Band<M>& band, int h, AdaptResult<M>& r, double near_interface) {
@@ -249,7 +266,7 @@ void resume_across_cuts(const dist::Communicator& comm, SlabMesh<M>& slab, int r
         lower ? std::array<dist::Buffer, 2>{std::move(mine.front()), std::move(theirs.front())}
               : std::array<dist::Buffer, 2>{std::move(theirs.front()), std::move(mine.front())};
     Band<M> band = joined<M>(std::move(halves), options.min_edge, options.boundary);
-    resume_moves(band.mesh, band.targets, band.sliding, band.size, moves);
+    move_in_unit_frame(band, moves);
     take_back(band, lower ? 0 : 1, slab.result, options.near_interface);
   }
   recount_cells(slab.result, options);

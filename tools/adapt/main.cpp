@@ -16,6 +16,7 @@
 #include "hexadapt/io/assigned_grid_file.h"
 #include "hexadapt/io/fractions_reader.h"
 #include "hexadapt/io/mesh_file.h"
+#include "hexadapt/mesh/unit_frame.h"
 #include "hexadapt/reconstruct/model_io.h"
 #include "input_record.h"
 #include "memory.h"
@@ -367,7 +368,10 @@ OwnSlab own_slab(cli::RankInput& in, const Args& args, const AdaptOptions& optio
   if (s.above) {
     const AssignedGrid read = io::to_assigned_grid(in.data, how, args.input);
     std::visit(
-        [&](const auto& m) {
+        [&](const auto& grid) {
+          // In the frame the pipeline runs in, as one process computes them.
+          const UnitFrame frame = unit_frame(grid);
+          const auto m = to_local(grid, frame);
           const Targets t = compute_targets(
               m, read.fractions, read.material,
               boundary_constraints(m, options.boundary.without_frozen()), options.targets);
@@ -375,7 +379,7 @@ OwnSlab own_slab(cli::RankInput& in, const Args& args, const AdaptOptions& optio
           for (index_t k = 0; k < plane; ++k) {
             const NodeId v(owned[1] * plane + k);
             s.top_cut.has.push_back(t.has[v]);
-            s.top_cut.position.push_back(t.position[v]);
+            s.top_cut.position.push_back(frame.to_world(t.position[v]));
             s.top_cut.interface.push_back(t.interface[v]);
           }
         },

@@ -23,6 +23,10 @@ struct UnitFrame {
   bool is_identity() const { return exponent == 0 && origin == Vec3::Zero(); }
   Vec3 to_local(const Vec3& world) const { return scaled(world - origin, -exponent); }
   Vec3 to_world(const Vec3& local) const { return scaled(local, exponent) + origin; }
+  /// A length (power 1), area (2) or volume (3) in local units.
+  double to_local(double world, int power = 1) const {
+    return std::ldexp(world, -exponent * power);
+  }
   /// A length (power 1), area (2) or volume (3) back in world units.
   double to_world(double local, int power = 1) const { return std::ldexp(local, exponent * power); }
 
