@@ -14,7 +14,8 @@
 // of the mesh goes below the threshold. Input nodes keep their ids: a seed on the border of
 // its cavity stays with the outside cells and keeps its target; its copy inside the cavity
 // is a new node without a target. A cavity whose layer cannot be a mesh (cells touching
-// along an edge only, joined around both its ends: see pillow.h) is rejected like a poor one.
+// along an edge only, joined around both its ends: see pillow.h) is rejected like a poor one,
+// and so is a cavity holding a cell around a frozen node (BoundaryOptions::frozen).
 //
 // Each attempt works in a patch, the cavity and the cells sharing a node with it, and only a
 // published cavity is spliced into the mesh: an attempt costs time in the size of its cavity,

@@ -14,7 +14,8 @@
 // the material is pillowed again, at most `rounds` times; then it is left unpillowed. Where
 // what is left of the region touches itself along an edge in a way no layer can follow
 // (pillow.h), the cells around such edges are carved out the same way. Nodes with a target
-// never move here; the cells outside a kept layer and its ring are the input's.
+// never move here; the cells outside a kept layer and its ring are the input's. The cells
+// around a frozen node (BoundaryOptions::frozen) are left out of every set from the start.
 //
 // A cell one cell thick between two other materials (across two facing faces), as in the wedge
 // of air where a drop meets a pool, is left out of its material's layer from the start: with
