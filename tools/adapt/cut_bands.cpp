@@ -4,7 +4,6 @@
 #include <vector>
 
 #include "hexadapt/adapt/size_criterion.h"
-#include "hexadapt/core/error.h"
 #include "hexadapt/mesh/quad_mesh.h"
 #include "hexadapt/mesh/unit_frame.h"
 
@@ -108,7 +107,6 @@ dist::Buffer half_band(const SlabMesh<M>& slab, bool top, int rings) {
   b.put(static_cast<std::uint64_t>(cells.size()));
   for (CellId c : cells) {
     for (NodeId v : mesh.cell_nodes(c)) b.put(slot[v.idx()]);
-    b.put(r.material[c]);
     b.put(r.local_size[c]);
   }
   return b;
@@ -168,7 +166,6 @@ Band<M> joined(std::array<dist::Buffer, 2> halves, double min_edge, const Bounda
       typename M::CellNodes nodes;
       for (NodeId& v : nodes) v = NodeId(to[static_cast<std::size_t>(b.get<index_t>())]);
       cells.push_back(nodes);
-      b.get<int>();  // the material: the moves do not need it
       band.size.local_size.push_back(b.get<double>());
     }
   }
