@@ -3,11 +3,16 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
 #include <vector>
 
 #include "adapt/adapt_cases.h"
 #include "adapt/generated_case.h"
 #include "hexadapt/adapt/adapt.h"
+#include "hexadapt/adapt/targets.h"
 #include "hexadapt/mesh/mesh_check.h"
 #include "hexadapt/quality/scaled_jacobian.h"
 
@@ -172,6 +177,97 @@ TEST(FrozenNodes, LetGoTheyMoveOn) {
       EXPECT_GT(near_after, near_before);
     }
   });
+}
+
+// Two parts of a grid adding up their sums, each on its own thread, as two ranks do.
+class TwoParts {
+ public:
+  void add_up(std::size_t part, std::vector<double>& values) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    const int round = round_;
+    given_[part] = values;
+    if (++arrived_ == 2) {
+      sum_ = given_[0];
+      for (std::size_t k = 0; k < sum_.size(); ++k) sum_[k] += given_[1][k];
+      arrived_ = 0;
+      ++round_;
+      done_.notify_all();
+    } else {
+      done_.wait(lock, [&] { return round_ != round; });
+    }
+    values = sum_;
+  }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable done_;
+  std::array<std::vector<double>, 2> given_;
+  std::vector<double> sum_;
+  int arrived_ = 0, round_ = 0;
+};
+
+// The asteroid at 20^3 cut at layer 9, each part holding three layers beyond its own: the
+// targets of its own nodes, with the volume offset's sums added up over both parts (each
+// counting its own cells and nodes, the cut's nodes the upper part's), are the whole grid's.
+// Without the sums added up, each part offsets its interfaces for its own volumes only.
+TEST(FrozenNodes, PartsComputeTheWholeGridsTargets) {
+  test::with_generated_case({"asteroid", {20, 20, 20}}, [](const auto& grid, const Fractions& f,
+                                                           const IdVector<CellId, int>& m) {
+    if constexpr (std::is_same_v<std::decay_t<decltype(grid)>, HexMesh>) {
+      const Targets whole = compute_targets(grid, f, m, boundary_constraints(grid));
+      const std::array<Part, 2> parts{part_of(grid, f, m, 20, 20, 20, 0, 12),
+                                      part_of(grid, f, m, 20, 20, 20, 6, 20)};
+      const std::array<std::array<int, 2>, 2> own{{{0, 9}, {3, 14}}};  // layers in each part
+      const std::array<int, 2> counted_top{8, 14};  // the last node layer each part counts
+      TwoParts together;
+      std::array<Targets, 2> added_up, alone;
+      const auto run = [&](std::size_t k) {
+        const Part& p = parts[k];
+        VolumeParts v;
+        v.counted_cells.assign(static_cast<std::size_t>(p.grid.n_cells()), 0);
+        v.counted_nodes.assign(static_cast<std::size_t>(p.grid.n_nodes()), 0);
+        for (index_t c = own[k][0] * 400; c < own[k][1] * 400; ++c) v.counted_cells[CellId(c)] = 1;
+        for (index_t n = own[k][0] * p.plane; n < (counted_top[k] + 1) * p.plane; ++n)
+          v.counted_nodes[NodeId(n)] = 1;
+        v.add_up = [&, k](std::vector<double>& values) { together.add_up(k, values); };
+        const auto boundary = boundary_constraints(p.grid);
+        added_up[k] = compute_targets(p.grid, p.fractions, p.material, boundary, {}, &v);
+        alone[k] = compute_targets(p.grid, p.fractions, p.material, boundary);
+      };
+      std::thread second(run, 1);
+      run(0);
+      second.join();
+      double worst = 0, worst_alone = 0;
+      for (std::size_t k = 0; k < 2; ++k) {
+        const Part& p = parts[k];
+        for (index_t n = own[k][0] * p.plane; n < (own[k][1] + 1) * p.plane; ++n) {
+          const NodeId v(n), w(n + p.node_offset);
+          ASSERT_EQ(added_up[k].has[v], whole.has[w]);
+          if (!whole.has[w]) continue;
+          worst = std::max(worst, (added_up[k].position[v] - whole.position[w]).norm());
+          worst_alone = std::max(worst_alone, (alone[k].position[v] - whole.position[w]).norm());
+        }
+      }
+      EXPECT_LT(worst, 1e-12);
+      EXPECT_GT(worst_alone, 1e-6);
+    }
+  });
+}
+
+// Given targets are the guaranteed method's, one per node.
+TEST(FrozenNodes, RejectsBadTargets) {
+  const HexMesh grid = make_hex_grid(2, 2, 2);
+  Fractions f(grid.n_cells(), {"a", "b"});
+  for (CellId c : id_range<CellId>(grid.n_cells())) f(c, 0) = 1;
+  const CellMaterials m(static_cast<std::size_t>(grid.n_cells()), 0);
+  Targets t = compute_targets(grid, f, m, boundary_constraints(grid));
+  AdaptOptions o;
+  o.method = AdaptMethod::base;
+  EXPECT_THROW(adapt(grid, f, m, o, nullptr, &t), OptionError);
+  o.method = AdaptMethod::guaranteed;
+  EXPECT_NO_THROW(adapt(grid, f, m, o, nullptr, &t));
+  t.has.push_back(0);
+  EXPECT_THROW(adapt(grid, f, m, o, nullptr, &t), OptionError);
 }
 
 // Frozen nodes are the guaranteed method's; a mask that is not one flag per node is refused.

@@ -1,6 +1,7 @@
 #include "cut_bands.h"
 
 #include <algorithm>
+#include <limits>
 #include <vector>
 
 #include "hexadapt/adapt/size_criterion.h"
@@ -226,11 +227,15 @@ void take_back(const Band<M>& band, int h, AdaptResult<M>& r, double near_interf
   }
 }
 
-// The figures of the rank's cells after the moves: least quality, failing cells.
+// The figures of the rank's cells after the moves: least quality, shortest edge, failing cells.
 template <class M>
 void recount_cells(AdaptResult<M>& r, const AdaptOptions& options) {
   SizeCriterion size{options.min_edge, r.local_size};
   r.min_quality = min_quality(r.mesh);
+  r.min_edge_ratio = r.mesh.n_cells() == 0 ? 0 : std::numeric_limits<double>::infinity();
+  for (CellId c : id_range<CellId>(r.mesh.n_cells()))
+    r.min_edge_ratio =
+        std::min(r.min_edge_ratio, cell_edge_lengths(r.mesh, c).min / r.local_size[c]);
   std::vector<CellFailure> failures = failing_cells(r.mesh, options.threshold, size);
   r.n_below_threshold = r.n_below_min_edge = r.n_inverted = 0;
   for (const CellFailure& f : failures) {

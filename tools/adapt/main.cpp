@@ -342,56 +342,105 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
 // The rings of cells on each side of a cut whose nodes the second pass moves on.
 constexpr int cut_rings = 4;
 
-// A rank's own layers of the grid, with what the cuts (the node layers it shares with the
-// ranks beside it) need.
+// The layers of cells a rank reads beyond its own on each side: a node's target comes from
+// the faces around it, their cells' fraction gradients (fitted over the cells around those)
+// and the columns of three cells across a sheet; three layers hold all of them for the
+// nodes of the own layers, the cuts' too.
+constexpr int target_ghost_layers = 3;
+
+// A rank's own layers of the grid, with the targets of their nodes.
 struct OwnSlab {
   io::MeshData data;  ///< the own layers' data
   AssignedGrid grid;
-  index_t first_cell = 0;  ///< local id of the first own cell among those read
-  index_t nodes = 0;       ///< of the own layers
-  index_t plane = 0;       ///< nodes per cut
+  AssignedGrid read;           ///< the layers read: the own ones and the ghost layers around
+  index_t first_cell = 0;      ///< local id of the first own cell among those read
+  index_t nodes = 0;           ///< of the own layers
+  index_t plane = 0;           ///< nodes per cut
+  std::array<int, 2> owned{};  ///< the own layers among those read, [first, end)
+  int held = 0;                ///< layers read
   bool below = false, above = false;
-  Targets top_cut;  ///< the top cut's targets from the input cells on both sides
+  Targets targets;  ///< of the own nodes, as one process computes them on the whole grid
+  Targets top_cut;  ///< the top cut's targets (the last nodes' of `targets`)
 };
 
-// The slab's own layers from the layers read (one ghost layer on each side that has a
-// neighbour), and the targets of its top cut's nodes from the grid read, where those nodes
-// have every cell of their own.
-OwnSlab own_slab(cli::RankInput& in, const Args& args, const AdaptOptions& options) {
+// The slab's own layers from the layers read.
+OwnSlab own_slab(cli::RankInput& in, const Args& args) {
   const auto axis = static_cast<std::size_t>(in.shape.dim - 1);
   const int first = in.slab.first_layer;
-  const std::array<int, 2> owned{in.slab.owned_layers[0] - first, in.slab.owned_layers[1] - first};
   const io::AssignedGridOptions how = args.in.grid(io::MaterialSource::array);
   OwnSlab s;
+  s.owned = {in.slab.owned_layers[0] - first, in.slab.owned_layers[1] - first};
+  s.held = in.slab.held[axis];
   s.below = in.slab.owned_layers[0] > 0;
   s.above = in.slab.owned_layers[1] < in.shape.cells[axis];
-  if (s.above) {
-    const AssignedGrid read = io::to_assigned_grid(in.data, how, args.input);
-    std::visit(
-        [&](const auto& grid) {
-          // In the frame the pipeline runs in, as one process computes them.
-          const UnitFrame frame = unit_frame(grid);
-          const auto m = to_local(grid, frame);
-          const Targets t = compute_targets(
-              m, read.fractions, read.material,
-              boundary_constraints(m, options.boundary.without_frozen()), options.targets);
-          const index_t plane = m.n_nodes() / (in.slab.held[axis] + 1);
-          for (index_t k = 0; k < plane; ++k) {
-            const NodeId v(owned[1] * plane + k);
-            s.top_cut.has.push_back(t.has[v]);
-            s.top_cut.position.push_back(frame.to_world(t.position[v]));
-            s.top_cut.interface.push_back(t.interface[v]);
-          }
-        },
-        read.mesh);
-  }
+  s.read = io::to_assigned_grid(in.data, how, args.input);
   s.data = std::move(in.data);
-  io::keep_layers(s.data, owned, args.input);
+  io::keep_layers(s.data, s.owned, args.input);
   s.grid = io::to_assigned_grid(s.data, how, args.input);
   s.first_cell = in.slab.block.owned_cell_first;
   s.nodes = static_cast<index_t>(s.data.points.size());
-  s.plane = s.nodes / (owned[1] - owned[0] + 1);
+  s.plane = s.nodes / (s.owned[1] - s.owned[0] + 1);
   return s;
+}
+
+// The frame one process adapts the whole grid in (mesh/unit_frame.h): that of every rank's
+// layers read together.
+template <class M>
+UnitFrame whole_frame(const dist::Communicator& comm, const M& mesh) {
+  Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
+  for (NodeId v : id_range<NodeId>(mesh.n_nodes())) {
+    low = low.cwiseMin(mesh.point(v));
+    high = high.cwiseMax(mesh.point(v));
+  }
+  const std::vector<double> all = dist::all_gather_values(
+      comm, std::vector<double>{low.x(), low.y(), low.z(), high.x(), high.y(), high.z()});
+  std::vector<Vec3> corners;
+  for (std::size_t k = 0; k + 2 < all.size(); k += 3)
+    corners.emplace_back(all[k], all[k + 1], all[k + 2]);
+  return unit_frame(corners);
+}
+
+// The targets of the slab's own nodes as one process computes them on the whole grid: on the
+// layers read, in the whole grid's frame, the volume offset's sums over every rank's own cells
+// and nodes (a cut's nodes counted by the rank above it). Every rank calls it.
+void slab_targets(const dist::Communicator& comm, OwnSlab& s, const AdaptOptions& options) {
+  std::visit(
+      [&](const auto& grid) {
+        const UnitFrame frame = whole_frame(comm, grid);
+        const auto m = to_local(grid, frame);
+        const index_t plane = m.n_nodes() / (s.held + 1), cells = m.n_cells() / s.held;
+        VolumeParts parts;
+        parts.counted_cells.assign(static_cast<std::size_t>(m.n_cells()), 0);
+        parts.counted_nodes.assign(static_cast<std::size_t>(m.n_nodes()), 0);
+        for (index_t c = s.owned[0] * cells; c < s.owned[1] * cells; ++c)
+          parts.counted_cells[CellId(c)] = 1;
+        const int last = s.above ? s.owned[1] - 1 : s.owned[1];
+        for (index_t v = s.owned[0] * plane; v < (last + 1) * plane; ++v)
+          parts.counted_nodes[NodeId(v)] = 1;
+        parts.add_up = [&](std::vector<double>& values) {
+          const std::vector<double> all = dist::all_gather_values(comm, values);
+          std::fill(values.begin(), values.end(), 0.0);
+          for (std::size_t k = 0; k < all.size(); ++k) values[k % values.size()] += all[k];
+        };
+        const Targets t = compute_targets(
+            m, s.read.fractions, s.read.material,
+            boundary_constraints(m, options.boundary.without_frozen()), options.targets, &parts);
+        for (index_t v = s.owned[0] * plane; v < (s.owned[1] + 1) * plane; ++v) {
+          const NodeId n(v);
+          s.targets.has.push_back(t.has[n]);
+          s.targets.position.push_back(frame.to_world(t.position[n]));
+          s.targets.interface.push_back(t.interface[n]);
+        }
+        if (s.above)
+          for (index_t k = s.nodes - s.plane; k < s.nodes; ++k) {
+            const NodeId n(k);
+            s.top_cut.has.push_back(s.targets.has[n]);
+            s.top_cut.position.push_back(s.targets.position[n]);
+            s.top_cut.interface.push_back(s.targets.interface[n]);
+          }
+      },
+      s.read.mesh);
+  s.read = AssignedGrid();
 }
 
 // The cuts' nodes, frozen so that the slabs' meshes keep the input's faces there and fit
@@ -570,7 +619,8 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
   });
   Timer clock;
   PhaseTimes times;
-  cli::RankInput in = cli::read_on_ranks(comm, app, args.input, args.in.read_options(), 1);
+  cli::RankInput in =
+      cli::read_on_ranks(comm, app, args.input, args.in.read_options(), target_ghost_layers);
   if (!args.in.fractions.labels.empty())
     args.in.fractions.label_values = cli::grid_labels(comm, app, args.in, args.input, in);
   OwnSlab part;
@@ -579,14 +629,16 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
     cli::check_memory(
         "adapting " + std::to_string(cells) + " cells on rank " + std::to_string(comm.rank()),
         static_cast<double>(cells) * cli::adapt_bytes_per_cell, common.memory_limit());
-    part = own_slab(in, args, options);
+    part = own_slab(in, args);
   });
+  slab_targets(comm, part, options);
   options.boundary.frozen = cut_nodes(part);
   options.progress = comm.rank() == 0 ? cli::terminal_progress(common) : nullptr;
   times.emplace_back("read", clock.seconds());
   clock.restart();
   AnyAdaptResult result;
-  cli::on_every_rank(comm, app, [&] { result = adapt(part.grid, options); });
+  cli::on_every_rank(comm, app,
+                     [&] { result = adapt(part.grid, options, nullptr, &part.targets); });
   const double adapt_seconds = clock.seconds();
   times.emplace_back("adapt", adapt_seconds);
   // Bad input cells named by their ids in the whole grid, as one process names them.

@@ -91,6 +91,17 @@ void check_model(const reconstruct::InterfaceModel* model, int dim, int n_materi
                              std::to_string(n_materials) + ")");
 }
 
+// Given targets: one per node, for the guaranteed method.
+void check_targets(const Targets* targets, index_t n_nodes, AdaptMethod method) {
+  if (!targets) return;
+  if (method != AdaptMethod::guaranteed)
+    throw OptionError("given targets are taken by the guaranteed method only");
+  const auto n = static_cast<std::size_t>(n_nodes);
+  if (targets->has.size() != n || targets->position.size() != n || targets->interface.size() != n)
+    throw OptionError("the given targets are for " + std::to_string(targets->has.size()) +
+                      " nodes, the grid has " + std::to_string(n_nodes));
+}
+
 // Every length of the result from the frame the pipeline ran in back to the grid's.
 template <class M>
 void result_to_world(AdaptResult<M>& r, const UnitFrame& f) {
@@ -113,12 +124,12 @@ void result_to_world(AdaptResult<M>& r, const UnitFrame& f) {
 template <class M>
 AdaptResult<M> run_pipeline(const M& grid, const Fractions& fractions,
                             const CellMaterials& material, const AdaptOptions& options,
-                            const reconstruct::InterfaceModel* model) {
+                            const reconstruct::InterfaceModel* model, const Targets* targets) {
   switch (options.method) {
     case AdaptMethod::base:
       return detail::run_base_pipeline(grid, fractions, material, options);
     case AdaptMethod::guaranteed:
-      return detail::run_guaranteed_pipeline(grid, fractions, material, options, model);
+      return detail::run_guaranteed_pipeline(grid, fractions, material, options, model, targets);
   }
   throw InternalError("unhandled adaptation method");
 }
@@ -127,7 +138,8 @@ AdaptResult<M> run_pipeline(const M& grid, const Fractions& fractions,
 
 template <class M>
 AdaptResult<M> adapt(const M& grid, const Fractions& fractions, const CellMaterials& material,
-                     const AdaptOptions& options, const reconstruct::InterfaceModel* model) {
+                     const AdaptOptions& options, const reconstruct::InterfaceModel* model,
+                     const Targets* targets) {
   check_options(options);
   check_model(model, M::dim, fractions.n_materials());
   const std::size_t frozen = options.boundary.frozen.size();
@@ -135,31 +147,39 @@ AdaptResult<M> adapt(const M& grid, const Fractions& fractions, const CellMateri
     throw OptionError("the frozen-node mask (BoundaryOptions::frozen) has " +
                       std::to_string(frozen) + " flags for a grid of " +
                       std::to_string(grid.n_nodes()) + " nodes");
+  check_targets(targets, grid.n_nodes(), options.method);
   const UnitFrame frame = unit_frame(grid);
   std::optional<reconstruct::InterfaceModel> local_model;
   if (model) {
     local_model = *model;
     for (Vec3& p : local_model->points) p = frame.to_local(p);
   }
+  std::optional<Targets> local_targets;
+  if (targets) {
+    local_targets = *targets;
+    for (Vec3& p : local_targets->position.raw()) p = frame.to_local(p);
+    for (InterfaceFace& f : local_targets->faces) f.point = frame.to_local(f.point);
+  }
   AdaptResult<M> r = run_pipeline(to_local(grid, frame), fractions, material, options,
-                                  local_model ? &*local_model : nullptr);
+                                  local_model ? &*local_model : nullptr,
+                                  local_targets ? &*local_targets : nullptr);
   result_to_world(r, frame);
   return r;
 }
 
 template AdaptResult<QuadMesh> adapt<QuadMesh>(const QuadMesh&, const Fractions&,
                                                const IdVector<CellId, int>&, const AdaptOptions&,
-                                               const reconstruct::InterfaceModel*);
+                                               const reconstruct::InterfaceModel*, const Targets*);
 template AdaptResult<HexMesh> adapt<HexMesh>(const HexMesh&, const Fractions&,
                                              const IdVector<CellId, int>&, const AdaptOptions&,
-                                             const reconstruct::InterfaceModel*);
+                                             const reconstruct::InterfaceModel*, const Targets*);
 
 AnyAdaptResult adapt(const AssignedGrid& grid, const AdaptOptions& options,
-                     const reconstruct::InterfaceModel* model) {
+                     const reconstruct::InterfaceModel* model, const Targets* targets) {
   grid.require_assigned("adapt");
   return std::visit(
       [&](const auto& m) -> AnyAdaptResult {
-        return adapt(m, grid.fractions, grid.material, options, model);
+        return adapt(m, grid.fractions, grid.material, options, model, targets);
       },
       grid.mesh);
 }

@@ -554,7 +554,8 @@ AdaptOptions with_shared_settings(AdaptOptions o) {
 template <class M>
 AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions,
                                        const CellMaterials& material, const AdaptOptions& given,
-                                       const reconstruct::InterfaceModel* model) {
+                                       const reconstruct::InterfaceModel* model,
+                                       const Targets* given_targets) {
   const AdaptOptions options = with_shared_settings(given);
   if (options.progress) options.progress("check", 0.0);
   AdaptResult<M> r;
@@ -579,11 +580,16 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
 
   const auto grid_boundary = boundary_constraints(mesh, options.boundary);
   Targets targets =
-      compute_targets(mesh, fractions, material,
-                      options.boundary.frozen.empty()
-                          ? grid_boundary
-                          : boundary_constraints(mesh, options.boundary.without_frozen()),
-                      options.targets);
+      given_targets
+          ? *given_targets
+          : compute_targets(mesh, fractions, material,
+                            options.boundary.frozen.empty()
+                                ? grid_boundary
+                                : boundary_constraints(mesh, options.boundary.without_frozen()),
+                            options.targets);
+  if (given_targets)
+    targets.n_interface_nodes =
+        static_cast<index_t>(std::count(targets.has.begin(), targets.has.end(), 1));
   const std::optional<Targets> aims = hold_frozen(mesh, targets, options);
   r.n_interface_nodes = targets.n_interface_nodes;
   record_step(r, mesh, "targets", clock, options.progress, 0.1, "layers");
@@ -635,13 +641,16 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
   return r;
 }
 
-template AdaptResult<QuadMesh> run_guaranteed_pipeline<QuadMesh>(
-    const QuadMesh&, const Fractions&, const IdVector<CellId, int>&, const AdaptOptions&,
-    const reconstruct::InterfaceModel*);
+template AdaptResult<QuadMesh> run_guaranteed_pipeline<QuadMesh>(const QuadMesh&, const Fractions&,
+                                                                 const IdVector<CellId, int>&,
+                                                                 const AdaptOptions&,
+                                                                 const reconstruct::InterfaceModel*,
+                                                                 const Targets*);
 template AdaptResult<HexMesh> run_guaranteed_pipeline<HexMesh>(const HexMesh&, const Fractions&,
                                                                const IdVector<CellId, int>&,
                                                                const AdaptOptions&,
-                                                               const reconstruct::InterfaceModel*);
+                                                               const reconstruct::InterfaceModel*,
+                                                               const Targets*);
 
 }  // namespace hexadapt::detail
 

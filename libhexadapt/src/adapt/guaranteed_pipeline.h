@@ -10,6 +10,7 @@ namespace hexadapt::detail {
 template <class M>
 AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions,
                                        const CellMaterials& material, const AdaptOptions& options,
-                                       const reconstruct::InterfaceModel* model);
+                                       const reconstruct::InterfaceModel* model,
+                                       const Targets* targets);
 
 }  // namespace hexadapt::detail

@@ -110,7 +110,7 @@ template <class M>
 void conserve_target_volumes(const M& mesh, const Fractions& fractions,
                              const CellMaterials& material,
                              const IdVector<NodeId, NodeConstraint>& boundary, Targets& targets,
-                             const TargetOptions& options) {
+                             const TargetOptions& options, const VolumeParts* parts) {
   const bool runs = options.volume_offset == VolumeOffset::on ||
                     (options.volume_offset == VolumeOffset::automatic && M::dim == 3);
   if (!runs || options.volume_sweeps <= 0) return;
@@ -120,12 +120,21 @@ void conserve_target_volumes(const M& mesh, const Fractions& fractions,
     grid_volume[CellId(static_cast<index_t>(i))] =
         mesh.cell_volume(CellId(static_cast<index_t>(i)));
   });
+  // On a part of a grid, the sums run over the cells and nodes it counts, then over the parts.
+  const auto counts_cell = [&](CellId c) { return !parts || parts->counted_cells[c]; };
+  const auto counts_node = [&](NodeId v) { return !parts || parts->counted_nodes[v]; };
+  const auto add_up = [&](std::vector<double>& values) {
+    if (parts) parts->add_up(values);
+  };
   std::vector<double> input(nm, 0);
   for (CellId c : id_range<CellId>(mesh.n_cells()))
-    for (std::size_t a = 0; a < nm; ++a)
-      input[a] += fractions(c, static_cast<int>(a)) * grid_volume[c];
+    if (counts_cell(c))
+      for (std::size_t a = 0; a < nm; ++a)
+        input[a] += fractions(c, static_cast<int>(a)) * grid_volume[c];
+  add_up(input);
   std::vector<Mover> movers = find_movers(mesh, material, boundary, targets, input);
-  if (movers.empty()) return;
+  std::vector<double> rate(nm, 0);  // of the whole grid: a part without movers still sums
+  if (!parts && movers.empty()) return;
   Positions& x = targets.position;
   for (Mover& m : movers)
     if (growth_rate(mesh, x, material, m) < 0) m.direction = -m.direction;
@@ -135,25 +144,38 @@ void conserve_target_volumes(const M& mesh, const Fractions& fractions,
     for (CellId c : mesh.node_cells(m.node)) touched.push_back(c);
   std::sort(touched.begin(), touched.end());
   touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  // The volumes no sweep changes, less the input's. On a part, its own are added up first; on
+  // the whole grid, the sums run in the order they always did (the same bits).
   std::vector<double> fixed(nm, 0);
-  for (std::size_t a = 0; a < nm; ++a) fixed[a] = -input[a];
+  if (!parts)
+    for (std::size_t a = 0; a < nm; ++a) fixed[a] = -input[a];
   for (CellId c : id_range<CellId>(mesh.n_cells())) {
-    if (std::binary_search(touched.begin(), touched.end(), c)) continue;
+    if (!counts_cell(c) || std::binary_search(touched.begin(), touched.end(), c)) continue;
     const auto nodes = mesh.cell_nodes(c);
     const bool on_grid =
         std::none_of(nodes.begin(), nodes.end(), [&](NodeId v) { return targets.has[v]; });
     fixed[static_cast<std::size_t>(material[c])] +=
         on_grid ? grid_volume[c] : points_volume(points_at(mesh, x, c));
   }
+  if (parts) {
+    add_up(fixed);
+    for (std::size_t a = 0; a < nm; ++a) fixed[a] -= input[a];
+  }
   // The rates hardly change over offsets this small: measured once.
-  std::vector<double> rate(nm, 0);
   for (const Mover& m : movers)
-    rate[static_cast<std::size_t>(m.material)] += growth_rate(mesh, x, material, m);
+    if (counts_node(m.node))
+      rate[static_cast<std::size_t>(m.material)] += growth_rate(mesh, x, material, m);
+  add_up(rate);
   std::vector<double> total(movers.size(), 0);
   for (int sweep = 0; sweep < options.volume_sweeps; ++sweep) {
-    std::vector<double> error = fixed;
+    std::vector<double> error = parts ? std::vector<double>(nm, 0) : fixed;
     for (CellId c : touched)
-      error[static_cast<std::size_t>(material[c])] += points_volume(points_at(mesh, x, c));
+      if (counts_cell(c))
+        error[static_cast<std::size_t>(material[c])] += points_volume(points_at(mesh, x, c));
+    if (parts) {
+      add_up(error);
+      for (std::size_t a = 0; a < nm; ++a) error[a] += fixed[a];
+    }
     bool done = true;
     for (std::size_t a = 0; a < nm; ++a)
       if (rate[a] > 0 && std::abs(error[a]) > options.volume_tolerance * input[a]) done = false;
@@ -172,10 +194,10 @@ void conserve_target_volumes(const M& mesh, const Fractions& fractions,
 template void conserve_target_volumes<QuadMesh>(const QuadMesh&, const Fractions&,
                                                 const IdVector<CellId, int>&,
                                                 const IdVector<NodeId, NodeConstraint>&, Targets&,
-                                                const TargetOptions&);
+                                                const TargetOptions&, const VolumeParts*);
 template void conserve_target_volumes<HexMesh>(const HexMesh&, const Fractions&,
                                                const IdVector<CellId, int>&,
                                                const IdVector<NodeId, NodeConstraint>&, Targets&,
-                                               const TargetOptions&);
+                                               const TargetOptions&, const VolumeParts*);
 
 }  // namespace hexadapt

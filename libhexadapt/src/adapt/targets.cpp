@@ -221,8 +221,12 @@ std::vector<Vec3> fraction_gradients(const M& mesh, const Fractions& fractions, 
 template <class M>
 Targets compute_targets(const M& mesh, const Fractions& fractions, const CellMaterials& material,
                         const IdVector<NodeId, NodeConstraint>& boundary,
-                        const TargetOptions& options) {
+                        const TargetOptions& options, const VolumeParts* parts) {
   check_inputs(mesh, fractions, material, boundary);
+  if (parts &&
+      (parts->counted_cells.size() != static_cast<std::size_t>(mesh.n_cells()) ||
+       parts->counted_nodes.size() != static_cast<std::size_t>(mesh.n_nodes()) || !parts->add_up))
+    throw InternalError("compute_targets: the part's counted cells or nodes do not match it");
   Targets out;
   for (CellId c : id_range<CellId>(mesh.n_cells()))
     for (int lf = 0; lf < M::faces_per_cell; ++lf) {
@@ -299,7 +303,7 @@ Targets compute_targets(const M& mesh, const Fractions& fractions, const CellMat
     out.position[v] = p + boundary[v].project(sum[v] / count[v] - p);
     out.interface[v] = interface_directions(tensor[v], options.normal_share);
   }
-  conserve_target_volumes(mesh, fractions, material, boundary, out, options);
+  conserve_target_volumes(mesh, fractions, material, boundary, out, options, parts);
   return out;
 }
 
@@ -334,7 +338,7 @@ double target_distance(const M& mesh, const Targets& targets) {
   template std::vector<Vec3> fraction_gradients<M>(const M&, const Fractions&, CellId, double); \
   template Targets compute_targets<M>(const M&, const Fractions&, const IdVector<CellId, int>&, \
                                       const IdVector<NodeId, NodeConstraint>&,                  \
-                                      const TargetOptions&);                                    \
+                                      const TargetOptions&, const VolumeParts*);                \
   template double target_distance<M>(const M&, const Targets&);
 HEXADAPT_INSTANTIATE(QuadMesh)
 HEXADAPT_INSTANTIATE(HexMesh)

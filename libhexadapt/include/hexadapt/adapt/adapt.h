@@ -212,19 +212,25 @@ struct AdaptResult {
 
 /// Runs the chosen pipeline. `material` holds one index into `fractions`' materials per
 /// cell; `model` is the reconstruction's geometric model of the same grid (nullptr: none,
-/// the target correction is skipped). Throws InputError for inconsistent sizes or a model
-/// whose material indices do not fit, OptionError for bad options.
+/// the target correction is skipped); `targets`, guaranteed method only: the nodes' targets
+/// as compute_targets gives them, e.g. on a larger grid around this one (a part of a grid
+/// adapted on its own), instead of the ones of this grid (nullptr); the steps after it (the
+/// frozen nodes, the correction, the spacing) run on them as usual. Throws InputError for
+/// inconsistent sizes or a model whose material indices do not fit, OptionError for bad
+/// options or targets of the wrong size.
 template <class M>
 AdaptResult<M> adapt(const M& grid, const Fractions& fractions, const CellMaterials& material,
                      const AdaptOptions& options = {},
-                     const reconstruct::InterfaceModel* model = nullptr);
+                     const reconstruct::InterfaceModel* model = nullptr,
+                     const Targets* targets = nullptr);
 
 /// The result of either dimension.
 using AnyAdaptResult = std::variant<AdaptResult<QuadMesh>, AdaptResult<HexMesh>>;
 
 /// The same on an assigned grid (io::to_assigned_grid); InputError when it has no material.
 AnyAdaptResult adapt(const AssignedGrid& grid, const AdaptOptions& options = {},
-                     const reconstruct::InterfaceModel* model = nullptr);
+                     const reconstruct::InterfaceModel* model = nullptr,
+                     const Targets* targets = nullptr);
 
 /// What resume_moves did.
 struct ResumeResult {

@@ -23,18 +23,27 @@
 // makes every material's volume exact where the interface can absorb it, at the price of
 // placing a resolved interface off its fractions' planes to make up for material the
 // assignment lost elsewhere (thin filaments): the discrepancy can rise (docs/results.md).
+//
+// On a grid split among processes (VolumeParts), each holding its part with ghost layers
+// around it, the volumes and rates are sums over the whole grid: each process counts its own
+// cells and nodes, and the sums are added up across the processes at every sweep, so that
+// every part offsets its targets as one process offsetting the whole grid would.
 #pragma once
+
+#include <functional>
+#include <vector>
 
 #include "hexadapt/adapt/targets.h"
 #include "hexadapt/mesh/fractions.h"
 
 namespace hexadapt {
 
-/// Offsets the targets in place (TargetOptions::volume_*).
+/// Offsets the targets in place (TargetOptions::volume_*); `parts`: when the mesh is one
+/// process's part of a grid (nullptr: the whole grid).
 template <class M>
 void conserve_target_volumes(const M& mesh, const Fractions& fractions,
                              const CellMaterials& material,
                              const IdVector<NodeId, NodeConstraint>& boundary, Targets& targets,
-                             const TargetOptions& options);
+                             const TargetOptions& options, const VolumeParts* parts = nullptr);
 
 }  // namespace hexadapt

@@ -28,6 +28,7 @@
 // (adapt/target_volume.h).
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "hexadapt/adapt/node_constraint.h"
@@ -75,13 +76,26 @@ struct Targets {
   index_t n_interface_nodes = 0;
 };
 
+/// One process's part of a grid split among processes, for the sums over the whole grid that
+/// the volume offset needs (adapt/target_volume.h): the part's cells and nodes this process
+/// counts (each cell and node of the grid counted by one process) and how its sums are added
+/// to the others'.
+struct VolumeParts {
+  IdVector<CellId, char> counted_cells;
+  IdVector<NodeId, char> counted_nodes;
+  /// Replaces every value by its sum over the processes, added in the same order on each.
+  std::function<void(std::vector<double>&)> add_up;
+};
+
 /// `material` holds one material index per cell (the assignment); `fractions` the volume
 /// fractions. `boundary` is the boundary constraint of every node (boundary_constraints()).
-/// Throws InputError when sizes disagree or a material index is out of range.
+/// `parts`: the mesh is one process's part of a grid, with enough cells around the nodes it
+/// counts that their targets are the whole grid's (nullptr: the whole grid). Throws InputError
+/// when sizes disagree or a material index is out of range.
 template <class M>
 Targets compute_targets(const M& mesh, const Fractions& fractions, const CellMaterials& material,
                         const IdVector<NodeId, NodeConstraint>& boundary,
-                        const TargetOptions& options = {});
+                        const TargetOptions& options = {}, const VolumeParts* parts = nullptr);
 
 /// Least-squares gradient of every material's fraction in cell c (one per material).
 template <class M>
