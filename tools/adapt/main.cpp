@@ -631,7 +631,7 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
         static_cast<double>(cells) * cli::adapt_bytes_per_cell, common.memory_limit());
     part = own_slab(in, args);
   });
-  slab_targets(comm, part, options);
+  cli::on_every_rank(comm, app, [&] { slab_targets(comm, part, options); });
   options.boundary.frozen = cut_nodes(part);
   options.progress = comm.rank() == 0 ? cli::terminal_progress(common) : nullptr;
   times.emplace_back("read", clock.seconds());
