@@ -30,9 +30,6 @@
 // every part offsets its targets as one process offsetting the whole grid would.
 #pragma once
 
-#include <functional>
-#include <vector>
-
 #include "hexadapt/adapt/targets.h"
 #include "hexadapt/mesh/fractions.h"
 
