@@ -579,8 +579,32 @@ Json all_ranks(const dist::Communicator& comm, const Json& mine) {
   return all;
 }
 
-// Every rank's failing cells (output ids shifted by the cells of the ranks before, as in the
-// gathered mesh), in rank order.
+// The worst of every rank's failing cells (ids of the whole run), on every rank: the ten that
+// one process would list among them.
+std::vector<CellFailure> worst_on_ranks(const dist::Communicator& comm,
+                                        const std::vector<CellFailure>& mine) {
+  constexpr std::size_t fields = 7;
+  std::vector<double> packed;
+  for (const CellFailure& f : mine)
+    packed.insert(packed.end(),
+                  {static_cast<double>(f.cell.value()), f.scaled_jacobian, f.shortest_edge,
+                   f.min_length, f.centroid.x(), f.centroid.y(), f.centroid.z()});
+  const std::vector<double> all = dist::all_gather_values(comm, packed);
+  std::vector<CellFailure> failures;
+  for (std::size_t k = 0; k + fields <= all.size(); k += fields) {
+    CellFailure f;
+    f.cell = CellId(static_cast<index_t>(all[k]));
+    f.scaled_jacobian = all[k + 1];
+    f.shortest_edge = all[k + 2];
+    f.min_length = all[k + 3];
+    f.centroid = Vec3(all[k + 4], all[k + 5], all[k + 6]);
+    failures.push_back(f);
+  }
+  return worst_failures(std::move(failures), 10);
+}
+
+// The worst failing cells of the output (ids shifted by the cells of the ranks before, as in
+// the gathered mesh).
 Json rank_failures(const dist::Communicator& comm, const std::vector<CellFailure>& failures,
                    index_t n_cells, double threshold) {
   const std::vector<std::int64_t> counts =
@@ -590,10 +614,7 @@ Json rank_failures(const dist::Communicator& comm, const std::vector<CellFailure
     shift += static_cast<index_t>(counts[static_cast<std::size_t>(r)]);
   std::vector<CellFailure> mine = failures;
   for (CellFailure& f : mine) f.cell = CellId(f.cell.value() + shift);
-  Json all = Json::array();
-  for (Json& rank : all_ranks(comm, failures_json(mine, threshold)))
-    for (Json& f : rank) all.push_back(std::move(f));
-  return all;
+  return failures_json(worst_on_ranks(comm, mine), threshold);
 }
 
 // On the ranks of an MPI job, after ParMmg's iterative interface displacement: each rank reads
@@ -646,7 +667,7 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
     return in.slab.block.global(CellId(c.value() + part.first_cell));
   };
   std::vector<std::int64_t> bad;
-  std::string worst_input;
+  std::vector<CellFailure> worst_input;  // of the ranks that stopped on their input
   bool stopped = false;
   std::visit(
       [&](const auto& r) {
@@ -655,8 +676,7 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
         std::vector<CellFailure> worst =
             r.stopped_bad_input ? r.failures : std::vector<CellFailure>{};
         for (CellFailure& f : worst) f.cell = CellId(static_cast<index_t>(global(f.cell)));
-        for (const Json& text : all_ranks(comm, failures_text(worst, options.threshold)))
-          worst_input += text.get<std::string>();
+        worst_input = worst_on_ranks(comm, worst);
       },
       result);
   bad = dist::all_gather_values(comm, bad);
@@ -684,7 +704,9 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
       [&](const auto& r) {
         figures = rank_figures(r, part.grid.fractions.n_cells(), top, last ? 0 : part.plane,
                                adapt_seconds);
-        failures = rank_failures(comm, r.failures, r.mesh.n_cells(), options.threshold);
+        // The ranks that did not stop adapted their slabs: their cells are not the grid's.
+        failures = stopped ? failures_json(worst_input, options.threshold)
+                           : rank_failures(comm, r.failures, r.mesh.n_cells(), options.threshold);
         steps = all_ranks(comm, {{"layers", to_string(r.layers)},
                                  {"mend_failing", r.mend_failing},
                                  {"interface_layer_cells", r.n_interface_layer_cells},
@@ -703,7 +725,8 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
   std::sort(bad.begin(), bad.end());
   if (stopped) {
     report["ranks"] = cli::ranks_json(comm, in.slab);
-    return refuse_bad_input(common, report, times, bad, worst_input, options.threshold);
+    return refuse_bad_input(common, report, times, bad,
+                            failures_text(worst_input, options.threshold), options.threshold);
   }
   clock.restart();
   for (auto& kv : cli::provenance(app)) piece.metadata.push_back(kv);

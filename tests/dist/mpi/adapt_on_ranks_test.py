@@ -199,7 +199,8 @@ for args, what in ((("--method", "base"), "--method base"), (("--model", "../vf.
           "%s on 2 ranks: exit %d, %r" % (what, code, err))
 check(not os.path.exists(path("refused", "out.pvtu")), "a refused run wrote its output")
 
-# Input cells below the threshold: every rank stops, naming them as one process does.
+# Input cells below the threshold: every rank stops, naming them and the worst of them as one
+# process does.
 g = vtk.vtkXMLStructuredGridReader()
 g.SetFileName(path("assigned.vts"))
 g.Update()
@@ -214,11 +215,15 @@ w.SetInputData(bad)
 w.Write()
 code, err = run("adapt", "bad_serial", 0, "../bad.vts", "-o", "out.vtu", "--json", "out.json")
 want = report("bad_serial").get("bad_input_cells")
+worst = [f["cell"] for f in report("bad_serial")["result"]["failures"]]
 check(code == 3 and want, "bad input on one process: exit %d, %r" % (code, want))
 for ranks in (2, 3):
     folder = "bad_%d" % ranks
     code, err = run("adapt", folder, ranks, "../bad.vts", "-o", "out.pvtu", "--json", "out.json")
     got = report(folder).get("bad_input_cells")
+    got_worst = [f["cell"] for f in report(folder)["result"]["failures"]]
+    check(got_worst == worst, "bad input on %d ranks: the worst cells %r, one process's %r"
+          % (ranks, got_worst, worst))
     check(code == 3 and got == want and err.count("warning:") == 1
           and not os.path.exists(path(folder, "out.pvtu")),
           "bad input on %d ranks: exit %d, cells %r (one process: %r), %r" % (
