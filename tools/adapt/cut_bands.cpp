@@ -1,7 +1,6 @@
 #include "cut_bands.h"
 
 #include <algorithm>
-#include <limits>
 #include <vector>
 
 #include "hexadapt/adapt/size_criterion.h"
@@ -95,10 +94,9 @@ dist::Buffer half_band(const SlabMesh<M>& slab, bool top, int rings) {
     b.put(static_cast<char>(movable));
     b.put_point(mesh.point(v));
     if (top && cut_index != unset) {
-      const NodeId k(cut_index);
-      b.put(slab.top_cut.has[k]);
-      b.put_point(slab.top_cut.position[k]);
-      put_constraint(b, slab.top_cut.interface[k]);
+      b.put(slab.targets.has[v]);
+      b.put_point(slab.targets.position[v]);
+      put_constraint(b, slab.targets.interface[v]);
     } else {
       b.put(r.has_target[v]);
       b.put_point(r.target[v]);
@@ -232,10 +230,7 @@ template <class M>
 void recount_cells(AdaptResult<M>& r, const AdaptOptions& options) {
   SizeCriterion size{options.min_edge, r.local_size};
   r.min_quality = min_quality(r.mesh);
-  r.min_edge_ratio = r.mesh.n_cells() == 0 ? 0 : std::numeric_limits<double>::infinity();
-  for (CellId c : id_range<CellId>(r.mesh.n_cells()))
-    r.min_edge_ratio =
-        std::min(r.min_edge_ratio, cell_edge_lengths(r.mesh, c).min / r.local_size[c]);
+  r.min_edge_ratio = min_edge_ratio(r.mesh, size);
   std::vector<CellFailure> failures = failing_cells(r.mesh, options.threshold, size);
   r.n_below_threshold = r.n_below_min_edge = r.n_inverted = 0;
   for (const CellFailure& f : failures) {

@@ -23,9 +23,9 @@ struct SlabMesh {
   index_t plane = 0;       ///< nodes per cut: the first ones of the slab, and the last input ones
   index_t input_nodes = 0;
   bool below = false, above = false;  ///< a cut at the bottom, at the top
-  /// The targets of the top cut's nodes from the input cells on both sides (has, position,
-  /// interface; by the cut's node order); empty without a top cut.
-  Targets top_cut;
+  /// The targets of the input nodes (has, position, interface) from the input cells on both
+  /// sides of the cuts, as the run took them.
+  Targets targets;
 };
 
 /// Moves the nodes within `rings` cells of every cut on, on the two ranks beside it; the

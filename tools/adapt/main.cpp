@@ -360,7 +360,6 @@ struct OwnSlab {
   int held = 0;                ///< layers read
   bool below = false, above = false;
   Targets targets;  ///< of the own nodes, as one process computes them on the whole grid
-  Targets top_cut;  ///< the top cut's targets (the last nodes' of `targets`)
 };
 
 // The slab's own layers from the layers read.
@@ -431,13 +430,6 @@ void slab_targets(const dist::Communicator& comm, OwnSlab& s, const AdaptOptions
           s.targets.position.push_back(frame.to_world(t.position[n]));
           s.targets.interface.push_back(t.interface[n]);
         }
-        if (s.above)
-          for (index_t k = s.nodes - s.plane; k < s.nodes; ++k) {
-            const NodeId n(k);
-            s.top_cut.has.push_back(s.targets.has[n]);
-            s.top_cut.position.push_back(s.targets.position[n]);
-            s.top_cut.interface.push_back(s.targets.interface[n]);
-          }
       },
       s.read.mesh);
   s.read = AssignedGrid();
@@ -688,7 +680,7 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
         [&](auto& r) {
           using M = std::decay_t<decltype(r.mesh)>;
           cli::SlabMesh<M> slab{r,          part.plane, part.nodes,
-                                part.below, part.above, std::move(part.top_cut)};
+                                part.below, part.above, std::move(part.targets)};
           cli::resume_across_cuts(comm, slab, cut_rings, options);
         },
         result);

@@ -3,7 +3,6 @@
 // end. Internal to the library: the pipelines (base, guaranteed) include it.
 #pragma once
 
-#include <limits>
 #include <string>
 #include <string_view>
 
@@ -71,15 +70,12 @@ void finish_result(AdaptResult<M>& r, const IdVector<NodeId, Vec3>& target,
     r.n_near_interface += r.near_interface[v];
   }
   r.min_quality = min_quality(mesh);
-  r.min_edge_ratio = std::numeric_limits<double>::infinity();
+  r.min_edge_ratio = min_edge_ratio(mesh, size);
   for (CellId c : id_range<CellId>(mesh.n_cells())) {
     const double q = mesh.cell_quality(c);
     r.n_below_threshold += q < options.threshold;
     r.n_inverted += q <= 0;
-    r.min_edge_ratio =
-        std::min(r.min_edge_ratio, cell_edge_lengths(mesh, c).min / size.local_size[c]);
   }
-  if (mesh.n_cells() == 0) r.min_edge_ratio = 0;
   std::vector<CellFailure> failures = failing_cells(mesh, options.threshold, size);
   for (const CellFailure& f : failures) r.n_below_min_edge += f.size_failed();
   r.failures = worst_failures(std::move(failures), 10);

@@ -21,6 +21,15 @@ IdVector<CellId, double> mean_edge_lengths(const M& grid) {
 }
 
 template <class M>
+double min_edge_ratio(const M& mesh, const SizeCriterion& size) {
+  if (mesh.n_cells() == 0) return 0;
+  double ratio = std::numeric_limits<double>::infinity();
+  for (CellId c : id_range<CellId>(mesh.n_cells()))
+    ratio = std::min(ratio, cell_edge_lengths(mesh, c).min / size.local_size[c]);
+  return ratio;
+}
+
+template <class M>
 double size_ratio(const M& mesh, CellId c, const SizeCriterion& size) {
   if (!size.on()) return std::numeric_limits<double>::infinity();
   return cell_edge_lengths(mesh, c).min / size.min_length(c);
@@ -40,15 +49,17 @@ std::vector<CellFailure> failing_cells(const M& mesh, double threshold, const Si
 }
 
 std::vector<CellFailure> worst_failures(std::vector<CellFailure> failures, std::size_t count) {
-  std::stable_sort(failures.begin(), failures.end(),
-                   [](const CellFailure& a, const CellFailure& b) { return a.score() < b.score(); });
+  std::stable_sort(
+      failures.begin(), failures.end(),
+      [](const CellFailure& a, const CellFailure& b) { return a.score() < b.score(); });
   if (failures.size() > count) failures.resize(count);
   return failures;
 }
 
-#define HEXADAPT_INSTANTIATE(M)                                                        \
-  template IdVector<CellId, double> mean_edge_lengths<M>(const M&);                    \
-  template double size_ratio<M>(const M&, CellId, const SizeCriterion&);               \
+#define HEXADAPT_INSTANTIATE(M)                                          \
+  template IdVector<CellId, double> mean_edge_lengths<M>(const M&);      \
+  template double min_edge_ratio<M>(const M&, const SizeCriterion&);     \
+  template double size_ratio<M>(const M&, CellId, const SizeCriterion&); \
   template std::vector<CellFailure> failing_cells<M>(const M&, double, const SizeCriterion&);
 HEXADAPT_INSTANTIATE(QuadMesh)
 HEXADAPT_INSTANTIATE(HexMesh)

@@ -52,6 +52,11 @@ EdgeLengths cell_edge_lengths(const M& mesh, CellId c) {
 template <class M>
 IdVector<CellId, double> mean_edge_lengths(const M& grid);
 
+/// The smallest shortest edge / local size over the mesh's cells (`size.local_size`); 0 for a
+/// mesh without cells.
+template <class M>
+double min_edge_ratio(const M& mesh, const SizeCriterion& size);
+
 /// The criterion `min_edge` on the cells of `grid` itself (local sizes kept even when off).
 template <class M>
 SizeCriterion size_criterion(const M& grid, double min_edge) {
