@@ -179,6 +179,108 @@ TEST(FrozenNodes, LetGoTheyMoveOn) {
   });
 }
 
+// Lets every frozen node of an adapted mesh go and moves the nodes on (resume_moves): the
+// interface nodes then within near_interface of their surface, and the sum of their surface
+// distances.
+template <class M>
+std::pair<index_t, double> let_go(AdaptResult<M>& r, const AdaptOptions& o) {
+  Targets targets;
+  targets.has = r.has_target;
+  targets.position = r.target;
+  targets.interface = r.sliding;
+  IdVector<NodeId, NodeConstraint> sliding;
+  for (const NodeConstraint& c : r.sliding) {
+    NodeConstraint free;
+    for (int n = 0; n < c.n_normals(); ++n) free.add(c.normal(n));
+    sliding.push_back(free);
+  }
+  const SizeCriterion size{o.min_edge, r.local_size};
+  AdaptOptions moves = o;
+  moves.boundary.frozen = {};
+  resume_moves(r.mesh, targets, sliding, size, moves);
+  EXPECT_TRUE(failing_cells(r.mesh, o.threshold, size).empty());
+  index_t near = 0;
+  double sum = 0;
+  for (NodeId v : id_range<NodeId>(r.mesh.n_nodes())) {
+    if (!r.has_target[v]) continue;
+    const double d = surface_distance(r.mesh.point(v), r.target[v], sliding[v]);
+    near += d <= o.near_interface * node_local_size(r.mesh, v, size);
+    sum += d;
+  }
+  return {near, sum};
+}
+
+// The nodes of a plane across the asteroid at 20^3 frozen with their layers (pillow_frozen):
+// the cells around them are pillowed, their copies frozen, every cell passes; once they are
+// let go, the nodes end as near their interface as when nothing was frozen, nearer than when
+// the cells around the plane were left unpillowed.
+TEST(FrozenNodes, PillowedThroughAPlane) {
+  test::with_generated_case({"asteroid", {20, 20, 20}}, [](const auto& grid, const Fractions& f,
+                                                           const IdVector<CellId, int>& m) {
+    using M = std::decay_t<decltype(grid)>;
+    if constexpr (std::is_same_v<M, HexMesh>) {
+      const index_t plane = 21 * 21;
+      AdaptOptions o;
+      auto free_run = adapt(grid, f, m, o);
+      o.boundary.frozen.assign(static_cast<std::size_t>(grid.n_nodes()), 0);
+      for (index_t k = 0; k < plane; ++k) o.boundary.frozen[NodeId(10 * plane + k)] = 1;
+      auto left_out = adapt(grid, f, m, o);
+      o.boundary.pillow_frozen = true;
+      auto through = adapt(grid, f, m, o);
+      ASSERT_EQ(through.n_below_threshold + through.n_below_min_edge, 0);
+      for (index_t k = 0; k < plane; ++k) {
+        const NodeId v(10 * plane + k);
+        EXPECT_EQ(through.mesh.point(v), grid.point(v));
+      }
+      index_t copies = 0;
+      for (NodeId v : id_range<NodeId>(through.mesh.n_nodes()))
+        copies += v.value() >= grid.n_nodes() && through.sliding[v].frozen();
+      const auto [free_near, free_sum] = let_go(free_run, o);
+      const auto [left_near, left_sum] = let_go(left_out, o);
+      const auto [near, sum] = let_go(through, o);
+      EXPECT_GT(copies, 0);
+      EXPECT_GE(near, free_near - free_near / 100);  // 782 and 782 when measured
+      EXPECT_GT(near, left_near);                    // 772
+      EXPECT_LT(sum, left_sum / 100);                // 5e-16 against 0.109
+    }
+  });
+}
+
+// Two parts of a grid at 20^3, each holding three layers beyond the cut at layer 10, with the
+// cut's nodes frozen with their layers (pillow_frozen): both lay the same copies of the cut's
+// nodes, to the bit, whatever lies beyond, on the asteroid (2 materials) and the Venn case (4).
+// (Where a mending run leaves cells out near the cut, as on the drop at t = 1 and the vortex,
+// each part leaves out its own: the parts' layers differ there.)
+TEST(FrozenNodes, PartsLayTheSameLayersAcrossACut) {
+  for (const test::GeneratedCase& c :
+       {test::GeneratedCase{"asteroid", {20, 20, 20}}, test::GeneratedCase{"venn", {20, 20, 20}}})
+    test::with_generated_case(
+        c, [](const auto& grid, const Fractions& f, const IdVector<CellId, int>& m) {
+          if constexpr (std::is_same_v<std::decay_t<decltype(grid)>, HexMesh>) {
+            std::array<std::vector<std::array<double, 3>>, 2> copies;
+            const std::array<std::array<int, 2>, 2> layers{{{0, 13}, {7, 20}}};
+            for (std::size_t k = 0; k < 2; ++k) {
+              Part p = part_of(grid, f, m, 20, 20, 20, layers[k][0], layers[k][1]);
+              std::fill(p.frozen.begin(), p.frozen.end(), 0);
+              const index_t cut = 10 - layers[k][0];
+              for (index_t v = 0; v < p.plane; ++v) p.frozen[NodeId(cut * p.plane + v)] = 1;
+              AdaptOptions o = frozen_options(p);
+              o.boundary.pillow_frozen = true;
+              const auto r = adapt(p.grid, p.fractions, p.material, o);
+              ASSERT_EQ(r.n_below_threshold + r.n_below_min_edge, 0);
+              for (NodeId v : id_range<NodeId>(r.mesh.n_nodes()))
+                if (v.value() >= p.grid.n_nodes() && r.sliding[v].frozen()) {
+                  const Vec3 x = r.mesh.point(v);
+                  copies[k].push_back({x.x(), x.y(), x.z()});
+                }
+              std::sort(copies[k].begin(), copies[k].end());
+            }
+            EXPECT_GT(copies[0].size(), 0U);
+            EXPECT_EQ(copies[0], copies[1]);
+          }
+        });
+}
+
 // Two parts of a grid adding up their sums, each on its own thread, as two ranks do.
 class TwoParts {
  public:

@@ -220,6 +220,7 @@ struct FirstMove {
   std::vector<InterfacePillowAttempt> pillows;
   IdVector<CellId, CellId> cell_origin;  ///< the input cell each cell comes from
   IdVector<NodeId, NodeId> node_origin;  ///< the input node each node is (a copy of)
+  BoundaryOptions boundary;  ///< on mesh: with pillow_frozen, frozen nodes' copies frozen too
   index_t layer_cells = 0;
   double surface_dist = 0;  ///< sum of surface distances after the move
   double pillow_seconds = 0, move_seconds = 0;
@@ -231,7 +232,7 @@ template <class M>
 FirstMove<M> first_move(const M& mesh, const CellMaterials& material, const Targets& targets,
                         const SizeCriterion& size, bool pillow_first, int n_materials,
                         const AdaptOptions& options, const std::vector<CellId>* mend) {
-  FirstMove<M> f{mesh, material, targets, size, {}, {}, {}, {}, 0, 0, 0, 0};
+  FirstMove<M> f{mesh, material, targets, size, {}, {}, {}, {}, options.boundary, 0, 0, 0, 0};
   if (options.progress) options.progress("pillow", 0.0);
   for (CellId c : id_range<CellId>(mesh.n_cells())) f.cell_origin.push_back(c);
   for (NodeId v : id_range<NodeId>(mesh.n_nodes())) f.node_origin.push_back(v);
@@ -250,12 +251,12 @@ FirstMove<M> first_move(const M& mesh, const CellMaterials& material, const Targ
     f.mesh = std::move(p.mesh);
     f.material = std::move(p.material);
     extend_targets(f.mesh, f.targets);
+    f.boundary = options.boundary.on_copies(f.node_origin);
   }
   f.pillow_seconds = clock.seconds();
   if (options.progress) options.progress("move", 0.2);
   clock.restart();
-  const auto sliding =
-      sliding_constraints(boundary_constraints(f.mesh, options.boundary), f.targets);
+  const auto sliding = sliding_constraints(boundary_constraints(f.mesh, f.boundary), f.targets);
   f.move = controlled_move(f.mesh, f.targets, options.move, options, f.size, &sliding);
   f.surface_dist = surface_distance_sum(f.mesh, f.targets, sliding);
   f.move_seconds = clock.seconds();
@@ -366,10 +367,12 @@ struct Mend {
 template <class M>
 void run_layers(const M& grid, const CellMaterials& material, const Targets& grid_targets,
                 const SizeCriterion& grid_size, int n_materials, LayerStrategy layers,
-                AdaptResult<M>& r, const AdaptOptions& options, Mend* mend = nullptr) {
+                AdaptResult<M>& r, const AdaptOptions& given, Mend* mend = nullptr) {
   r.layers = layers;
   FirstMove<M> f = first_move(grid, material, grid_targets, grid_size, pillows_first(layers),
-                              n_materials, options, mend ? &mend->cells : nullptr);
+                              n_materials, given, mend ? &mend->cells : nullptr);
+  AdaptOptions options = given;  // the steps after the layers hold the frozen nodes' copies
+  options.boundary = std::move(f.boundary);
   M mesh = std::move(f.mesh);
   IdVector<CellId, int> out_material = std::move(f.material);
   Targets targets = std::move(f.targets);

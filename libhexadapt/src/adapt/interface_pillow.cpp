@@ -42,15 +42,37 @@ bool touches(const M& mesh, CellId c, const IdVector<NodeId, char>& nodes) {
   return false;
 }
 
+// With pillow_frozen: smooths the new copies of frozen nodes among themselves, every other
+// node held, so that where they go depends on the cells around them only.
+template <class M>
+void place_frozen_copies(PillowResult<M>& p, index_t n_old, const BoundaryOptions& pillowed,
+                         const IdVector<NodeId, char>& movable, const StepSettings& o,
+                         const SizeCriterion& size) {
+  if (!pillowed.pillow_frozen || pillowed.frozen.empty()) return;
+  IdVector<NodeId, char> copies(static_cast<std::size_t>(p.mesh.n_nodes()), 0);
+  for (NodeId v : id_range<NodeId>(p.mesh.n_nodes()))
+    copies[v] = v.value() >= n_old && movable[v] && pillowed.is_frozen(v);
+  smooth(p.mesh, copies, boundary_constraints(p.mesh, pillowed.without_frozen()), o.smooth, nullptr,
+         size);
+}
+
+// `origin`: the input node each node of mesh is.
 template <class M>
 Attempt<M> try_pillow(const M& mesh, const IdVector<CellId, char>& set,
                       const IdVector<NodeId, char>& fixed, const SizeCriterion& size,
-                      const StepSettings& o) {
-  Attempt<M> a{
-      pillow_cells(mesh, set, boundary_constraints(mesh, o.boundary), o.pillow, size), {}, {}};
+                      const StepSettings& o, const IdVector<NodeId, NodeId>& origin) {
+  // A frozen node's copies (pillow_frozen) start where a free node's would.
+  Attempt<M> a{pillow_cells(mesh, set, boundary_constraints(mesh, o.boundary.without_frozen()),
+                            o.pillow, size),
+               {},
+               {}};
   a.size = size.remapped(a.p.cell_origin.raw());
   const IdVector<NodeId, char> movable = layer_movable(a.p, mesh.n_nodes(), fixed);
-  smooth(a.p.mesh, movable, boundary_constraints(a.p.mesh, o.boundary), o.smooth, nullptr, a.size);
+  IdVector<NodeId, NodeId> input_node;
+  for (NodeId v : a.p.node_origin) input_node.push_back(origin[v]);
+  const BoundaryOptions pillowed = o.boundary.on_copies(input_node);
+  place_frozen_copies(a.p, mesh.n_nodes(), pillowed, movable, o, a.size);
+  smooth(a.p.mesh, movable, boundary_constraints(a.p.mesh, pillowed), o.smooth, nullptr, a.size);
   // Only the cells with a new or smoothed node changed: the others fail or pass as before
   // (a layer kept failing for another material is not this one's).
   for (CellId c : id_range<CellId>(a.p.mesh.n_cells()))
@@ -64,8 +86,6 @@ Attempt<M> try_pillow(const M& mesh, const IdVector<CellId, char>& set,
   return a;
 }
 
-// Takes out of the set the cells within vertex distance `range` of the failing origins
-// (breadth first). Returns how many left.
 // Takes the cells around frozen nodes out of the set (their faces must stay the input's);
 // returns how many were in it.
 template <class M>
@@ -84,6 +104,8 @@ index_t leave_out_frozen(const M& mesh, const BoundaryOptions& boundary,
   return removed;
 }
 
+// Takes out of the set the cells within vertex distance `range` of the failing origins
+// (breadth first). Returns how many left.
 template <class M>
 index_t carve(const M& mesh, const std::vector<CellId>& origins, int range,
               IdVector<CellId, char>& set) {
@@ -215,12 +237,13 @@ InterfacePillowResult<M> pillow_interfaces(const M& mesh, const CellMaterials& m
         ++log.left_out;
         ++log.sheet_cells;
       }
-    log.left_out += leave_out_frozen(r.mesh, shared.boundary, set);
+    if (!shared.boundary.pillow_frozen)
+      log.left_out += leave_out_frozen(r.mesh, shared.boundary, set);
     while (log.rounds < options.rounds && std::find(set.begin(), set.end(), 1) != set.end()) {
       ++log.rounds;
       std::optional<Attempt<M>> tried;
       try {
-        tried.emplace(try_pillow(r.mesh, set, still, current, shared));
+        tried.emplace(try_pillow(r.mesh, set, still, current, shared, r.node_origin));
       } catch (const MeshError&) {
         // The set touches itself along an edge where no layer can follow it: those places
         // are carved out, and the layer tried again.

@@ -71,6 +71,15 @@ IdVector<NodeId, NodeConstraint> boundary_constraints(const M& mesh,
   return out;
 }
 
+BoundaryOptions BoundaryOptions::on_copies(const IdVector<NodeId, NodeId>& origin) const {
+  if (!pillow_frozen || frozen.empty()) return *this;
+  BoundaryOptions out = *this;
+  out.frozen.assign(origin.size(), 0);
+  for (NodeId v : id_range<NodeId>(static_cast<index_t>(origin.size())))
+    out.frozen[v] = is_frozen(origin[v]);
+  return out;
+}
+
 template IdVector<NodeId, NodeConstraint> boundary_constraints<QuadMesh>(const QuadMesh&,
                                                                          const BoundaryOptions&);
 template IdVector<NodeId, NodeConstraint> boundary_constraints<HexMesh>(const HexMesh&,

@@ -24,8 +24,9 @@
 // off by default. With the size criterion on, targets closer than it lets their grid edge
 // be are then pushed apart along their interface (target_spacing.h). Frozen nodes
 // (BoundaryOptions::frozen, guaranteed method) never move and get no layer or cavity around
-// them; resume_moves moves the nodes of an adapted mesh on once they are let go (what the
-// parts adapted on the ranks of an MPI job do where they meet).
+// them (with pillow_frozen: their layers, the copies frozen too); resume_moves moves the
+// nodes of an adapted mesh on once they are let go (what the parts adapted on the ranks of an
+// MPI job do where they meet).
 #pragma once
 
 #include <string>

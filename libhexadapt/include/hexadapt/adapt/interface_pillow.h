@@ -15,7 +15,9 @@
 // what is left of the region touches itself along an edge in a way no layer can follow
 // (pillow.h), the cells around such edges are carved out the same way. Nodes with a target
 // never move here; the cells outside a kept layer and its ring are the input's. The cells
-// around a frozen node (BoundaryOptions::frozen) are left out of every set from the start.
+// around a frozen node (BoundaryOptions::frozen) are left out of every set from the start,
+// unless pillow_frozen: then they are pillowed as the others, and a frozen node's copies,
+// placed as a free node's, smoothed among themselves (every other node held) and frozen.
 //
 // A cell one cell thick between two other materials (across two facing faces), as in the wedge
 // of air where a drop meets a pool, is left out of its material's layer from the start: with

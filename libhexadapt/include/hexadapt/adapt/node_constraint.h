@@ -45,8 +45,15 @@ struct BoundaryOptions {
   /// The input nodes that never move (1), by input node id; empty: none. A part of a grid
   /// adapted on its own, as one rank's, freezes the nodes it shares with the other parts, so
   /// that the parts' faces there stay the input's and the parts fit together. The cells around
-  /// a frozen node are never pillowed (guaranteed method only).
+  /// a frozen node are never pillowed (guaranteed method only), unless pillow_frozen.
   IdVector<NodeId, char> frozen;
+  /// Pillow the cells around the frozen nodes as the others (interface_pillow.h): a frozen
+  /// node's copies start where a free node's would (pillow.h), are smoothed among themselves
+  /// with every other node held, then frozen there: where they go depends on the cells
+  /// around them only, not on how far the grid goes beyond. Two parts of a grid holding the
+  /// cells around the frozen nodes lay the same layers across them, unless a run of the
+  /// mending (AdaptOptions::mend_rounds) leaves out cells near them on one part only.
+  bool pillow_frozen = false;
 
   /// The same options without frozen nodes (for a patch of the mesh with its own node ids).
   BoundaryOptions without_frozen() const {
@@ -55,6 +62,9 @@ struct BoundaryOptions {
     return out;
   }
   bool is_frozen(NodeId v) const { return v.idx() < frozen.size() && frozen[v] != 0; }
+  /// The same options on a mesh whose node v is a copy of input node origin[v] (a pillowed
+  /// mesh): with pillow_frozen, the copies of frozen nodes are frozen too.
+  BoundaryOptions on_copies(const IdVector<NodeId, NodeId>& origin) const;
 };
 
 /// The boundary constraint of every node: free inside, on its plane on a boundary face, on
