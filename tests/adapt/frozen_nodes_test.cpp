@@ -233,8 +233,15 @@ TEST(FrozenNodes, PillowedThroughAPlane) {
         EXPECT_EQ(through.mesh.point(v), grid.point(v));
       }
       index_t copies = 0;
-      for (NodeId v : id_range<NodeId>(through.mesh.n_nodes()))
+      ASSERT_EQ(through.node_origin.size(), static_cast<std::size_t>(through.mesh.n_nodes()));
+      ASSERT_EQ(through.cell_origin.size(), static_cast<std::size_t>(through.mesh.n_cells()));
+      for (NodeId v : id_range<NodeId>(through.mesh.n_nodes())) {
+        // Frozen: the plane's nodes and their copies, no other.
+        EXPECT_EQ(through.sliding[v].frozen(), o.boundary.is_frozen(through.node_origin[v]));
         copies += v.value() >= grid.n_nodes() && through.sliding[v].frozen();
+      }
+      for (CellId c : id_range<CellId>(through.mesh.n_cells()))
+        EXPECT_EQ(through.material[c], m[through.cell_origin[c]]);
       const auto [free_near, free_sum] = let_go(free_run, o);
       const auto [left_near, left_sum] = let_go(left_out, o);
       const auto [near, sum] = let_go(through, o);

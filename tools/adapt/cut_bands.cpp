@@ -1,9 +1,12 @@
 #include "cut_bands.h"
 
 #include <algorithm>
+#include <array>
+#include <map>
 #include <vector>
 
 #include "hexadapt/adapt/size_criterion.h"
+#include "hexadapt/core/error.h"
 #include "hexadapt/mesh/quad_mesh.h"
 #include "hexadapt/mesh/unit_frame.h"
 
@@ -57,20 +60,24 @@ NodeConstraint get_constraint(dist::Buffer& b) {
   return c;
 }
 
+// A constraint without its freeze: what a node of a cut may do once let go.
+NodeConstraint let_go(const NodeConstraint& c) {
+  NodeConstraint out;
+  for (int k = 0; k < c.n_normals(); ++k) out.add(c.normal(k));
+  return out;
+}
+
 // A rank's half of a band: its cells near the cut and their nodes, with what the moves need.
-// The lower rank gives its cut nodes the targets from both sides' input cells, and their
-// interface directions only (the band adds their boundary).
+// The nodes it moves go let go (the band adds the boundary of the cut's); the nodes of the
+// slab's other cut stay frozen.
 template <class M>
 dist::Buffer half_band(const SlabMesh<M>& slab, bool top, int rings) {
   const AdaptResult<M>& r = slab.result;
   const M& mesh = r.mesh;
-  std::vector<NodeId> cut, other;
-  const index_t first = top ? slab.input_nodes - slab.plane : 0;
-  for (index_t k = 0; k < slab.plane; ++k) cut.push_back(NodeId(first + k));
-  if (top ? slab.below : slab.above) {
-    const index_t at = top ? 0 : slab.input_nodes - slab.plane;
-    for (index_t k = 0; k < slab.plane; ++k) other.push_back(NodeId(at + k));
-  }
+  const CutSide side = top ? CutSide::above : CutSide::below;
+  std::vector<NodeId> cut;
+  for (NodeId v : id_range<NodeId>(mesh.n_nodes()))
+    if (slab.cut[v] == side) cut.push_back(v);
   const auto [cells, ring] = band_of(mesh, cut, rings);
   std::vector<index_t> slot(static_cast<std::size_t>(mesh.n_nodes()), unset);
   std::vector<NodeId> nodes;
@@ -79,29 +86,18 @@ dist::Buffer half_band(const SlabMesh<M>& slab, bool top, int rings) {
       slot[v.idx()] = static_cast<index_t>(nodes.size());
       nodes.push_back(v);
     }
-  std::vector<char> on_other(static_cast<std::size_t>(mesh.n_nodes()), 0);
-  for (NodeId v : other) on_other[v.idx()] = 1;
   dist::Buffer b;
   b.put(static_cast<std::uint64_t>(nodes.size()));
   for (NodeId v : nodes) {
-    const index_t cut_index =
-        v.value() >= first && v.value() < first + slab.plane && ring[v.idx()] == 0
-            ? v.value() - first
-            : unset;
-    const bool movable = ring[v.idx()] < rings && !on_other[v.idx()];
+    const bool on_cut = slab.cut[v] == side;
+    const bool movable = ring[v.idx()] < rings && (on_cut || slab.cut[v] == CutSide::none);
     b.put(v.value());
-    b.put(cut_index);
+    b.put(static_cast<char>(on_cut));
     b.put(static_cast<char>(movable));
     b.put_point(mesh.point(v));
-    if (top && cut_index != unset) {
-      b.put(slab.targets.has[v]);
-      b.put_point(slab.targets.position[v]);
-      put_constraint(b, slab.targets.interface[v]);
-    } else {
-      b.put(r.has_target[v]);
-      b.put_point(r.target[v]);
-      put_constraint(b, r.sliding[v]);
-    }
+    b.put(r.has_target[v]);
+    b.put_point(r.target[v]);
+    put_constraint(b, movable ? let_go(r.sliding[v]) : r.sliding[v]);
   }
   b.put(static_cast<std::uint64_t>(cells.size()));
   for (CellId c : cells) {
@@ -123,12 +119,18 @@ struct Band {
   std::array<std::vector<std::pair<NodeId, NodeId>>, 2> ids;
 };
 
+// A point as a key: both ranks place a cut's nodes and their copies at the same points.
+std::array<double, 3> key(const Vec3& p) {
+  return {p.x(), p.y(), p.z()};
+}
+
 template <class M>
 Band<M> joined(std::array<dist::Buffer, 2> halves, double min_edge, const BoundaryOptions& bo) {
   Band<M> band;
   std::vector<Vec3> points;
   std::vector<typename M::CellNodes> cells;
-  std::vector<index_t> cut_band;  // band id of each cut node, from the lower half
+  std::map<std::array<double, 3>, index_t>
+      cut_band;  // band id of each cut node, from the lower half
   std::vector<char> is_cut, movable;
   for (int h = 0; h < 2; ++h) {
     dist::Buffer& b = halves[static_cast<std::size_t>(h)];
@@ -136,27 +138,26 @@ Band<M> joined(std::array<dist::Buffer, 2> halves, double min_edge, const Bounda
     std::vector<index_t> to(n);
     for (std::uint64_t i = 0; i < n; ++i) {
       const NodeId local(b.get<index_t>());
-      const auto cut_index = b.get<index_t>();
+      const bool on_cut = b.get<char>() != 0;
       const bool move = b.get<char>() != 0;
       const Vec3 p = b.get_point();
       const char has = b.get<char>();
       const Vec3 target = b.get_point();
       const NodeConstraint c = get_constraint(b);
-      if (h == 1 && cut_index != unset) {  // the lower half has it
-        to[i] = cut_band.at(static_cast<std::size_t>(cut_index));
+      if (h == 1 && on_cut) {  // the lower half has it
+        const auto at = cut_band.find(key(p));
+        if (at == cut_band.end())
+          throw InternalError("a node of a cut on the rank above is not the rank below's");
+        to[i] = at->second;
       } else {
         to[i] = static_cast<index_t>(points.size());
         points.push_back(p);
         band.targets.has.push_back(has);
         band.targets.position.push_back(target);
         band.sliding.push_back(c);
-        is_cut.push_back(cut_index != unset);
+        is_cut.push_back(on_cut);
         movable.push_back(move);
-        if (cut_index != unset) {
-          if (static_cast<std::size_t>(cut_index) >= cut_band.size())
-            cut_band.resize(static_cast<std::size_t>(cut_index) + 1, unset);
-          cut_band[static_cast<std::size_t>(cut_index)] = to[i];
-        }
+        if (on_cut) cut_band.emplace(key(p), to[i]);
       }
       band.ids[static_cast<std::size_t>(h)].emplace_back(local, NodeId(to[i]));
     }
@@ -241,10 +242,53 @@ void recount_cells(AdaptResult<M>& r, const AdaptOptions& options) {
   r.failures = worst_failures(std::move(failures), 10);
 }
 
+// The part's faces on one cut, each as its corners' points sorted, in order, as numbers.
+template <class M>
+std::vector<double> faces_on(const SlabMesh<M>& slab, CutSide side) {
+  std::vector<std::vector<std::array<double, 3>>> faces;
+  for (const typename M::FaceNodes& f : slab.cut_faces) {
+    if (slab.cut[f[0]] != side) continue;
+    std::vector<std::array<double, 3>> corners;
+    for (NodeId v : f) corners.push_back(key(slab.result.mesh.point(v)));
+    std::sort(corners.begin(), corners.end());
+    faces.push_back(corners);
+  }
+  std::sort(faces.begin(), faces.end());
+  std::vector<double> out;
+  for (const auto& f : faces)
+    for (const auto& p : f) out.insert(out.end(), p.begin(), p.end());
+  return out;
+}
+
 }  // namespace
 
 template <class M>
-void resume_across_cuts(const dist::Communicator& comm, SlabMesh<M>& slab, int rings,
+bool cuts_fit(const dist::Communicator& comm, const SlabMesh<M>& slab) {
+  std::vector<int> peers;
+  std::vector<std::vector<double>> faces;
+  if (slab.below) {
+    peers.push_back(comm.rank() - 1);
+    faces.push_back(faces_on(slab, CutSide::below));
+  }
+  if (slab.above) {
+    peers.push_back(comm.rank() + 1);
+    faces.push_back(faces_on(slab, CutSide::above));
+  }
+  std::vector<dist::Buffer> mine;
+  for (const auto& f : faces) {
+    mine.emplace_back();
+    mine.back().put_vector(f);
+  }
+  std::vector<dist::Buffer> theirs = dist::exchange(comm, peers, mine);
+  char fit = 1;
+  for (std::size_t k = 0; k < peers.size(); ++k)
+    fit = fit && theirs[k].get_vector<double>() == faces[k];
+  const std::vector<char> all = dist::all_gather_values(comm, std::vector<char>{fit});
+  return std::find(all.begin(), all.end(), 0) == all.end();
+}
+
+template <class M>
+void resume_across_cuts(const dist::Communicator& comm, const SlabMesh<M>& slab, int rings,
                         const AdaptOptions& options) {
   AdaptOptions moves = options;
   moves.boundary.frozen = {};
@@ -269,9 +313,11 @@ void resume_across_cuts(const dist::Communicator& comm, SlabMesh<M>& slab, int r
   recount_cells(slab.result, options);
 }
 
-template void resume_across_cuts<QuadMesh>(const dist::Communicator&, SlabMesh<QuadMesh>&, int,
-                                           const AdaptOptions&);
-template void resume_across_cuts<HexMesh>(const dist::Communicator&, SlabMesh<HexMesh>&, int,
+template bool cuts_fit<QuadMesh>(const dist::Communicator&, const SlabMesh<QuadMesh>&);
+template bool cuts_fit<HexMesh>(const dist::Communicator&, const SlabMesh<HexMesh>&);
+template void resume_across_cuts<QuadMesh>(const dist::Communicator&, const SlabMesh<QuadMesh>&,
+                                           int, const AdaptOptions&);
+template void resume_across_cuts<HexMesh>(const dist::Communicator&, const SlabMesh<HexMesh>&, int,
                                           const AdaptOptions&);
 
 }  // namespace hexadapt::cli

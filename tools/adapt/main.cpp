@@ -1,10 +1,12 @@
 // hexadapt-adapt: moves the interface nodes of an assigned grid onto the material interfaces
 // and pillows, giving a conformal mesh whose cells each hold one material (paper sec. 5).
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <limits>
 #include <map>
 #include <string>
+#include <tuple>
 #include <variant>
 #include <vector>
 
@@ -20,6 +22,7 @@
 #include "hexadapt/reconstruct/model_io.h"
 #include "input_record.h"
 #include "memory.h"
+#include "own_part.h"
 #include "rank_files.h"
 #include "ranks.h"
 
@@ -342,10 +345,10 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
 // The rings of cells on each side of a cut whose nodes the second pass moves on.
 constexpr int cut_rings = 4;
 
-// The layers of cells a rank reads beyond its own on each side: a node's target comes from
-// the faces around it, their cells' fraction gradients (fitted over the cells around those)
-// and the columns of three cells across a sheet; three layers hold all of them for the
-// nodes of the own layers, the cuts' too.
+// The layers of cells a rank reads and adapts beyond its own on each side: a node's target
+// comes from the faces around it, their cells' fraction gradients (fitted over the cells
+// around those) and the columns of three cells across a sheet; three layers hold all of them
+// for the nodes of the own layers, the cuts' too, and the cells whose layers cross a cut.
 constexpr int target_ghost_layers = 3;
 
 // A rank's own layers of the grid, with the targets of their nodes.
@@ -359,7 +362,8 @@ struct OwnSlab {
   std::array<int, 2> owned{};  ///< the own layers among those read, [first, end)
   int held = 0;                ///< layers read
   bool below = false, above = false;
-  Targets targets;  ///< of the own nodes, as one process computes them on the whole grid
+  /// Of the nodes read; those of the own layers as one process computes them on the whole grid.
+  Targets targets;
 };
 
 // The slab's own layers from the layers read.
@@ -399,9 +403,10 @@ UnitFrame whole_frame(const dist::Communicator& comm, const M& mesh) {
   return unit_frame(corners);
 }
 
-// The targets of the slab's own nodes as one process computes them on the whole grid: on the
-// layers read, in the whole grid's frame, the volume offset's sums over every rank's own cells
-// and nodes (a cut's nodes counted by the rank above it). Every rank calls it.
+// The targets of the nodes read, those of the slab's own nodes as one process computes them on
+// the whole grid: on the layers read, in the whole grid's frame, the volume offset's sums over
+// every rank's own cells and nodes (a cut's nodes counted by the rank above it). Every rank
+// calls it.
 void slab_targets(const dist::Communicator& comm, OwnSlab& s, const AdaptOptions& options) {
   std::visit(
       [&](const auto& grid) {
@@ -424,31 +429,26 @@ void slab_targets(const dist::Communicator& comm, OwnSlab& s, const AdaptOptions
         const Targets t = compute_targets(
             m, s.read.fractions, s.read.material,
             boundary_constraints(m, options.boundary.without_frozen()), options.targets, &parts);
-        for (index_t v = s.owned[0] * plane; v < (s.owned[1] + 1) * plane; ++v) {
-          const NodeId n(v);
-          s.targets.has.push_back(t.has[n]);
-          s.targets.position.push_back(frame.to_world(t.position[n]));
-          s.targets.interface.push_back(t.interface[n]);
-        }
+        s.targets = t;
+        for (Vec3& p : s.targets.position.raw()) p = frame.to_world(p);
+        for (InterfaceFace& f : s.targets.faces) f.point = frame.to_world(f.point);
       },
       s.read.mesh);
-  s.read = AssignedGrid();
 }
 
-// The cuts' nodes, frozen so that the slabs' meshes keep the input's faces there and fit
-// together.
+// The cuts' nodes among those read, frozen so that the slabs' meshes fit together there.
 IdVector<NodeId, char> cut_nodes(const OwnSlab& s) {
-  const index_t n = s.nodes;
-  IdVector<NodeId, char> frozen(static_cast<std::size_t>(n), 0);
+  IdVector<NodeId, char> frozen(static_cast<std::size_t>(s.plane) * (s.held + 1), 0);
   for (index_t k = 0; k < s.plane; ++k) {
-    if (s.below) frozen[NodeId(k)] = 1;
-    if (s.above) frozen[NodeId(n - s.plane + k)] = 1;
+    if (s.below) frozen[NodeId(s.owned[0] * s.plane + k)] = 1;
+    if (s.above) frozen[NodeId(s.owned[1] * s.plane + k)] = 1;
   }
   return frozen;
 }
 
-// What a rank's result adds to the run's, one value per figure (counts are exact in a double):
-// its cells, and the nodes it owns (all but its top cut, which the rank above owns).
+// What a rank's part adds to the run's, one value per figure (counts are exact in a double):
+// its cells, and the nodes it owns (all but its top cut's nodes and their copies, which the
+// rank above owns).
 enum Figure {
   cells_in,
   cells,
@@ -474,11 +474,11 @@ enum Figure {
 };
 
 template <class M>
-std::vector<double> rank_figures(const AdaptResult<M>& r, index_t input_cells,
-                                 index_t first_not_owned, index_t not_owned, double time) {
+std::vector<double> rank_figures(const AdaptResult<M>& r, const IdVector<NodeId, cli::CutSide>& cut,
+                                 index_t input_cells, double time) {
   std::vector<double> f(n_figures, 0.0);
   for (NodeId v : id_range<NodeId>(r.mesh.n_nodes())) {
-    if (v.value() >= first_not_owned && v.value() < first_not_owned + not_owned) continue;
+    if (cut[v] == cli::CutSide::above) continue;
     f[nodes] += 1;
     if (!r.has_target[v]) continue;
     f[interface_nodes] += 1;
@@ -609,11 +609,181 @@ Json rank_failures(const dist::Communicator& comm, const std::vector<CellFailure
   return failures_json(worst_on_ranks(comm, mine), threshold);
 }
 
+// A rank's part of the mesh (own_part.h) and the cut each of its nodes lies on: its frozen
+// nodes, by the node layer of the input node they are (a copy of).
+template <class M>
+struct RankMesh {
+  cli::OwnPart<M> part;
+  IdVector<NodeId, cli::CutSide> cut;
+  /// Per node on a cut, its name on both ranks beside it: its input node and the input cells
+  /// of the cells around it, by their ids in the whole grid.
+  std::vector<std::vector<std::int64_t>> key;
+  cli::SlabMesh<M> slab(const OwnSlab& s) {
+    return {part.result, cut, part.cut_faces, s.below, s.above};
+  }
+};
+using AnyRankMesh = std::variant<RankMesh<QuadMesh>, RankMesh<HexMesh>>;
+
+template <class M>
+RankMesh<M> rank_mesh(const AdaptResult<M>& r, const OwnSlab& s, const dist::Block& block) {
+  const index_t cells = s.grid.fractions.n_cells();
+  RankMesh<M> m{cli::own_part(r, {s.first_cell, s.first_cell + cells},
+                              {s.owned[0] * s.plane, (s.owned[1] + 1) * s.plane}),
+                {},
+                {}};
+  const AdaptResult<M>& own = m.part.result;
+  m.cut.assign(static_cast<std::size_t>(own.mesh.n_nodes()), cli::CutSide::none);
+  m.key.resize(static_cast<std::size_t>(own.mesh.n_nodes()));
+  for (NodeId v : id_range<NodeId>(own.mesh.n_nodes())) {
+    if (v.idx() >= own.sliding.size() || !own.sliding[v].frozen()) continue;
+    m.cut[v] = own.node_origin[v].value() / s.plane == s.owned[0] ? cli::CutSide::below
+                                                                  : cli::CutSide::above;
+    std::vector<std::int64_t>& key = m.key[v.idx()];
+    for (CellId c : r.mesh.node_cells(m.part.source[v.idx()]))
+      key.push_back(block.global(r.cell_origin[c]));
+    std::sort(key.begin(), key.end());
+    key.erase(std::unique(key.begin(), key.end()), key.end());
+    key.insert(key.begin(), block.global(own.node_origin[v]));
+  }
+  return m;
+}
+
+// The nodes of the cuts the ranks beside them share: the cut's nodes, and the copies both
+// ranks' cells take (a copy that only one rank's cells take stays its own: its cut is set to
+// none). The rank above a cut takes the points the rank below placed the shared copies at:
+// each smoothed them among the layers it read, whose cells beyond differ, and where the
+// layers of several materials meet at the cut the points differ a little (up to 1.8e-4 of a
+// grid of 1 at 48^3). False on every rank when more cells of a part then fail a criterion
+// than before (none, unless the input's did). Every rank calls it.
+template <class M>
+bool share_cut_nodes(const dist::Communicator& comm, RankMesh<M>& m, const OwnSlab& s,
+                     const AdaptOptions& o) {
+  AdaptResult<M>& r = m.part.result;
+  std::vector<int> peers;
+  std::vector<cli::CutSide> sides;
+  for (const auto& [on, peer, side] : {std::tuple{s.below, comm.rank() - 1, cli::CutSide::below},
+                                       std::tuple{s.above, comm.rank() + 1, cli::CutSide::above}})
+    if (on) {
+      peers.push_back(peer);
+      sides.push_back(side);
+    }
+  std::vector<dist::Buffer> mine;
+  for (cli::CutSide side : sides) {
+    dist::Buffer& b = mine.emplace_back();
+    for (NodeId v : id_range<NodeId>(r.mesh.n_nodes()))
+      if (m.cut[v] == side) {
+        b.put_vector(m.key[v.idx()]);
+        b.put_point(r.mesh.point(v));
+      }
+  }
+  std::vector<dist::Buffer> theirs = dist::exchange(comm, peers, mine);
+  const SizeCriterion size{o.min_edge, r.local_size};
+  const std::size_t failing = failing_cells(r.mesh, o.threshold, size).size();  // bad input's
+  for (std::size_t k = 0; k < sides.size(); ++k) {
+    std::map<std::vector<std::int64_t>, Vec3> other;
+    for (dist::Buffer& b = theirs[k]; !b.done();) {
+      std::vector<std::int64_t> key = b.get_vector<std::int64_t>();
+      other.emplace(std::move(key), b.get_point());
+    }
+    for (NodeId v : id_range<NodeId>(r.mesh.n_nodes())) {
+      if (m.cut[v] != sides[k]) continue;
+      const auto at = other.find(m.key[v.idx()]);
+      if (at == other.end()) {
+        m.cut[v] = cli::CutSide::none;
+      } else if (sides[k] == cli::CutSide::below) {
+        r.mesh.set_point(v, at->second);
+        if (!r.has_target[v]) r.target[v] = at->second;
+      }
+    }
+  }
+  const char fit = failing_cells(r.mesh, o.threshold, size).size() <= failing;
+  const std::vector<char> all = dist::all_gather_values(comm, std::vector<char>{fit});
+  return std::find(all.begin(), all.end(), 0) == all.end();
+}
+
+// Whether some rank stopped on bad input cells (the guaranteed method does not start from
+// them): then `bad` holds every rank's own ones by their ids in the whole grid, as one process
+// names them, and `worst` the worst of them. Every rank calls it.
+bool stopped_on_input(const dist::Communicator& comm, const AnyAdaptResult& result,
+                      const OwnSlab& s, const dist::Block& block, std::vector<std::int64_t>& bad,
+                      std::vector<CellFailure>& worst) {
+  const index_t first = s.first_cell, end = first + s.grid.fractions.n_cells();
+  const auto own = [&](CellId c) { return c.value() >= first && c.value() < end; };
+  bool stopped = false;
+  std::vector<std::int64_t> mine;
+  std::visit(
+      [&](const auto& r) {
+        stopped = r.stopped_bad_input;
+        for (CellId c : r.bad_input_cells)
+          if (own(c)) mine.push_back(block.global(c));
+        std::vector<CellFailure> failures;
+        for (CellFailure f : r.stopped_bad_input ? r.failures : std::vector<CellFailure>{})
+          if (own(f.cell)) {
+            f.cell = CellId(static_cast<index_t>(block.global(f.cell)));
+            failures.push_back(f);
+          }
+        worst = worst_on_ranks(comm, failures);
+      },
+      result);
+  bad = dist::all_gather_values(comm, mine);
+  const std::vector<char> stops = dist::all_gather_values(comm, std::vector<char>{stopped});
+  return std::find(stops.begin(), stops.end(), 1) != stops.end();
+}
+
+// The nodes of a rank's piece that are the next piece's (its top cut's nodes and their
+// copies), each with its id in that piece once it dropped its own: matched by their points,
+// which both ranks share. Every rank calls it.
+template <class M>
+std::vector<std::pair<index_t, index_t>> next_piece_nodes(const dist::Communicator& comm,
+                                                          const cli::SlabMesh<M>& slab) {
+  const M& mesh = slab.result.mesh;
+  std::vector<int> peers;
+  std::vector<dist::Buffer> mine;
+  if (slab.below) {  // the rank below takes this piece's bottom cut
+    peers.push_back(comm.rank() - 1);
+    mine.emplace_back();
+    std::vector<double> points;
+    index_t dropped = 0;  // the nodes before v this piece drops (its own top cut's)
+    for (NodeId v : id_range<NodeId>(mesh.n_nodes())) {
+      dropped += slab.cut[v] == cli::CutSide::above;
+      if (slab.cut[v] != cli::CutSide::below) continue;
+      const Vec3 p = mesh.point(v);
+      points.insert(points.end(), {p.x(), p.y(), p.z(), static_cast<double>(v.value() - dropped)});
+    }
+    mine.back().put_vector(points);
+  }
+  if (slab.above) {
+    peers.push_back(comm.rank() + 1);
+    mine.emplace_back();
+    mine.back().put_vector(std::vector<double>{});
+  }
+  std::vector<dist::Buffer> theirs = dist::exchange(comm, peers, mine);
+  std::vector<std::pair<index_t, index_t>> shared;
+  if (!slab.above) return shared;
+  std::map<std::array<double, 3>, index_t> next;
+  const std::vector<double> points = theirs.back().get_vector<double>();
+  for (std::size_t k = 0; k + 3 < points.size(); k += 4)
+    next.emplace(std::array<double, 3>{points[k], points[k + 1], points[k + 2]},
+                 static_cast<index_t>(points[k + 3]));
+  for (NodeId v : id_range<NodeId>(mesh.n_nodes())) {
+    if (slab.cut[v] != cli::CutSide::above) continue;
+    const Vec3 p = mesh.point(v);
+    const auto at = next.find({p.x(), p.y(), p.z()});
+    if (at == next.end()) throw InternalError("a node of a cut is not the next piece's");
+    shared.emplace_back(v.value(), at->second);
+  }
+  return shared;
+}
+
 // On the ranks of an MPI job, after ParMmg's iterative interface displacement: each rank reads
-// its slab of the grid and adapts it with the node layers it shares with the ranks beside it
-// (the cuts) frozen, so that the slabs' meshes fit together; then the nodes around every cut
-// move on, the two ranks beside it moving the same band (cut_bands.h); each rank writes its
-// mesh as one piece.
+// its slab of the grid and the ghost layers beyond its cuts, and adapts them with the node
+// layers it shares with the ranks beside it (the cuts) frozen, the cells around them
+// pillowed as one process pillows them (BoundaryOptions::pillow_frozen); its part of the
+// mesh is the cells that come from its own layers (own_part.h). The ranks beside a cut lay the
+// same layers across it; where they do not (a mending run leaving cells out near it on one
+// side), every rank adapts again with the cells around the cuts left unpillowed. Then the
+// nodes around every cut move on, the two ranks beside it moving the same band
+// (cut_bands.h); each rank writes its part as one piece.
 int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& common,
                        const dist::Communicator& comm) {
   AdaptOptions options = args.options;
@@ -638,7 +808,8 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
     args.in.fractions.label_values = cli::grid_labels(comm, app, args.in, args.input, in);
   OwnSlab part;
   cli::on_every_rank(comm, app, [&] {
-    const index_t cells = in.slab.block.owned_cell_end - in.slab.block.owned_cell_first;
+    // A rank adapts the layers it read: its own and the ghost layers beyond its cuts.
+    const index_t cells = in.data.n_cells();
     cli::check_memory(
         "adapting " + std::to_string(cells) + " cells on rank " + std::to_string(comm.rank()),
         static_cast<double>(cells) * cli::adapt_bytes_per_cell, common.memory_limit());
@@ -649,53 +820,45 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
   options.progress = comm.rank() == 0 ? cli::terminal_progress(common) : nullptr;
   times.emplace_back("read", clock.seconds());
   clock.restart();
-  AnyAdaptResult result;
-  cli::on_every_rank(comm, app,
-                     [&] { result = adapt(part.grid, options, nullptr, &part.targets); });
-  const double adapt_seconds = clock.seconds();
-  times.emplace_back("adapt", adapt_seconds);
-  // Bad input cells named by their ids in the whole grid, as one process names them.
-  const auto global = [&](CellId c) {
-    return in.slab.block.global(CellId(c.value() + part.first_cell));
-  };
+  // The cells around the cuts pillowed, unless the ranks beside a cut laid different layers
+  // across it (a mending run leaving cells out near it on one side): then left unpillowed.
+  AnyRankMesh mesh;
   std::vector<std::int64_t> bad;
   std::vector<CellFailure> worst_input;  // of the ranks that stopped on their input
-  bool stopped = false;
-  std::visit(
-      [&](const auto& r) {
-        stopped = r.stopped_bad_input;
-        for (CellId c : r.bad_input_cells) bad.push_back(global(c));
-        std::vector<CellFailure> worst =
-            r.stopped_bad_input ? r.failures : std::vector<CellFailure>{};
-        for (CellFailure& f : worst) f.cell = CellId(static_cast<index_t>(global(f.cell)));
-        worst_input = worst_on_ranks(comm, worst);
-      },
-      result);
-  bad = dist::all_gather_values(comm, bad);
-  const std::vector<char> stops = dist::all_gather_values(comm, std::vector<char>{stopped});
-  stopped = std::find(stops.begin(), stops.end(), 1) != stops.end();
+  bool stopped = false, pillowed = false;
+  for (const bool pillow : {true, false}) {
+    options.boundary.pillow_frozen = pillow;
+    AnyAdaptResult result;
+    cli::on_every_rank(comm, app,
+                       [&] { result = adapt(part.read, options, nullptr, &part.targets); });
+    stopped = stopped_on_input(comm, result, part, in.slab.block, bad, worst_input);
+    std::visit([&](auto& r) { mesh = rank_mesh(r, part, in.slab.block); }, result);
+    if (stopped) break;
+    pillowed = pillow && std::visit(
+                             [&](auto& m) {
+                               return share_cut_nodes(comm, m, part, options) &&
+                                      cli::cuts_fit(comm, m.slab(part));
+                             },
+                             mesh);
+    if (pillowed || !pillow) break;
+  }
+  const double adapt_seconds = clock.seconds();
+  times.emplace_back("adapt", adapt_seconds);
   if (!stopped) {
     clock.restart();
-    std::visit(
-        [&](auto& r) {
-          using M = std::decay_t<decltype(r.mesh)>;
-          cli::SlabMesh<M> slab{r,          part.plane, part.nodes,
-                                part.below, part.above, std::move(part.targets)};
-          cli::resume_across_cuts(comm, slab, cut_rings, options);
-        },
-        result);
+    std::visit([&](auto& m) { cli::resume_across_cuts(comm, m.slab(part), cut_rings, options); },
+               mesh);
     times.emplace_back("cuts", clock.seconds());
   }
 
-  const bool last = comm.rank() + 1 == comm.size();
-  const index_t top = part.nodes - part.plane;  // the top cut: owned by the rank above
   std::vector<double> figures;
   Json failures, steps;
   io::MeshData piece;
+  std::vector<std::pair<index_t, index_t>> shared;  // with the next piece, for --gather
   std::visit(
-      [&](const auto& r) {
-        figures = rank_figures(r, part.grid.fractions.n_cells(), top, last ? 0 : part.plane,
-                               adapt_seconds);
+      [&](auto& m) {
+        const auto& r = m.part.result;
+        figures = rank_figures(r, m.cut, part.grid.fractions.n_cells(), adapt_seconds);
         // The ranks that did not stop adapted their slabs: their cells are not the grid's.
         failures = stopped ? failures_json(worst_input, options.threshold)
                            : rank_failures(comm, r.failures, r.mesh.n_cells(), options.threshold);
@@ -703,10 +866,12 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
                                  {"mend_failing", r.mend_failing},
                                  {"interface_layer_cells", r.n_interface_layer_cells},
                                  {"cavities_published", r.n_cavities_published}});
-        if (!r.stopped_bad_input) piece = adapt_mesh_data(r, part.grid.names());
+        if (stopped) return;
+        piece = adapt_mesh_data(r, part.grid.names());
+        if (args.gather) shared = next_piece_nodes(comm, m.slab(part));
       },
-      result);
-  result = AnyAdaptResult();
+      mesh);
+  mesh = AnyRankMesh();
   Json per_rank;
   const Json combined = combined_result(dist::all_gather_values(comm, figures), per_rank);
   Json report = report_start(app, args, common, options, part.grid.names());
@@ -723,13 +888,14 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
   clock.restart();
   for (auto& kv : cli::provenance(app)) piece.metadata.push_back(kv);
   cli::pass_input_record(part.data, piece);
-  if (args.gather && !last) cli::drop_next_piece_nodes(piece, top, part.plane);
+  if (args.gather) cli::drop_next_piece_nodes(piece, shared);
   cli::write_disjoint_pieces(comm, app, piece, common.output, args.gather, common.write_options(),
                              common.memory_limit());
   times.emplace_back("write", clock.seconds());
   report["ranks"] = cli::ranks_json(comm, in.slab);
   report["ranks"].update(per_rank);
   report["ranks"]["runs"] = steps;
+  report["ranks"]["cut_layers"] = pillowed ? "pillowed" : "unpillowed";
   const auto below = combined["cells_below_threshold"].get<std::int64_t>() +
                      combined["cells_below_min_edge"].get<std::int64_t>();
   report["threshold_met"] = below == 0;

@@ -225,21 +225,32 @@ void check_rank_output(const std::string& flag, const std::string& path, bool ga
                     (structured ? "grid" : "mesh"));
 }
 
-void drop_next_piece_nodes(io::MeshData& piece, index_t first, index_t count) {
+void drop_next_piece_nodes(io::MeshData& piece,
+                           const std::vector<std::pair<index_t, index_t>>& shared) {
   const auto n = static_cast<index_t>(piece.points.size());
-  if (first < 0 || count < 0 || first + count > n)
-    throw InternalError("drop_next_piece_nodes: nodes out of the piece");
-  const index_t kept = n - count;
-  const auto renumbered = [&](index_t v) {
-    if (v < first) return v;
-    return v < first + count ? kept + v - first : v - count;
-  };
-  for (NodeId& v : piece.cells) v = NodeId(renumbered(v.value()));
+  std::vector<index_t> to(static_cast<std::size_t>(n), -1);
+  for (const auto& [mine, next] : shared) {
+    if (mine < 0 || mine >= n || next < 0 || to[static_cast<std::size_t>(mine)] >= 0)
+      throw InternalError("drop_next_piece_nodes: nodes out of the piece or named twice");
+    to[static_cast<std::size_t>(mine)] = next;
+  }
+  const index_t kept = n - static_cast<index_t>(shared.size());
+  std::vector<index_t> renumbered(static_cast<std::size_t>(n));
+  index_t at = 0;
+  for (index_t v = 0; v < n; ++v) {
+    const index_t next = to[static_cast<std::size_t>(v)];
+    renumbered[static_cast<std::size_t>(v)] = next >= 0 ? kept + next : at++;
+  }
+  for (NodeId& v : piece.cells) v = NodeId(renumbered[v.idx()]);
   const auto drop = [&](auto& values, std::size_t width) {
-    const auto at = [&](index_t k) {
-      return values.begin() + static_cast<std::ptrdiff_t>(width * static_cast<std::size_t>(k));
-    };
-    values.erase(at(first), at(first + count));
+    auto out = values.begin();
+    for (index_t v = 0; v < n; ++v) {
+      const auto from =
+          values.begin() + static_cast<std::ptrdiff_t>(width * static_cast<std::size_t>(v));
+      if (to[static_cast<std::size_t>(v)] < 0)
+        out = std::copy(from, from + static_cast<std::ptrdiff_t>(width), out);
+    }
+    values.erase(out, values.end());
   };
   drop(piece.points, 1);
   for (io::DataArray& a : piece.point_data)

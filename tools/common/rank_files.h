@@ -4,6 +4,8 @@
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "cli.h"
 #include "hexadapt/dist/block.h"
@@ -44,11 +46,12 @@ void write_on_ranks(const dist::Communicator& comm, const CLI::App& app, io::Mes
                     const RankInput& input, const std::string& path, bool gather,
                     const io::WriteOptions& options, double memory_limit);
 
-/// Makes `piece` fit write_disjoint_pieces' gathering when its nodes [first, first + count) are
-/// the first `count` nodes of the next rank's piece, in the same order (a slab's top node
-/// layer, which the rank above owns): drops them, and its cells name them by the ids past its
-/// own points that the next piece's first nodes take in the gathered mesh.
-void drop_next_piece_nodes(io::MeshData& piece, index_t first, index_t count);
+/// Makes `piece` fit write_disjoint_pieces' gathering when some of its nodes are the next
+/// rank's piece's too (a slab's top cut, which the rank above owns): `shared` pairs each such
+/// node with its id in the next piece. Drops them, and its cells name them by the ids past its
+/// own points that those nodes take in the gathered mesh.
+void drop_next_piece_nodes(io::MeshData& piece,
+                           const std::vector<std::pair<index_t, index_t>>& shared);
 
 /// Writes every rank's `piece`, the part of one unstructured mesh whose cells the rank owns (no
 /// point shared with another piece but as drop_next_piece_nodes leaves them, the whole being

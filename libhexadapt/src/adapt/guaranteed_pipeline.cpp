@@ -47,6 +47,15 @@ bool pillows_cavities(LayerStrategy s) {
   return s == LayerStrategy::cavities || s == LayerStrategy::both;
 }
 
+// The input cell (node) of each cell (node) of a mesh made from one whose cells (nodes) came
+// from `origin`, `step` giving the one of that mesh each comes from.
+template <class Id>
+IdVector<Id, Id> composed(const IdVector<Id, Id>& origin, const IdVector<Id, Id>& step) {
+  IdVector<Id, Id> out;
+  for (Id c : step) out.push_back(origin[c]);
+  return out;
+}
+
 // Nodes appended by a pillowing get no target.
 template <class M>
 void extend_targets(const M& mesh, Targets& targets) {
@@ -156,6 +165,8 @@ std::vector<NodeId> pillow_cavities(M& mesh, CellMaterials& material, Targets& t
   r.cavities = std::move(c.attempts);
   r.n_cavities_published = c.n_published;
   r.n_cells_added = c.n_cells_added;
+  r.cell_origin = composed(r.cell_origin, c.cell_origin);
+  r.node_origin = composed(r.node_origin, c.node_origin);
   mesh = std::move(c.mesh);
   material = std::move(c.material);
   extend_targets(mesh, targets);
@@ -200,6 +211,8 @@ void late_cavities(M& mesh, CellMaterials& material, Targets& targets, SizeCrite
   r.cavities.insert(r.cavities.end(), c.attempts.begin(), c.attempts.end());
   r.n_cavities_published += c.n_published;
   r.n_cells_added += c.n_cells_added;
+  r.cell_origin = composed(r.cell_origin, c.cell_origin);
+  r.node_origin = composed(r.node_origin, c.node_origin);
   mesh = std::move(c.mesh);
   material = std::move(c.material);
   targets = std::move(t);
@@ -374,6 +387,8 @@ void run_layers(const M& grid, const CellMaterials& material, const Targets& gri
   AdaptOptions options = given;  // the steps after the layers hold the frozen nodes' copies
   options.boundary = std::move(f.boundary);
   M mesh = std::move(f.mesh);
+  r.cell_origin = f.cell_origin;
+  r.node_origin = f.node_origin;
   IdVector<CellId, int> out_material = std::move(f.material);
   Targets targets = std::move(f.targets);
   SizeCriterion size = std::move(f.size);
@@ -572,6 +587,8 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
   const auto nn = static_cast<std::size_t>(mesh.n_nodes());
   if (!good_input && !options.allow_bad_input) {
     r.stopped_bad_input = true;
+    for (CellId c : id_range<CellId>(mesh.n_cells())) r.cell_origin.push_back(c);
+    for (NodeId v : id_range<NodeId>(mesh.n_nodes())) r.node_origin.push_back(v);
     r.mesh = std::move(mesh);
     r.material = material;
     finish_result(r, IdVector<NodeId, Vec3>(nn, Vec3::Zero()), IdVector<NodeId, char>(nn, 0), size,

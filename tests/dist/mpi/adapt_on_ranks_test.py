@@ -1,11 +1,12 @@
 #!/usr/bin/python3
 """hexadapt-adapt under mpirun on 2 and 3 ranks, on the asteroid (a true 3D case) and on the
-.pvts of hexadapt-assign on ranks: every rank's slab adapted with its cuts frozen makes one
-mesh, checked with VTK on its own: its pieces fit (once their coincident points are merged,
-every face of one or two cells and the faces of one cell all on the domain's box), every cell
-keeps the scaled Jacobian threshold (vtkMeshQuality), the pieces beside a cut hold its nodes
-at the same places, every interface node aims at the target it has on one process and nearly
-every one reaches its interface; --gather writes that mesh as one file, the same bytes at every
+.pvts of hexadapt-assign on ranks: every rank's slab adapted with its cuts frozen and the
+layers across them pillowed makes one mesh, checked with VTK on its own: its pieces fit (once
+their coincident points are merged, every face of one or two cells and the faces of one cell
+all on the domain's box), every cell keeps the scaled Jacobian threshold (vtkMeshQuality), the
+pieces beside a cut hold its nodes and their copies at the same places, the mesh has one
+process's cell count, every interface node aims at the target it has on one process and as
+many reach their interface; --gather writes that mesh as one file, the same bytes at every
 run; what runs on one process only, bad input cells and a missing piece stop every rank with one
 message.
 
@@ -135,16 +136,16 @@ for ranks in (2, 3):
     check(on["count"] == ranks and len(on["cells"]) == ranks and sum(on["cells"]) == res["cells"]
           and sum(on["interface_nodes"]) == res["interface_nodes"],
           "%d ranks: the ranks block %r" % (ranks, on))
-    # Every interface node counted as on one process, nearly as many near their interface: the
-    # slabs are 5-8 layers thick here, and the cells beside a cut (no interface layer there)
-    # hold some of the cut's nodes off their surface (2 ranks: 95 %, 3 ranks: 92 % of one
-    # process's near).
+    # Every interface node counted as on one process, as many near their interface, and as many
+    # cells: the ranks lay one process's layers across the cuts (both 422 near, 3,972 cells on
+    # 2 and 3 ranks; with the cells beside a cut unpillowed it was 403 and 387 near).
     check(res["interface_nodes"] == serial["interface_nodes"]
-          and res["near_interface"] >= 0.9 * serial["near_interface"]
-          and res["frozen_blocked_nodes"] == 0,
-          "%d ranks: %r near of %r, %r frozen (serial %r of %r)" % (
-              ranks, res["near_interface"], res["interface_nodes"], res["frozen_blocked_nodes"],
-              serial["near_interface"], serial["interface_nodes"]))
+          and res["near_interface"] >= 0.98 * serial["near_interface"]
+          and res["cells"] == serial["cells"] and res["frozen_blocked_nodes"] == 0,
+          "%d ranks: %r near of %r, %r cells, %r frozen (serial %r of %r, %r cells)" % (
+              ranks, res["near_interface"], res["interface_nodes"], res["cells"],
+              res["frozen_blocked_nodes"], serial["near_interface"], serial["interface_nodes"],
+              serial["cells"]))
     # Every interface node aims where it aims on one process: each rank computed the targets
     # of its nodes with the cells around them and the volume offset of the whole grid. A piece
     # opens with its slab's input nodes, layer by layer.
@@ -155,7 +156,10 @@ for ranks in (2, 3):
         off = np.abs(mine - serial_targets[first:end + 1])[on_interface[first:end + 1]].max()
         check(off < 1e-12, "%d ranks, rank %d: an interface node's target %g from one "
               "process's" % (ranks, rank, off))
-    # The pieces beside a cut hold its nodes at the same places, and the second pass moved some.
+    # The pieces beside a cut hold its nodes and the copies of the layers across it at the same
+    # places, and the second pass moved some of the cut's nodes.
+    check(on["cut_layers"] == "pillowed", "%d ranks: the cuts' cells %s" % (
+        ranks, on["cut_layers"]))
     for rank, (first, _) in enumerate(on["layers"]):
         if rank == 0:
             continue
@@ -163,7 +167,7 @@ for ranks in (2, 3):
             read("%s/out_%d.vtu" % (folder, side)).GetPoints().GetData())}
                         for side in (rank - 1, rank))
         unmoved = sum(tuple(x) in below for x in grid_points[first])
-        check(len(below & above) == plane and unmoved < plane,
+        check(len(below & above) > plane and unmoved < plane,
               "%d ranks, cut at layer %d: %d nodes shared by the pieces (%d), %d unmoved"
               % (ranks, first, len(below & above), plane, unmoved))
     # --gather: the same mesh as one file, its nodes shared, the same bytes at every run.
@@ -182,6 +186,19 @@ for ranks in (2, 3):
                       shallow=False), "%d ranks: two runs gather different bytes" % ranks)
     code, err = run("measure", folder, 0, "out.pvtu", "--reference", "../vf.vts")
     check(code == 0, "measure of the %d ranks' pieces exits %d: %s" % (ranks, code, err))
+
+# Where the ranks lay different layers across a cut (a run of the mending leaving cells out
+# near it on one side only: the vortex at 20^3 on 2 ranks), every rank adapts again with the
+# cells around the cuts left unpillowed: the pieces still fit, every cell keeps the threshold.
+for tool, args in (("generate", ("vortex", "--dims", "20,20,20", "--time", "1.5", "-o", "vf.vts")),
+                   ("assign", ("vf.vts", "-o", "assigned.vts"))):
+    code, err = run(tool, "vortex", 0, *args)
+    check(code == 0, "%s of the vortex exits %d: %s" % (tool, code, err))
+code, err = run("adapt", "vortex", 2, "assigned.vts", "-o", "out.pvtu", "--json", "out.json")
+check(code == 0, "adapt of the vortex on 2 ranks exits %d: %s" % (code, err))
+check(report("vortex")["ranks"]["cut_layers"] == "unpillowed",
+      "the vortex on 2 ranks: the cuts' cells %s" % report("vortex")["ranks"]["cut_layers"])
+check_one_mesh("vortex/out.pvtu", "the vortex on 2 ranks")
 
 # The chain on ranks: assign writes .vts pieces, adapt reads its slabs of them.
 code, err = run("assign", "chain", 3, "../vf.vts", "-o", "assigned.pvts")

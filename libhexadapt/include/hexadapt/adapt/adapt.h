@@ -177,6 +177,10 @@ struct AdaptResult {
   /// Of the output: smallest shortest edge / local size over the cells.
   double min_edge_ratio = 0;
   IdVector<CellId, double> local_size;  ///< each output cell's local input size
+  /// guaranteed: the input cell each output cell comes from (a layer cell: the cell it was
+  /// inflated from).
+  IdVector<CellId, CellId> cell_origin;
+  IdVector<NodeId, NodeId> node_origin;  ///< guaranteed: the input node each node is (a copy of)
   /// The worst cells failing a criterion (at most 10): of the output, or of the input when
   /// the guaranteed method stopped on it.
   std::vector<CellFailure> failures;

@@ -1,0 +1,31 @@
+// A rank's part of the mesh it adapted: each rank of an MPI job adapts the layers it read,
+// its own and the ghost layers beyond each cut, with the cuts' nodes frozen; the cells that
+// come from its own layers are its part of the whole mesh. With the cells around the cuts
+// pillowed (BoundaryOptions::pillow_frozen), both ranks beside a cut lay the same layers across
+// it, so their parts meet there face to face.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "hexadapt/adapt/adapt.h"
+
+namespace hexadapt::cli {
+
+/// A rank's part, and its faces toward the cells of the ranks beside it (the cuts' faces).
+template <class M>
+struct OwnPart {
+  AdaptResult<M> result;
+  std::vector<NodeId> source;                    ///< the node of the whole result each node is
+  std::vector<typename M::FaceNodes> cut_faces;  ///< nodes of the part, each face's corners
+};
+
+/// The part of `r` whose cells come from the input cells [cells[0], cells[1]), renumbered:
+/// the input nodes [nodes[0], nodes[1]) first, in order, then every other node of those cells
+/// in the order of `r`. Node origins are left in the ids of `r`'s grid; the figures of the
+/// cells are not recounted (resume_across_cuts does).
+template <class M>
+OwnPart<M> own_part(const AdaptResult<M>& r, std::array<index_t, 2> cells,
+                    std::array<index_t, 2> nodes);
+
+}  // namespace hexadapt::cli
