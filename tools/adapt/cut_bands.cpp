@@ -246,8 +246,7 @@ void recount_cells(AdaptResult<M>& r, const AdaptOptions& options) {
 template <class M>
 std::vector<double> faces_on(const SlabMesh<M>& slab, CutSide side) {
   std::vector<std::vector<std::array<double, 3>>> faces;
-  for (const typename M::FaceNodes& f : slab.cut_faces) {
-    if (slab.cut[f[0]] != side) continue;
+  for (const typename M::FaceNodes& f : slab.cut_faces[side == CutSide::below ? 0 : 1]) {
     std::vector<std::array<double, 3>> corners;
     for (NodeId v : f) corners.push_back(key(slab.result.mesh.point(v)));
     std::sort(corners.begin(), corners.end());

@@ -12,6 +12,7 @@
 // pass laid, or none when its cells were left unpillowed.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "hexadapt/adapt/adapt.h"
@@ -30,8 +31,9 @@ struct SlabMesh {
   /// their copies where both ranks beside it placed them (pillow_frozen): the same points on
   /// both ranks, by which they are matched.
   const IdVector<NodeId, CutSide>& cut;
-  const std::vector<typename M::FaceNodes>& cut_faces;  ///< the part's faces toward others'
-  bool below = false, above = false;                    ///< a cut at the bottom, at the top
+  /// The part's faces on its cut below and on its cut above (toward the other ranks' cells).
+  const std::array<std::vector<typename M::FaceNodes>, 2>& cut_faces;
+  bool below = false, above = false;  ///< a cut at the bottom, at the top
 };
 
 /// True on every rank when, at every cut, the faces of the two ranks' parts there are the same

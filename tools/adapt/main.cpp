@@ -618,17 +618,19 @@ struct RankMesh {
   /// Per node on a cut, its name on both ranks beside it: its input node and the input cells
   /// of the cells around it, by their ids in the whole grid.
   std::vector<std::vector<std::int64_t>> key;
+  std::array<std::vector<typename M::FaceNodes>, 2> cut_faces;  ///< on the cut below, above
   cli::SlabMesh<M> slab(const OwnSlab& s) {
-    return {part.result, cut, part.cut_faces, s.below, s.above};
+    return {part.result, cut, cut_faces, s.below, s.above};
   }
 };
 using AnyRankMesh = std::variant<RankMesh<QuadMesh>, RankMesh<HexMesh>>;
 
 template <class M>
-RankMesh<M> rank_mesh(const AdaptResult<M>& r, const OwnSlab& s, const dist::Block& block) {
+RankMesh<M> rank_mesh(AdaptResult<M> r, const OwnSlab& s, const dist::Block& block) {
   const index_t cells = s.grid.fractions.n_cells();
-  RankMesh<M> m{cli::own_part(r, {s.first_cell, s.first_cell + cells},
+  RankMesh<M> m{cli::own_part(std::move(r), {s.first_cell, s.first_cell + cells},
                               {s.owned[0] * s.plane, (s.owned[1] + 1) * s.plane}),
+                {},
                 {},
                 {}};
   const AdaptResult<M>& own = m.part.result;
@@ -639,22 +641,32 @@ RankMesh<M> rank_mesh(const AdaptResult<M>& r, const OwnSlab& s, const dist::Blo
     m.cut[v] = own.node_origin[v].value() / s.plane == s.owned[0] ? cli::CutSide::below
                                                                   : cli::CutSide::above;
     std::vector<std::int64_t>& key = m.key[v.idx()];
-    for (CellId c : r.mesh.node_cells(m.part.source[v.idx()]))
-      key.push_back(block.global(r.cell_origin[c]));
-    std::sort(key.begin(), key.end());
-    key.erase(std::unique(key.begin(), key.end()), key.end());
-    key.insert(key.begin(), block.global(own.node_origin[v]));
+    key.push_back(block.global(own.node_origin[v]));
+    for (CellId c : m.part.around[v.idx()]) key.push_back(block.global(c));
   }
+  // Every node of a face on a cut is the cut's node or a copy of one.
+  for (const auto& f : m.part.cut_faces)
+    m.cut_faces[m.cut[f[0]] == cli::CutSide::below ? 0 : 1].push_back(f);
   return m;
+}
+
+// Sets the points of `nodes` and, for those without a target, their targets (their points).
+template <class M>
+void place(AdaptResult<M>& r, const std::vector<std::pair<NodeId, Vec3>>& nodes) {
+  for (const auto& [v, p] : nodes) {
+    r.mesh.set_point(v, p);
+    if (!r.has_target[v]) r.target[v] = p;
+  }
 }
 
 // The nodes of the cuts the ranks beside them share: the cut's nodes, and the copies both
 // ranks' cells take (a copy that only one rank's cells take stays its own: its cut is set to
-// none). The rank above a cut takes the points the rank below placed the shared copies at:
-// each smoothed them among the layers it read, whose cells beyond differ, and where the
-// layers of several materials meet at the cut the points differ a little (up to 1.8e-4 of a
-// grid of 1 at 48^3). False on every rank when more cells of a part then fail a criterion
-// than before (none, unless the input's did). Every rank calls it.
+// none). Each rank smoothed the copies among the layers it read, whose cells beyond differ:
+// where the layers of several materials meet at a cut, their points differ a little (up to
+// 1.8e-4 of a grid of 1 on the asteroid at 48^3). The rank above a cut takes the rank below's
+// points when none of its cells then fails a criterion; else the rank below takes the rank
+// above's when none of its cells does. False on every rank when neither can, at some cut.
+// Every rank calls it.
 template <class M>
 bool share_cut_nodes(const dist::Communicator& comm, RankMesh<M>& m, const OwnSlab& s,
                      const AdaptOptions& o) {
@@ -679,24 +691,43 @@ bool share_cut_nodes(const dist::Communicator& comm, RankMesh<M>& m, const OwnSl
   std::vector<dist::Buffer> theirs = dist::exchange(comm, peers, mine);
   const SizeCriterion size{o.min_edge, r.local_size};
   const std::size_t failing = failing_cells(r.mesh, o.threshold, size).size();  // bad input's
+  // Per cut: the shared nodes, where the other rank placed them, and whether this rank can take
+  // those points.
+  std::vector<std::vector<std::pair<NodeId, Vec3>>> other(sides.size());
+  std::vector<char> can(sides.size());
   for (std::size_t k = 0; k < sides.size(); ++k) {
-    std::map<std::vector<std::int64_t>, Vec3> other;
+    std::map<std::vector<std::int64_t>, Vec3> points;
     for (dist::Buffer& b = theirs[k]; !b.done();) {
       std::vector<std::int64_t> key = b.get_vector<std::int64_t>();
-      other.emplace(std::move(key), b.get_point());
+      points.emplace(std::move(key), b.get_point());
     }
+    std::vector<std::pair<NodeId, Vec3>> own;
     for (NodeId v : id_range<NodeId>(r.mesh.n_nodes())) {
       if (m.cut[v] != sides[k]) continue;
-      const auto at = other.find(m.key[v.idx()]);
-      if (at == other.end()) {
+      const auto at = points.find(m.key[v.idx()]);
+      if (at == points.end()) {
         m.cut[v] = cli::CutSide::none;
-      } else if (sides[k] == cli::CutSide::below) {
-        r.mesh.set_point(v, at->second);
-        if (!r.has_target[v]) r.target[v] = at->second;
+        continue;
       }
+      other[k].emplace_back(v, at->second);
+      own.emplace_back(v, r.mesh.point(v));
     }
+    place(r, other[k]);
+    can[k] = failing_cells(r.mesh, o.threshold, size).size() <= failing;
+    place(r, own);
   }
-  const char fit = failing_cells(r.mesh, o.threshold, size).size() <= failing;
+  std::vector<dist::Buffer> verdicts(sides.size());
+  for (std::size_t k = 0; k < sides.size(); ++k) verdicts[k].put(can[k]);
+  std::vector<dist::Buffer> they_can = dist::exchange(comm, peers, verdicts);
+  char fit = 1;
+  for (std::size_t k = 0; k < sides.size(); ++k) {
+    const bool i_can = can[k] != 0, other_can = they_can[k].get<char>() != 0;
+    const bool upper = sides[k] == cli::CutSide::below;
+    const bool upper_can = upper ? i_can : other_can, lower_can = upper ? other_can : i_can;
+    if (upper_can ? upper : lower_can && !upper) place(r, other[k]);
+    fit = fit && (upper_can || lower_can);
+  }
+  fit = fit && failing_cells(r.mesh, o.threshold, size).size() <= failing;
   const std::vector<char> all = dist::all_gather_values(comm, std::vector<char>{fit});
   return std::find(all.begin(), all.end(), 0) == all.end();
 }
@@ -828,11 +859,12 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
   bool stopped = false, pillowed = false;
   for (const bool pillow : {true, false}) {
     options.boundary.pillow_frozen = pillow;
+    mesh = AnyRankMesh();  // a first run's part is not kept through the second
     AnyAdaptResult result;
     cli::on_every_rank(comm, app,
                        [&] { result = adapt(part.read, options, nullptr, &part.targets); });
     stopped = stopped_on_input(comm, result, part, in.slab.block, bad, worst_input);
-    std::visit([&](auto& r) { mesh = rank_mesh(r, part, in.slab.block); }, result);
+    std::visit([&](auto& r) { mesh = rank_mesh(std::move(r), part, in.slab.block); }, result);
     if (stopped) break;
     pillowed = pillow && std::visit(
                              [&](auto& m) {
@@ -842,6 +874,7 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
                              mesh);
     if (pillowed || !pillow) break;
   }
+  part.read = AssignedGrid();
   const double adapt_seconds = clock.seconds();
   times.emplace_back("adapt", adapt_seconds);
   if (!stopped) {

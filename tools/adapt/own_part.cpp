@@ -1,12 +1,27 @@
 #include "own_part.h"
 
+#include <algorithm>
+#include <utility>
 #include <vector>
 
 namespace hexadapt::cli {
 
+namespace {
+
+// The values of `all` at `from`, in that order; none when `all` has none (a result stopped on
+// its input has no sliding constraints).
+template <class Id, class T>
+IdVector<Id, T> picked(const IdVector<Id, T>& all, const std::vector<Id>& from) {
+  IdVector<Id, T> out;
+  if (all.size() == 0) return out;
+  for (Id v : from) out.push_back(all[v]);
+  return out;
+}
+
+}  // namespace
+
 template <class M>
-OwnPart<M> own_part(const AdaptResult<M>& r, std::array<index_t, 2> cells,
-                    std::array<index_t, 2> nodes) {
+OwnPart<M> own_part(AdaptResult<M> r, std::array<index_t, 2> cells, std::array<index_t, 2> nodes) {
   const auto own = [&](CellId c) {
     return r.cell_origin[c].value() >= cells[0] && r.cell_origin[c].value() < cells[1];
   };
@@ -27,36 +42,22 @@ OwnPart<M> own_part(const AdaptResult<M>& r, std::array<index_t, 2> cells,
       to[v.idx()] = static_cast<index_t>(from.size());
       from.push_back(v);
     }
-  OwnPart<M> part{r, from, {}};
-  AdaptResult<M>& out = part.result;
+  OwnPart<M> part;
+  for (NodeId v : from) {
+    std::vector<CellId>& around = part.around.emplace_back();
+    if (v.idx() >= r.sliding.size() || !r.sliding[v].frozen()) continue;
+    for (CellId c : r.mesh.node_cells(v)) around.push_back(r.cell_origin[c]);
+    std::sort(around.begin(), around.end());
+    around.erase(std::unique(around.begin(), around.end()), around.end());
+  }
   std::vector<Vec3> points;
   for (NodeId v : from) points.push_back(r.mesh.point(v));
   std::vector<typename M::CellNodes> cell_nodes;
-  out.material.raw().clear();
-  out.local_size.raw().clear();
-  out.cell_origin.raw().clear();
   for (CellId c : kept) {
     typename M::CellNodes n = r.mesh.cell_nodes(c);
     for (NodeId& v : n) v = NodeId(to[v.idx()]);
     cell_nodes.push_back(n);
-    out.material.push_back(r.material[c]);
-    out.local_size.push_back(r.local_size[c]);
-    out.cell_origin.push_back(r.cell_origin[c]);
   }
-  out.mesh = M(std::move(points), std::move(cell_nodes));
-  const auto pick = [&](auto& values, const auto& all) {  // a result stopped on its input
-    values.raw().clear();                                 // has no sliding constraints
-    if (all.size() == 0) return;
-    for (NodeId v : from) values.push_back(all[v]);
-  };
-  pick(out.target, r.target);
-  pick(out.has_target, r.has_target);
-  pick(out.distance, r.distance);
-  pick(out.surface_distance, r.surface_distance);
-  pick(out.near_interface, r.near_interface);
-  pick(out.sliding, r.sliding);
-  pick(out.blocked, r.blocked);
-  pick(out.node_origin, r.node_origin);
   for (CellId c : kept)
     for (int lf = 0; lf < M::faces_per_cell; ++lf) {
       const CellId across = r.mesh.neighbour(c, lf);
@@ -65,12 +66,26 @@ OwnPart<M> own_part(const AdaptResult<M>& r, std::array<index_t, 2> cells,
       for (NodeId& v : face) v = NodeId(to[v.idx()]);
       part.cut_faces.push_back(face);
     }
+  AdaptResult<M>& out = part.result;
+  out = std::move(r);
+  out.mesh = M(std::move(points), std::move(cell_nodes));
+  out.material = picked(out.material, kept);
+  out.local_size = picked(out.local_size, kept);
+  out.cell_origin = picked(out.cell_origin, kept);
+  out.target = picked(out.target, from);
+  out.has_target = picked(out.has_target, from);
+  out.distance = picked(out.distance, from);
+  out.surface_distance = picked(out.surface_distance, from);
+  out.near_interface = picked(out.near_interface, from);
+  out.sliding = picked(out.sliding, from);
+  out.blocked = picked(out.blocked, from);
+  out.node_origin = picked(out.node_origin, from);
   return part;
 }
 
-template OwnPart<QuadMesh> own_part<QuadMesh>(const AdaptResult<QuadMesh>&, std::array<index_t, 2>,
+template OwnPart<QuadMesh> own_part<QuadMesh>(AdaptResult<QuadMesh>, std::array<index_t, 2>,
                                               std::array<index_t, 2>);
-template OwnPart<HexMesh> own_part<HexMesh>(const AdaptResult<HexMesh>&, std::array<index_t, 2>,
+template OwnPart<HexMesh> own_part<HexMesh>(AdaptResult<HexMesh>, std::array<index_t, 2>,
                                             std::array<index_t, 2>);
 
 }  // namespace hexadapt::cli

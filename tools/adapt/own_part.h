@@ -16,7 +16,9 @@ namespace hexadapt::cli {
 template <class M>
 struct OwnPart {
   AdaptResult<M> result;
-  std::vector<NodeId> source;                    ///< the node of the whole result each node is
+  /// Per node of the part, when it is frozen (a cut's node or a copy of one): the input cells
+  /// of the cells around it in the whole result, increasing, the other part's too; else none.
+  std::vector<std::vector<CellId>> around;
   std::vector<typename M::FaceNodes> cut_faces;  ///< nodes of the part, each face's corners
 };
 
@@ -25,7 +27,6 @@ struct OwnPart {
 /// in the order of `r`. Node origins are left in the ids of `r`'s grid; the figures of the
 /// cells are not recounted (resume_across_cuts does).
 template <class M>
-OwnPart<M> own_part(const AdaptResult<M>& r, std::array<index_t, 2> cells,
-                    std::array<index_t, 2> nodes);
+OwnPart<M> own_part(AdaptResult<M> r, std::array<index_t, 2> cells, std::array<index_t, 2> nodes);
 
 }  // namespace hexadapt::cli

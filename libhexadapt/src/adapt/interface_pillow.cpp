@@ -43,7 +43,8 @@ bool touches(const M& mesh, CellId c, const IdVector<NodeId, char>& nodes) {
 }
 
 // With pillow_frozen: smooths the new copies of frozen nodes among themselves, every other
-// node held, so that where they go depends on the cells around them only.
+// node held, so that where they go depends on the cells around them only (and on where the
+// layers pillowed before left the nodes of those cells).
 template <class M>
 void place_frozen_copies(PillowResult<M>& p, index_t n_old, const BoundaryOptions& pillowed,
                          const IdVector<NodeId, char>& movable, const StepSettings& o,
