@@ -68,7 +68,7 @@ NodeConstraint let_go(const NodeConstraint& c) {
 }
 
 // A rank's half of a band: its cells near the cut and their nodes, with what the moves need.
-// The nodes it moves go let go (the band adds the boundary of the cut's); the nodes of the
+// The nodes it moves are let go (the band adds the boundary of the cut's); the nodes of the
 // slab's other cut stay frozen.
 template <class M>
 dist::Buffer half_band(const SlabMesh<M>& slab, bool top, int rings) {
@@ -129,8 +129,8 @@ Band<M> joined(std::array<dist::Buffer, 2> halves, double min_edge, const Bounda
   Band<M> band;
   std::vector<Vec3> points;
   std::vector<typename M::CellNodes> cells;
-  std::map<std::array<double, 3>, index_t>
-      cut_band;  // band id of each cut node, from the lower half
+  // The band id of each node of the cut, from the lower half, by its point.
+  std::map<std::array<double, 3>, index_t> cut_band;
   std::vector<char> is_cut, movable;
   for (int h = 0; h < 2; ++h) {
     dist::Buffer& b = halves[static_cast<std::size_t>(h)];

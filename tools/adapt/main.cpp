@@ -357,7 +357,6 @@ struct OwnSlab {
   AssignedGrid grid;
   AssignedGrid read;           ///< the layers read: the own ones and the ghost layers around
   index_t first_cell = 0;      ///< local id of the first own cell among those read
-  index_t nodes = 0;           ///< of the own layers
   index_t plane = 0;           ///< nodes per cut
   std::array<int, 2> owned{};  ///< the own layers among those read, [first, end)
   int held = 0;                ///< layers read
@@ -381,8 +380,7 @@ OwnSlab own_slab(cli::RankInput& in, const Args& args) {
   io::keep_layers(s.data, s.owned, args.input);
   s.grid = io::to_assigned_grid(s.data, how, args.input);
   s.first_cell = in.slab.block.owned_cell_first;
-  s.nodes = static_cast<index_t>(s.data.points.size());
-  s.plane = s.nodes / (s.owned[1] - s.owned[0] + 1);
+  s.plane = static_cast<index_t>(s.data.points.size()) / (s.owned[1] - s.owned[0] + 1);
   return s;
 }
 
