@@ -152,9 +152,7 @@ TEST(FrozenNodes, LetGoTheyMoveOn) {
       IdVector<NodeId, NodeConstraint> sliding = r.sliding;
       for (index_t k = 0; k < plane; ++k) {
         const NodeId v(8 * plane + k);
-        NodeConstraint free;
-        for (int n = 0; n < sliding[v].n_normals(); ++n) free.add(sliding[v].normal(n));
-        if (k >= 17) sliding[v] = free;
+        if (k >= 17) sliding[v] = sliding[v].unfrozen();
       }
       const M before = r.mesh;
       const SizeCriterion size{o.min_edge, r.local_size};
@@ -189,11 +187,7 @@ std::pair<index_t, double> let_go(AdaptResult<M>& r, const AdaptOptions& o) {
   targets.position = r.target;
   targets.interface = r.sliding;
   IdVector<NodeId, NodeConstraint> sliding;
-  for (const NodeConstraint& c : r.sliding) {
-    NodeConstraint free;
-    for (int n = 0; n < c.n_normals(); ++n) free.add(c.normal(n));
-    sliding.push_back(free);
-  }
+  for (const NodeConstraint& c : r.sliding) sliding.push_back(c.unfrozen());
   const SizeCriterion size{o.min_edge, r.local_size};
   AdaptOptions moves = o;
   moves.boundary.frozen = {};

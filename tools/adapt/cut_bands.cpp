@@ -60,13 +60,6 @@ NodeConstraint get_constraint(dist::Buffer& b) {
   return c;
 }
 
-// A constraint without its freeze: what a node of a cut may do once let go.
-NodeConstraint let_go(const NodeConstraint& c) {
-  NodeConstraint out;
-  for (int k = 0; k < c.n_normals(); ++k) out.add(c.normal(k));
-  return out;
-}
-
 // A rank's half of a band: its cells near the cut and their nodes, with what the moves need.
 // The nodes it moves are let go (the band adds the boundary of the cut's); the nodes of the
 // slab's other cut stay frozen.
@@ -97,7 +90,7 @@ dist::Buffer half_band(const SlabMesh<M>& slab, bool top, int rings) {
     b.put_point(mesh.point(v));
     b.put(r.has_target[v]);
     b.put_point(r.target[v]);
-    put_constraint(b, movable ? let_go(r.sliding[v]) : r.sliding[v]);
+    put_constraint(b, movable ? r.sliding[v].unfrozen() : r.sliding[v]);
   }
   b.put(static_cast<std::uint64_t>(cells.size()));
   for (CellId c : cells) {

@@ -25,6 +25,12 @@ class NodeConstraint {
   /// Forbids every displacement, the normals kept.
   void freeze() { frozen_ = true; }
   bool frozen() const { return frozen_; }
+  /// The same normals, not frozen: where a frozen node may move once let go.
+  NodeConstraint unfrozen() const {
+    NodeConstraint out;
+    for (int k = 0; k < n_; ++k) out.add(normal(k));
+    return out;
+  }
   /// Adds the direction unless it is (nearly) spanned by the normals already held.
   void add(const Vec3& direction);
   /// Adds every normal of `other`, frozen when it is.
