@@ -83,7 +83,7 @@ void run(const dist::MpiCommunicator& comm, const std::string& path) {
   io::MeshPart moved;
   phase(comm, "migrate", [&] { moved = io::migrate(comm, read, parts); });
   io::GhostedPart ghosted;
-  phase(comm, "ghost layer", [&] { ghosted = io::with_ghost_layer(comm, moved); });
+  phase(comm, "ghost layer", [&] { ghosted = io::with_ghost_layers(comm, moved); });
   const std::int64_t cut = cut_faces(comm, graph, parts);
   const std::vector<double> rows = dist::all_gather_values(
       comm, std::vector<double>{

@@ -7,8 +7,8 @@
 
 #include "hexadapt/core/error.h"
 #include "hexadapt/dist/block.h"
-#include "hexadapt/io/mesh_data.h"
 #include "hexadapt/io/fractions_reader.h"
+#include "hexadapt/io/mesh_data.h"
 #include "hexadapt/mesh/structured.h"
 
 namespace hexadapt {
@@ -113,6 +113,31 @@ TEST(FractionArrays, OnARankTheToleranceForEveryCellNamesTheCellsItCovers) {
               std::string::npos)
         << what;
   }
+}
+
+// A partitioner's part of an unstructured mesh lists its cells' global ids: errors name the
+// failing cell by its global id from the list.
+TEST(FractionArrays, OnAListedPartErrorsNameTheCellsGlobalId) {
+  io::MeshData d = io::from_mesh(make_quad_grid(3, 1));
+  d.set_cell_array({"vf_a", 1, io::ScalarType::float64, {0.6, 0.6, 0.6}});
+  d.set_cell_array({"vf_b", 1, io::ScalarType::float64, {0.4, 0.42, 0.45}});
+  std::vector<std::int64_t> nodes(static_cast<std::size_t>(d.n_points()));
+  for (std::size_t n = 0; n < nodes.size(); ++n) nodes[n] = static_cast<std::int64_t>(10 * n);
+  const dist::Block block =
+      dist::Block::listed({17, 90, 5}, 2, nodes, std::vector<char>(nodes.size(), 1));
+  try {
+    io::extract_fractions(d, io::FractionOptions{}, nullptr, "in.vtu", &block);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("cell 90"), std::string::npos) << what;
+    EXPECT_NE(what.find("every cell of the cells this rank holds"), std::string::npos) << what;
+  }
+  EXPECT_EQ(block.local_cell(5), CellId(2));
+  EXPECT_EQ(block.local_cell(90), CellId(1));
+  EXPECT_FALSE(block.local_cell(6).valid());
+  EXPECT_EQ(block.local_node(30), NodeId(3));
+  EXPECT_FALSE(block.local_node(31).valid());
 }
 
 }  // namespace

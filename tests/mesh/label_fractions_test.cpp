@@ -7,8 +7,8 @@
 
 #include "hexadapt/core/error.h"
 #include "hexadapt/dist/block.h"
-#include "hexadapt/io/mesh_data.h"
 #include "hexadapt/io/fractions_reader.h"
+#include "hexadapt/io/mesh_data.h"
 #include "hexadapt/mesh/structured.h"
 
 namespace hexadapt {
@@ -48,7 +48,7 @@ TEST(LabelFractions, ABlockTakesTheLabelsOfTheWholeGrid) {
   dist::Block block = dist::Block::whole(3, d.n_points());
   block.cell_offset = 100;
   EXPECT_THROW(io::extract_fractions(d, labels_option(), nullptr, "in.vtu", &block), OptionError);
-  EXPECT_EQ(io::label_values(d, labels_option(), "in.vtu", 100),
+  EXPECT_EQ(io::label_values(d, labels_option(), "in.vtu", &block),
             (std::vector<std::int64_t>{3, 7}));
   io::FractionOptions o = labels_option();
   o.label_values = {-2, 3, 7};
@@ -57,7 +57,7 @@ TEST(LabelFractions, ABlockTakesTheLabelsOfTheWholeGrid) {
   EXPECT_EQ(f.majority(CellId(0)), 2);
   EXPECT_EQ(f.majority(CellId(1)), 1);
   try {
-    io::label_values(labelled({1, 2.5}), labels_option(), "in.vtu", 100);
+    io::label_values(labelled({1, 2.5}), labels_option(), "in.vtu", &block);
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("cell 101"), std::string::npos) << e.what();

@@ -912,7 +912,7 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
   if (comm.rank() != 0) common.json.clear();  // rank 0 writes the report (and logs)
   std::sort(bad.begin(), bad.end());
   if (stopped) {
-    report["ranks"] = cli::ranks_json(comm, in.slab);
+    report["ranks"] = cli::ranks_json(comm, in);
     return refuse_bad_input(common, report, times, bad,
                             failures_text(worst_input, options.threshold), options.threshold);
   }
@@ -923,7 +923,7 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
   cli::write_disjoint_pieces(comm, app, piece, common.output, args.gather, common.write_options(),
                              common.memory_limit());
   times.emplace_back("write", clock.seconds());
-  report["ranks"] = cli::ranks_json(comm, in.slab);
+  report["ranks"] = cli::ranks_json(comm, in);
   report["ranks"].update(per_rank);
   report["ranks"]["runs"] = steps;
   report["ranks"]["cut_layers"] = pillowed ? "pillowed" : "unpillowed";

@@ -292,19 +292,21 @@ io::FractionReport whole_report(const dist::Communicator& comm, io::FractionRepo
   return fr;
 }
 
-// On the ranks of an MPI job: each reads its slab (two ghost layers: the correction looks
-// two cells around the nodes it owns) and writes the cells it owns.
+// On the ranks of an MPI job: each reads its slab of a structured grid, or holds its part of
+// an unstructured mesh cut by PT-Scotch (two ghost layers either way: the correction looks two
+// cells around the nodes it owns), and writes the cells it owns.
 int run_assign_on_ranks(const CLI::App& app, Options& o, const dist::Communicator& comm) {
   cli::on_every_rank(comm, app, [&] {
     cli::check_files(
         {{"input", o.input}},
         {{"-o", o.common.output, true}, {"--partial", o.partial, true}, {"--json", o.common.json}});
-    cli::check_rank_output("-o", o.common.output, o.gather);
-    cli::check_rank_output("--partial", o.partial, o.gather);
+    const bool structured = !cli::unstructured_file(o.input);
+    cli::check_rank_output("-o", o.common.output, o.gather, structured);
+    cli::check_rank_output("--partial", o.partial, o.gather, structured);
   });
   PhaseTimes times;
   Timer t;
-  cli::RankInput in = cli::read_on_ranks(comm, app, o.input, o.in.read_options(), 2);
+  cli::RankInput in = cli::read_mesh_on_ranks(comm, app, o.input, o.in.read_options(), 2);
   cli::on_every_rank(comm, app, [&] {
     cli::check_memory("assigning " + std::to_string(in.data.n_cells()) + " cells on this rank",
                       static_cast<double>(in.data.n_cells()) * cli::assign_bytes_per_cell,
@@ -339,11 +341,9 @@ int run_assign_on_ranks(const CLI::App& app, Options& o, const dist::Communicato
         output_data(std::move(in.data), grid, r.majority, app, cli::input_record(o.in, fr)), in,
         out, o.gather, o.common.write_options(), o.common.memory_limit());
   times.emplace_back("write", t.seconds());
-  std::int64_t cells = 1;
-  for (int a = 0; a < in.shape.dim; ++a) cells *= in.shape.cells[static_cast<std::size_t>(a)];
-  const cli::Json ranks = cli::ranks_json(comm, in.slab);
+  const cli::Json ranks = cli::ranks_json(comm, in);
   if (comm.rank() != 0) o.common.json.clear();  // rank 0 writes the report
-  return finish(app, o, r, fr, fractions, in.shape.dim, cells, out, times, ranks);
+  return finish(app, o, r, fr, fractions, in.shape.dim, in.whole_cells, out, times, ranks);
 }
 
 // One process or ranks: the options the flags set, then the run.

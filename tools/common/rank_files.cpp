@@ -1,8 +1,12 @@
 #include "rank_files.h"
 
 #include <algorithm>
+#include <numeric>
 
 #include "hexadapt/core/error.h"
+#include "hexadapt/dist/dual_graph.h"
+#include "hexadapt/io/mesh_part.h"
+#include "hexadapt/io/vtk_collection.h"
 #include "hexadapt/io/vtk_xml.h"
 #include "hexadapt/mesh/structured.h"
 #include "memory.h"
@@ -113,6 +117,42 @@ double data_bytes(const io::MeshData& d) {
   return bytes;
 }
 
+// The owned cells of `held` (an unstructured part: its first cells, `block` a list) and the
+// nodes they use, with their global ids.
+io::MeshPart owned_cells(io::MeshData held, const dist::Block& block, std::int64_t whole_cells) {
+  io::MeshPart out;
+  out.n_cells = whole_cells;
+  const auto npc = static_cast<std::size_t>(held.nodes_per_cell());
+  const auto owned = static_cast<std::size_t>(block.owned_cell_end);
+  held.cells.resize(owned * npc);
+  for (io::DataArray& a : held.cell_data)
+    a.values.resize(owned * static_cast<std::size_t>(a.n_components));
+  std::vector<index_t> to(held.points.size(), -1);  // new id of each held node used
+  for (const NodeId v : held.cells) to[v.idx()] = 0;
+  index_t kept = 0;
+  for (std::size_t n = 0; n < to.size(); ++n)
+    if (to[n] >= 0) {
+      to[n] = kept++;
+      out.node_ids.push_back(block.node_ids[n]);
+    }
+  for (NodeId& v : held.cells) v = NodeId(to[v.idx()]);
+  const auto keep = [&](auto& values, std::size_t width) {
+    auto at = values.begin();
+    for (std::size_t n = 0; n < to.size(); ++n)
+      if (to[n] >= 0) {
+        const auto from = values.begin() + static_cast<std::ptrdiff_t>(n * width);
+        at = std::copy(from, from + static_cast<std::ptrdiff_t>(width), at);
+      }
+    values.erase(at, values.end());
+  };
+  keep(held.points, 1);
+  for (io::DataArray& a : held.point_data) keep(a.values, static_cast<std::size_t>(a.n_components));
+  out.cell_ids.assign(block.cell_ids.begin(),
+                      block.cell_ids.begin() + static_cast<std::ptrdiff_t>(owned));
+  out.data = std::move(held);
+  return out;
+}
+
 // Rank 0 holds every rank's piece twice while gathering (the messages, then the whole mesh):
 // beyond the limit every rank stops before anything travels.
 void check_gather_memory(const dist::Communicator& comm, const CLI::App& app,
@@ -168,11 +208,21 @@ io::MeshData gathered_disjoint(const dist::Communicator& comm, const io::MeshDat
 
 }  // namespace
 
+bool unstructured_file(const std::string& path) {
+  for (const char* ext : {".pvtu", ".vtu", ".exo", ".e", ".g"})
+    if (ends_with(path, ext)) return true;
+  return false;
+}
+
 RankInput read_on_ranks(const dist::Communicator& comm, const CLI::App& app,
                         const std::string& path, io::ReadOptions options, int ghost_layers,
                         const std::vector<double>& layer_weights) {
   RankInput in;
   on_every_rank(comm, app, [&] {
+    if (unstructured_file(path))
+      throw OptionError(path +
+                        ": on several ranks this stage reads structured grids only (.vti .vtr "
+                        ".vts, their parallel forms, a structured .vtk): run it on one process");
     in.shape = io::structured_shape(path, options);
     in.slab = layer_weights.empty() ? dist::structured_slab(in.shape.cells, in.shape.dim,
                                                             comm.rank(), comm.size(), ghost_layers)
@@ -182,6 +232,48 @@ RankInput read_on_ranks(const dist::Communicator& comm, const CLI::App& app,
   const auto axis = static_cast<std::size_t>(in.shape.dim - 1);
   options.layers = {in.slab.first_layer, in.slab.first_layer + in.slab.held[axis]};
   on_every_rank(comm, app, [&] { in.data = io::read_mesh(path, options); });
+  in.whole_cells = 1;
+  for (std::size_t a = 0; a < static_cast<std::size_t>(in.shape.dim); ++a)
+    in.whole_cells *= in.shape.cells[a];
+  return in;
+}
+
+RankInput read_mesh_on_ranks(const dist::Communicator& comm, const CLI::App& app,
+                             const std::string& path, const io::ReadOptions& options,
+                             int ghost_layers) {
+  if (!unstructured_file(path)) return read_on_ranks(comm, app, path, options, ghost_layers);
+  io::RankPieces pieces;
+  on_every_rank(comm, app, [&] {
+    if (ends_with(path, ".pvtu")) {
+      pieces = io::read_rank_pieces(path, options, comm.rank(), comm.size());
+    } else if (comm.rank() == 0) {
+      pieces.file = path;
+      pieces.pieces.push_back({path, io::read_mesh(path, options)});
+      pieces.index.push_back(0);
+    }
+  });
+  // Each collective step whole inside on_every_rank: a rank that fails alone must not leave
+  // the others waiting in a collective it skipped.
+  io::MeshPart part;
+  on_every_rank(comm, app, [&] { part = io::merge_rank_pieces(comm, std::move(pieces), options); });
+  on_every_rank(comm, app, [&] {
+    std::vector<std::int64_t> cell_nodes;
+    cell_nodes.reserve(part.data.cells.size());
+    for (const NodeId v : part.data.cells) cell_nodes.push_back(part.node_ids[v.idx()]);
+    const dist::DistGraph graph = dist::dual_graph(comm, part.data.nodes_per_cell(), cell_nodes);
+    part = io::migrate(comm, part, partition_by_rank(comm, graph));
+  });
+  io::GhostedPart ghosted;
+  on_every_rank(comm, app, [&] { ghosted = io::with_ghost_layers(comm, part, ghost_layers); });
+  RankInput in;
+  in.structured = false;
+  in.whole_cells = part.n_cells;
+  part = io::MeshPart();
+  in.shape.dim = ghosted.part.data.dim;
+  in.slab.block =
+      dist::Block::listed(std::move(ghosted.part.cell_ids), ghosted.owned_cells,
+                          std::move(ghosted.part.node_ids), std::move(ghosted.owns_node));
+  in.data = std::move(ghosted.part.data);
   return in;
 }
 
@@ -189,26 +281,33 @@ std::vector<std::int64_t> grid_labels(const dist::Communicator& comm, const CLI:
                                       const InputOptions& input, const std::string& path,
                                       const RankInput& in) {
   std::vector<std::int64_t> mine;
-  on_every_rank(comm, app, [&] {
-    mine = io::label_values(in.data, input.fractions, path, in.slab.block.cell_offset);
-  });
+  on_every_rank(comm, app,
+                [&] { mine = io::label_values(in.data, input.fractions, path, &in.slab.block); });
   std::vector<std::int64_t> all = dist::all_gather_values(comm, mine);
   std::sort(all.begin(), all.end());
   all.erase(std::unique(all.begin(), all.end()), all.end());
   return all;
 }
 
-Json ranks_json(const dist::Communicator& comm, const dist::Slab& slab) {
-  const std::vector<int> owned(slab.owned_layers.begin(), slab.owned_layers.end());
-  const std::vector<int> all = dist::all_gather_values(comm, owned);
-  Json layers = Json::array();
-  for (std::size_t r = 0; r + 1 < all.size(); r += 2) layers.push_back({all[r], all[r + 1]});
-  return {
-      {"count", comm.size()},
-      {"layers", layers},
-      {"bytes_sent", dist::all_gather_values(comm, std::vector<std::uint64_t>{comm.bytes_sent()})},
-      {"peak_memory",
-       dist::all_gather_values(comm, std::vector<std::uint64_t>{peak_resident_bytes()})}};
+Json ranks_json(const dist::Communicator& comm, const RankInput& in) {
+  Json j = {{"count", comm.size()}};
+  if (in.structured) {
+    const dist::Slab& slab = in.slab;
+    const std::vector<int> owned(slab.owned_layers.begin(), slab.owned_layers.end());
+    const std::vector<int> all = dist::all_gather_values(comm, owned);
+    Json layers = Json::array();
+    for (std::size_t r = 0; r + 1 < all.size(); r += 2) layers.push_back({all[r], all[r + 1]});
+    j["layers"] = layers;
+  } else {
+    const dist::Block& b = in.slab.block;
+    j["cells"] = dist::all_gather_values(comm, std::vector<std::int64_t>{b.owned_cell_end});
+    j["ghost_cells"] =
+        dist::all_gather_values(comm, std::vector<std::int64_t>{b.held_cells - b.owned_cell_end});
+  }
+  j["bytes_sent"] = dist::all_gather_values(comm, std::vector<std::uint64_t>{comm.bytes_sent()});
+  j["peak_memory"] =
+      dist::all_gather_values(comm, std::vector<std::uint64_t>{peak_resident_bytes()});
+  return j;
 }
 
 void check_rank_output(const std::string& flag, const std::string& path, bool gather,
@@ -257,17 +356,9 @@ void drop_next_piece_nodes(io::MeshData& piece,
     drop(a.values, static_cast<std::size_t>(a.n_components));
 }
 
-void write_disjoint_pieces(const dist::Communicator& comm, const CLI::App& app,
-                           const io::MeshData& piece, const std::string& path, bool gather,
-                           const io::WriteOptions& options, double memory_limit) {
-  if (gather) {
-    check_gather_memory(comm, app, piece, memory_limit);
-    const io::MeshData whole = gathered_disjoint(comm, piece);
-    on_every_rank(comm, app, [&] {
-      if (comm.rank() == 0) io::write_mesh(whole, path, options);
-    });
-    return;
-  }
+// Every rank's `piece` as a .vtu, and the .pvtu naming them.
+void write_pieces(const dist::Communicator& comm, const CLI::App& app, const io::MeshData& piece,
+                  const std::string& path, const io::WriteOptions& options) {
   // Ranks without cells write no piece; the first rank with cells writes the .pvtu (a rank
   // without any would fail in write_vtu, as one process does).
   const std::vector<std::int64_t> cells = dist::all_gather_values(
@@ -286,9 +377,37 @@ void write_disjoint_pieces(const dist::Communicator& comm, const CLI::App& app,
   });
 }
 
+// write_on_ranks for a part of an unstructured mesh: the gathered mesh is rank 0's, every
+// rank's owned cells and their nodes put in place by their global ids (io::migrate).
+void write_mesh_part(const dist::Communicator& comm, const CLI::App& app, io::MeshData held,
+                     const RankInput& input, const std::string& path, bool gather,
+                     const io::WriteOptions& options, double memory_limit) {
+  io::MeshPart owned = owned_cells(std::move(held), input.slab.block, input.whole_cells);
+  if (!gather) return write_pieces(comm, app, owned.data, path, options);
+  check_gather_memory(comm, app, owned.data, memory_limit);
+  const io::MeshPart whole = io::migrate(comm, owned, std::vector<int>(owned.cell_ids.size(), 0));
+  owned = io::MeshPart();
+  on_every_rank(comm, app, [&] {
+    if (comm.rank() == 0) io::write_mesh(whole.data, path, options);
+  });
+}
+
+void write_disjoint_pieces(const dist::Communicator& comm, const CLI::App& app,
+                           const io::MeshData& piece, const std::string& path, bool gather,
+                           const io::WriteOptions& options, double memory_limit) {
+  if (!gather) return write_pieces(comm, app, piece, path, options);
+  check_gather_memory(comm, app, piece, memory_limit);
+  const io::MeshData whole = gathered_disjoint(comm, piece);
+  on_every_rank(comm, app, [&] {
+    if (comm.rank() == 0) io::write_mesh(whole, path, options);
+  });
+}
+
 void write_on_ranks(const dist::Communicator& comm, const CLI::App& app, io::MeshData held,
                     const RankInput& input, const std::string& path, bool gather,
                     const io::WriteOptions& options, double memory_limit) {
+  if (!input.structured)
+    return write_mesh_part(comm, app, std::move(held), input, path, gather, options, memory_limit);
   io::keep_layers(held, owned_layers(input.slab, input.shape.dim), path);
   if (gather) {
     check_gather_memory(comm, app, held, memory_limit);

@@ -1,6 +1,7 @@
 // A stage's grid and its output on the ranks of an MPI job: each rank reads its slab of a
-// structured grid (dist/block.h) with ghost layers, and writes the cells it owns as one
-// piece of a .pvtu, or sends them to rank 0, which writes one file of the whole grid.
+// structured grid (dist/block.h), or holds its part of an unstructured mesh cut by PT-Scotch,
+// with ghost layers, and writes the cells it owns as one piece of a .pvtu, or sends them to
+// rank 0, which writes one file of the whole grid.
 #pragma once
 
 #include <string>
@@ -16,19 +17,38 @@ namespace hexadapt::cli {
 
 /// What one rank reads of the input grid.
 struct RankInput {
-  io::StructuredShape shape;  ///< the whole grid's
-  dist::Slab slab;            ///< the part this rank holds, and owns
-  io::MeshData data;          ///< the held layers
+  bool structured = true;        ///< a structured grid's slab, or a part of an unstructured mesh
+  io::StructuredShape shape;     ///< the whole grid's (of an unstructured mesh: its dim only)
+  dist::Slab slab;               ///< the part this rank holds, and owns (unstructured: the block,
+                                 ///< a list, only)
+  io::MeshData data;             ///< the held layers, or cells
+  std::int64_t whole_cells = 0;  ///< of the whole grid or mesh
 };
+
+/// Whether `path` names an unstructured mesh's file by its extension (.pvtu .vtu .exo .e .g;
+/// a .vtk, which may hold either, counts as a structured grid's).
+bool unstructured_file(const std::string& path);
 
 /// Every rank's slab of the structured grid in `path`, holding `ghost_layers` layers of
 /// cells beyond the ones it owns; cut by layer counts, or by `layer_weights` (one per layer
 /// across the cut axis: dist::weighted_slab) when given. A parallel file's pieces outside a
 /// slab are not read by its rank; a single file is read whole by every rank, then cut.
-/// Errors are common to every rank (on_every_rank).
+/// Errors are common to every rank (on_every_rank); an unstructured mesh's file (.pvtu .vtu
+/// .exo .e .g) is an OptionError (this stage reads structured grids only on ranks).
 RankInput read_on_ranks(const dist::Communicator& comm, const CLI::App& app,
                         const std::string& path, io::ReadOptions options, int ghost_layers,
                         const std::vector<double>& layer_weights = {});
+
+/// read_on_ranks' slab of a structured grid, or every rank's part of the unstructured mesh in
+/// `path` (.pvtu .vtu .exo .e .g) with `ghost_layers` layers of ghost cells: a .pvtu's pieces
+/// are read by the ranks in turn (a single file by rank 0) and merged as one process merges
+/// them (io::merge_rank_pieces: the ids of one process's mesh), then the cells are cut into
+/// one part per rank by PT-Scotch on their dual graph, each part's ghosts the cells within
+/// `ghost_layers` rings of node neighbours (io::with_ghost_layers). Errors are common to
+/// every rank.
+RankInput read_mesh_on_ranks(const dist::Communicator& comm, const CLI::App& app,
+                             const std::string& path, const io::ReadOptions& options,
+                             int ghost_layers);
 
 /// The labels of the label map `input` reads (--labels), over the whole grid: every rank's,
 /// merged, increasing. Errors are common to every rank.
@@ -36,7 +56,8 @@ std::vector<std::int64_t> grid_labels(const dist::Communicator& comm, const CLI:
                                       const InputOptions& input, const std::string& path,
                                       const RankInput& in);
 
-/// Writes the owned part of every rank's `held` data (the layers of `input.slab`) to `path`:
+/// Writes the owned part of every rank's `held` data (the layers of `input.slab`, or the
+/// owned cells of an unstructured part and the nodes they use) to `path`:
 /// a .pvtu naming one .vtu piece per rank (`<path without .pvtu>_<rank>.vtu`, written by
 /// their ranks), or with `gather` one file of the whole grid in any format, written by
 /// rank 0 with the same bytes a run on one process writes. Rank 0 holds the whole mesh twice
@@ -63,9 +84,10 @@ void write_disjoint_pieces(const dist::Communicator& comm, const CLI::App& app,
                            const io::MeshData& piece, const std::string& path, bool gather,
                            const io::WriteOptions& options, double memory_limit);
 
-/// The report's `ranks` block: the rank count, and per rank the layers of `slab` it owns, the
-/// bytes sent and the peak resident memory. Every rank calls it.
-Json ranks_json(const dist::Communicator& comm, const dist::Slab& slab);
+/// The report's `ranks` block: the rank count, and per rank the layers of `in.slab` it owns
+/// (of an unstructured mesh: the cells it owns and its ghost cells), the bytes sent and the
+/// peak resident memory. Every rank calls it.
+Json ranks_json(const dist::Communicator& comm, const RankInput& in);
 
 /// Throws OptionError when `path` cannot take what write_on_ranks writes (a .pvtu, or a .pvts
 /// when `structured`, unless `gather`); `flag` names the option that gave it.

@@ -9,6 +9,7 @@
 #include "hexadapt/core/error.h"
 #ifdef HEXADAPT_TOOLS_MPI
 #include "hexadapt/dist/mpi_communicator.h"
+#include "hexadapt/dist/scotch_partition.h"
 #endif
 
 namespace hexadapt::cli {
@@ -18,6 +19,15 @@ int launched_ranks() {
   for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
     if (const char* v = std::getenv(name)) return std::max(1, std::atoi(v));
   return 1;
+}
+
+std::vector<int> partition_by_rank(const dist::Communicator& comm, const dist::DistGraph& graph) {
+#ifdef HEXADAPT_TOOLS_MPI
+  if (const auto* mpi = dynamic_cast<const dist::MpiCommunicator*>(&comm))
+    return dist::scotch_partition(*mpi, graph, comm.size());
+#endif
+  if (comm.size() > 1) throw InternalError("ranks that are not an MPI job's");
+  return std::vector<int>(static_cast<std::size_t>(graph.n_vertices()), 0);
 }
 
 std::uint64_t peak_resident_bytes() {

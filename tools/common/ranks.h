@@ -5,8 +5,10 @@
 
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "hexadapt/dist/communicator.h"
+#include "hexadapt/dist/dual_graph.h"
 
 namespace hexadapt::cli {
 
@@ -30,6 +32,11 @@ class Ranks {
 /// The number of processes the MPI launcher that started this one says the job has; 1 when
 /// no launcher did.
 int launched_ranks();
+
+/// One part per rank of `comm` for each of this rank's vertices of `graph` (a mesh's dual
+/// graph): PT-Scotch's cut (dist/scotch_partition.h) on the ranks of an MPI job, part 0 for
+/// everything on one process. Every rank calls it.
+std::vector<int> partition_by_rank(const dist::Communicator& comm, const dist::DistGraph& graph);
 
 /// The largest resident memory this process has held so far, in bytes (getrusage).
 std::uint64_t peak_resident_bytes();

@@ -368,7 +368,7 @@ int measure_on_ranks(const CLI::App& app, const cli::CommonOptions& common, cons
                       static_cast<double>(merged.data.n_cells()) * cli::measure_bytes_per_cell,
                       common.memory_limit());
   });
-  const io::GhostedPart part = io::with_ghost_layer(comm, merged);
+  const io::GhostedPart part = io::with_ghost_layers(comm, merged);
   merged = io::MeshPart();
   times.emplace_back("read", timer.seconds());
   Measured m;

@@ -313,7 +313,7 @@ int run_reconstruct_on_ranks(const CLI::App& app, Options& o, cli::CommonOptions
                              common.output, o.gather, common.write_options(),
                              common.memory_limit());
   cli::Json j = report(app, o, rec, {common.output}, t.seconds());
-  j["ranks"] = cli::ranks_json(comm, in.slab);
+  j["ranks"] = cli::ranks_json(comm, in);
   if (comm.rank() != 0) common.json.clear();  // rank 0 writes the report
   cli::write_report(common, j);
   return cli::ok;

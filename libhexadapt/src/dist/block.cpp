@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "hexadapt/core/error.h"
@@ -16,12 +17,50 @@ Block Block::whole(index_t n_cells, index_t n_nodes) {
   return b;
 }
 
+Block Block::listed(std::vector<std::int64_t> cell_ids, index_t owned_cells,
+                    std::vector<std::int64_t> node_ids, std::vector<char> owns_node) {
+  if (owns_node.size() != node_ids.size() || owned_cells < 0 ||
+      static_cast<std::size_t>(owned_cells) > cell_ids.size())
+    throw InternalError("a list block of " + std::to_string(cell_ids.size()) + " cells (" +
+                        std::to_string(owned_cells) + " owned) and " +
+                        std::to_string(node_ids.size()) + " nodes (" +
+                        std::to_string(owns_node.size()) + " owner flags)");
+  Block b;
+  b.held_cells = static_cast<index_t>(cell_ids.size());
+  b.held_nodes = static_cast<index_t>(node_ids.size());
+  b.owned_cell_end = owned_cells;
+  b.cell_ids = std::move(cell_ids);
+  b.node_ids = std::move(node_ids);
+  b.owns_node = std::move(owns_node);
+  return b;
+}
+
+namespace {
+
+// The place of g in the increasing ids [first, end), or -1.
+index_t place_in(const std::vector<std::int64_t>& ids, index_t first, index_t end, std::int64_t g) {
+  const auto b = ids.begin() + first, e = ids.begin() + end;
+  const auto it = std::lower_bound(b, e, g);
+  return it != e && *it == g ? static_cast<index_t>(it - ids.begin()) : -1;
+}
+
+}  // namespace
+
 CellId Block::local_cell(std::int64_t g) const {
+  if (is_list()) {
+    index_t l = place_in(cell_ids, 0, owned_cell_end, g);
+    if (l < 0) l = place_in(cell_ids, owned_cell_end, held_cells, g);
+    return l >= 0 ? CellId(l) : CellId();
+  }
   const std::int64_t l = g - cell_offset;
   return l >= 0 && l < held_cells ? CellId(static_cast<index_t>(l)) : CellId();
 }
 
 NodeId Block::local_node(std::int64_t g) const {
+  if (is_list()) {
+    const index_t l = place_in(node_ids, 0, held_nodes, g);
+    return l >= 0 ? NodeId(l) : NodeId();
+  }
   const std::int64_t l = g - node_offset;
   return l >= 0 && l < held_nodes ? NodeId(static_cast<index_t>(l)) : NodeId();
 }

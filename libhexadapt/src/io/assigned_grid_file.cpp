@@ -16,7 +16,7 @@ CellMaterials materials_of(const MeshData& data, const Fractions& fractions,
   switch (options.material) {
     case MaterialSource::array:
       return read_material_array(data, fractions.n_materials(), file, options.material_array,
-                                 block ? block->cell_offset : 0);
+                                 block);
     case MaterialSource::majority:
       return majority_materials(fractions);
     case MaterialSource::none:
@@ -62,7 +62,7 @@ MeshData to_mesh_data(const AssignedGrid& grid) {
 }
 
 CellMaterials read_material_array(const MeshData& data, int n_materials, const std::string& file,
-                                  const std::string& array, std::int64_t first_cell) {
+                                  const std::string& array, const dist::Block* block) {
   const DataArray* a = data.find_cell_array(array);
   if (a == nullptr)
     throw InputError(file, "cell data",
@@ -76,7 +76,7 @@ CellMaterials read_material_array(const MeshData& data, int n_materials, const s
   for (CellId c : id_range<CellId>(data.n_cells())) {
     const double v = a->values[c.idx()];
     if (!(v >= 0 && v < n_materials && v == std::floor(v)))
-      throw InputError(file, "cell " + std::to_string(first_cell + c.value()),
+      throw InputError(file, "cell " + std::to_string(dist::global_cell(block, c)),
                        "'" + array + "' is " + std::to_string(v) +
                            ", expected a material index in [0, " + std::to_string(n_materials) +
                            ")");

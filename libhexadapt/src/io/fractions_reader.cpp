@@ -87,9 +87,9 @@ Selection fraction_arrays(const MeshData& data, const FractionOptions& options,
   return s;
 }
 
-// A cell named by its id in the whole grid: `first` is the global id of the data's cell 0.
-std::string cell_where(CellId c, std::int64_t first) {
-  return "cell " + std::to_string(first + c.value());
+// A cell named by its id in the whole grid (`block`: the part of it the data holds, if any).
+std::string cell_where(CellId c, const dist::Block* block) {
+  return "cell " + std::to_string(dist::global_cell(block, c));
 }
 
 StoredPrecision stored_precision(const Selection& s) {
@@ -99,8 +99,9 @@ StoredPrecision stored_precision(const Selection& s) {
 }
 
 // Reads cell c's values into f, validated and clipped into [0, 1]; returns their sum.
-double read_cell(const Selection& s, CellId c, std::int64_t first, const FractionOptions& options,
-                 Fractions& f, FractionReport& rep, const std::string& file) {
+double read_cell(const Selection& s, CellId c, const dist::Block* block,
+                 const FractionOptions& options, Fractions& f, FractionReport& rep,
+                 const std::string& file) {
   double sum = 0;
   for (std::size_t m = 0; m < s.arrays.size(); ++m) {
     double v = s.arrays[m]->values[c.idx()];
@@ -108,7 +109,7 @@ double read_cell(const Selection& s, CellId c, std::int64_t first, const Fractio
       std::ostringstream msg;
       msg << "fraction " << s.arrays[m]->name << " = " << v << " is outside [0, 1] (tolerance "
           << options.value_tolerance << ")";
-      throw InputError(file, cell_where(c, first), msg.str());
+      throw InputError(file, cell_where(c, block), msg.str());
     }
     if (v < 0 || v > 1) {
       v = std::clamp(v, 0.0, 1.0);
@@ -138,10 +139,10 @@ double accepting(double x) {
 
 // The error for cell c, whose sum is outside the tolerance: the sum, by how much, the
 // tolerance and where it came from, and the --sum-tolerance that would accept this cell and
-// every cell read (of the file, or with `part` of the cells a rank holds, named by their
+// every cell read (of the file, or with `block` of the cells a rank holds, named by their
 // global ids). A sum below 1 can also take a void material; one above 1 cannot.
-[[noreturn]] void throw_sum_error(const Selection& s, index_t n_cells, CellId c, std::int64_t first,
-                                  bool part, double sum, const FractionReport& rep,
+[[noreturn]] void throw_sum_error(const Selection& s, index_t n_cells, CellId c,
+                                  const dist::Block* block, double sum, const FractionReport& rep,
                                   const std::string& file) {
   double largest = 0;
   for (CellId k : id_range<CellId>(n_cells)) largest = std::max(largest, sum_error(s, k));
@@ -157,13 +158,17 @@ double accepting(double x) {
   msg << "{sum_tolerance} " << accepting(err) << " would rescale this cell";
   if (largest > err) {
     msg << ", {sum_tolerance} " << accepting(largest) << " every cell";
-    if (part) msg << " of cells " << first << "-" << first + n_cells - 1 << " (this rank's part)";
+    if (block && block->is_list())
+      msg << " of the cells this rank holds";
+    else if (block)
+      msg << " of cells " << block->cell_offset << "-" << block->cell_offset + n_cells - 1
+          << " (this rank's part)";
   }
-  throw InputError(file, cell_where(c, first), msg.str());
+  throw InputError(file, cell_where(c, block), msg.str());
 }
 
 // Sets the traces of cell c to 0 and rescales it to sum 1.
-void clean_cell(CellId c, std::int64_t first, Fractions& f, FractionReport& rep,
+void clean_cell(CellId c, const dist::Block* block, Fractions& f, FractionReport& rep,
                 const std::string& file) {
   double kept = 0;
   for (int m = 0; m < f.n_materials(); ++m) {
@@ -173,7 +178,7 @@ void clean_cell(CellId c, std::int64_t first, Fractions& f, FractionReport& rep,
     }
     kept += f(c, m);
   }
-  if (kept <= 0) throw InputError(file, cell_where(c, first), "every fraction is a trace or zero");
+  if (kept <= 0) throw InputError(file, cell_where(c, block), "every fraction is a trace or zero");
   if (std::abs(kept - 1) > 1e-12) {
     ++rep.rescaled_cells;
     for (int m = 0; m < f.n_materials(); ++m) f(c, m) /= kept;
@@ -194,7 +199,7 @@ Fractions extract_fractions(const MeshData& data, const FractionOptions& options
     rep.tolerances =
         decide_tolerances(options.sum_tolerance, options.zero_below, StoredPrecision::float64, 1);
     if (report) *report = rep;
-    return fractions_from_labels(data, options, file, block ? block->cell_offset : 0);
+    return fractions_from_labels(data, options, file, block);
   }
   std::vector<std::string> names;
   const Selection selected = fraction_arrays(data, options, names, file);
@@ -203,20 +208,19 @@ Fractions extract_fractions(const MeshData& data, const FractionOptions& options
   rep.tolerances = decide_tolerances(options.sum_tolerance, options.zero_below, rep.precision,
                                      static_cast<int>(selected.arrays.size()));
   const double tolerance = rep.tolerances.sum_tolerance;
-  const std::int64_t first = block ? block->cell_offset : 0;
   FractionReport ghosts = rep;  // what the cells another rank owns would add
   for (CellId c : id_range<CellId>(data.n_cells())) {
     FractionReport& counted = block && !block->owns(c) ? ghosts : rep;
     // Validate and clip, check the sum on the values as given, then drop traces and rescale.
-    double sum = read_cell(selected, c, first, options, f, counted, file);
+    double sum = read_cell(selected, c, block, options, f, counted, file);
     if (selected.void_material >= 0 && sum <= 1 + tolerance) {
       f(c, selected.void_material) = std::max(0.0, 1 - sum);
       sum += f(c, selected.void_material);
     }
     counted.max_sum_error = std::max(counted.max_sum_error, std::abs(sum - 1));
     if (std::abs(sum - 1) > tolerance)
-      throw_sum_error(selected, data.n_cells(), c, first, block != nullptr, sum, counted, file);
-    clean_cell(c, first, f, counted, file);
+      throw_sum_error(selected, data.n_cells(), c, block, sum, counted, file);
+    clean_cell(c, block, f, counted, file);
   }
   if (report) *report = rep;
   return f;

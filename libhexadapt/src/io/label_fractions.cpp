@@ -15,15 +15,16 @@ namespace {
 // Integers a double holds exactly, so labels survive a Float32/Float64 array.
 constexpr double max_label = 9007199254740992.0;  // 2^53
 
-std::int64_t label_of(const DataArray& a, std::size_t c, std::int64_t first,
+std::int64_t label_of(const DataArray& a, std::size_t c, const dist::Block* block,
                       const std::string& file) {
   const double v = a.values[c];
   if (!(std::abs(v) <= max_label) || v != std::floor(v)) {
     std::ostringstream msg;
     msg << "label array " << quote_token(a.name) << " holds " << v
         << ", not an integer: a label map gives each cell an integer material id";
-    throw InputError(file, "cell " + std::to_string(first + static_cast<std::int64_t>(c)),
-                     msg.str());
+    throw InputError(
+        file, "cell " + std::to_string(dist::global_cell(block, CellId(static_cast<index_t>(c)))),
+        msg.str());
   }
   return static_cast<std::int64_t>(v);
 }
@@ -68,21 +69,22 @@ void check_label_count(const DataArray& a, std::size_t n, const FractionOptions&
 }  // namespace
 
 std::vector<std::int64_t> label_values(const MeshData& data, const FractionOptions& options,
-                                       const std::string& file, std::int64_t first) {
+                                       const std::string& file, const dist::Block* block) {
   const DataArray& a = label_array(data, options, file);
   std::set<std::int64_t> distinct;
   for (std::size_t c = 0; c < static_cast<std::size_t>(data.n_cells()); ++c)
-    if (distinct.insert(label_of(a, c, first, file)).second)
-      check_label_count(a, distinct.size(), options, file,
-                        "cell " + std::to_string(first + static_cast<std::int64_t>(c)));
+    if (distinct.insert(label_of(a, c, block, file)).second)
+      check_label_count(
+          a, distinct.size(), options, file,
+          "cell " + std::to_string(dist::global_cell(block, CellId(static_cast<index_t>(c)))));
   return {distinct.begin(), distinct.end()};
 }
 
 Fractions fractions_from_labels(const MeshData& data, const FractionOptions& options,
-                                const std::string& file, std::int64_t first) {
+                                const std::string& file, const dist::Block* block) {
   const DataArray& a = label_array(data, options, file);
   const std::vector<std::int64_t> values = options.label_values.empty()
-                                               ? label_values(data, options, file, first)
+                                               ? label_values(data, options, file, block)
                                                : options.label_values;
   check_label_count(a, values.size(), options, file, "");
   std::vector<std::string> names;
@@ -94,8 +96,8 @@ Fractions fractions_from_labels(const MeshData& data, const FractionOptions& opt
   }
   Fractions f(data.n_cells(), names);
   for (std::size_t c = 0; c < static_cast<std::size_t>(data.n_cells()); ++c) {
-    const auto it = std::lower_bound(values.begin(), values.end(), label_of(a, c, first, file));
-    if (it == values.end() || *it != label_of(a, c, first, file))
+    const auto it = std::lower_bound(values.begin(), values.end(), label_of(a, c, block, file));
+    if (it == values.end() || *it != label_of(a, c, block, file))
       throw InternalError("a label of the block is not among the grid's labels");
     f(CellId(static_cast<index_t>(c)), static_cast<int>(it - values.begin())) = 1.0;
   }

@@ -161,58 +161,108 @@ MeshPart assembled(const MeshPart& like, const Parcel& all, const std::vector<st
   return out;
 }
 
-// For each node of `part` (node ids increasing), the other ranks whose cells use it,
-// increasing: every node id meets its users on the rank it hashes to.
-std::vector<std::vector<int>> node_sharers(const dist::Communicator& comm, const MeshPart& part) {
+// For each of `mine` (node ids increasing), the other ranks whose `wanted` (node ids
+// increasing) hold it, increasing: every node id meets its holders on the rank it hashes to.
+std::vector<std::vector<int>> node_wanters(const dist::Communicator& comm,
+                                           const std::vector<std::int64_t>& mine,
+                                           const std::vector<std::int64_t>& wanted) {
   const int n = comm.size();
+  // (id, 2 rank + 1) for a node of mine, (id, 2 rank) for a node wanted.
   std::vector<std::vector<std::int64_t>> to(static_cast<std::size_t>(n));
-  for (const std::int64_t g : part.node_ids)
-    to[static_cast<std::size_t>(dist::rank_of_key(&g, 1, n))].push_back(g);
-  std::vector<std::pair<std::int64_t, int>> users;
-  const auto from = dist::all_to_all(comm, std::move(to));
-  for (std::size_t r = 0; r < from.size(); ++r)
-    for (const std::int64_t g : from[r]) users.push_back({g, static_cast<int>(r)});
-  std::sort(users.begin(), users.end());
+  for (const std::int64_t is_mine : {1, 0})
+    for (const std::int64_t g : is_mine ? mine : wanted) {
+      auto& list = to[static_cast<std::size_t>(dist::rank_of_key(&g, 1, n))];
+      list.push_back(g);
+      list.push_back(2 * static_cast<std::int64_t>(comm.rank()) + is_mine);
+    }
+  std::vector<std::pair<std::int64_t, std::int64_t>> holders;
+  for (const auto& got : dist::all_to_all(comm, std::move(to)))
+    for (std::size_t i = 0; i + 1 < got.size(); i += 2) holders.push_back({got[i], got[i + 1]});
+  std::sort(holders.begin(), holders.end());
   std::vector<std::vector<std::int64_t>> replies(static_cast<std::size_t>(n));
-  for (std::size_t i = 0; i < users.size();) {
+  for (std::size_t i = 0; i < holders.size();) {
     std::size_t end = i + 1;
-    while (end < users.size() && users[end].first == users[i].first) ++end;
+    while (end < holders.size() && holders[end].first == holders[i].first) ++end;
     for (std::size_t a = i; a < end; ++a)
-      for (std::size_t b = i; b < end; ++b)
-        if (a != b) {
-          auto& reply = replies[static_cast<std::size_t>(users[a].second)];
-          reply.push_back(users[a].first);
-          reply.push_back(users[b].second);
+      for (std::size_t b = i; b < end; ++b) {
+        const std::int64_t user = holders[a].second, wanter = holders[b].second;
+        if (user % 2 == 1 && wanter % 2 == 0 && user / 2 != wanter / 2) {
+          auto& reply = replies[static_cast<std::size_t>(user / 2)];
+          reply.push_back(holders[a].first);
+          reply.push_back(wanter / 2);
         }
+      }
     i = end;
   }
-  std::vector<std::vector<int>> sharers(part.node_ids.size());
+  std::vector<std::vector<int>> out(mine.size());
   for (const auto& got : dist::all_to_all(comm, std::move(replies)))
     for (std::size_t i = 0; i + 1 < got.size(); i += 2) {
-      const auto it = std::lower_bound(part.node_ids.begin(), part.node_ids.end(), got[i]);
-      sharers[static_cast<std::size_t>(it - part.node_ids.begin())].push_back(
-          static_cast<int>(got[i + 1]));
+      const auto it = std::lower_bound(mine.begin(), mine.end(), got[i]);
+      out[static_cast<std::size_t>(it - mine.begin())].push_back(static_cast<int>(got[i + 1]));
     }
-  return sharers;
+  return out;
+}
+
+// The global ids of the nodes of `cells` (local ids of `part`), increasing, merged into `ids`.
+void add_nodes_of(const MeshPart& part, const std::vector<std::size_t>& cells,
+                  std::vector<std::int64_t>& ids) {
+  const auto npc = static_cast<std::size_t>(part.data.nodes_per_cell());
+  for (const std::size_t c : cells)
+    for (std::size_t v = 0; v < npc; ++v)
+      ids.push_back(part.node_ids[part.data.cells[c * npc + v].idx()]);
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+}
+
+// For each rank, the cells of `owned` (local ids, increasing) it holds with `layers` layers of
+// ghosts: this rank all of them, another those within `layers` rings of node neighbours of
+// its own. A layer asks who holds each node of the cells held so far; only node ids travel
+// between layers.
+std::vector<std::vector<std::size_t>> cells_for_layers(const dist::Communicator& comm,
+                                                       const MeshPart& owned, int layers) {
+  const auto n = static_cast<std::size_t>(comm.size());
+  const auto me = static_cast<std::size_t>(comm.rank());
+  const MeshData& d = owned.data;
+  const auto npc = static_cast<std::size_t>(d.nodes_per_cell());
+  std::vector<std::vector<std::size_t>> cells_to(n);
+  cells_to[me].resize(static_cast<std::size_t>(d.n_cells()));
+  std::iota(cells_to[me].begin(), cells_to[me].end(), std::size_t{0});
+  std::vector<std::int64_t> held = owned.node_ids;
+  for (int layer = 0; layer < layers; ++layer) {
+    const std::vector<std::vector<int>> wanters = node_wanters(comm, owned.node_ids, held);
+    std::vector<std::vector<std::size_t>> added(n);
+    for (std::size_t c = 0; c < static_cast<std::size_t>(d.n_cells()); ++c)
+      for (std::size_t v = 0; v < npc; ++v)
+        for (const int s : wanters[d.cells[c * npc + v].idx()]) {
+          const auto r = static_cast<std::size_t>(s);
+          auto& list = added[r];
+          if ((list.empty() || list.back() != c) &&
+              !std::binary_search(cells_to[r].begin(), cells_to[r].end(), c))
+            list.push_back(c);
+        }
+    std::vector<std::vector<std::int64_t>> nodes_to(n);
+    for (std::size_t r = 0; r < n; ++r) {
+      if (layer + 1 < layers) add_nodes_of(owned, added[r], nodes_to[r]);
+      const auto middle = static_cast<std::ptrdiff_t>(cells_to[r].size());
+      cells_to[r].insert(cells_to[r].end(), added[r].begin(), added[r].end());
+      std::inplace_merge(cells_to[r].begin(), cells_to[r].begin() + middle, cells_to[r].end());
+    }
+    if (layer + 1 == layers) break;
+    for (const auto& got : dist::all_to_all(comm, std::move(nodes_to)))
+      held.insert(held.end(), got.begin(), got.end());
+    std::sort(held.begin(), held.end());
+    held.erase(std::unique(held.begin(), held.end()), held.end());
+  }
+  return cells_to;
 }
 
 }  // namespace
 
-GhostedPart with_ghost_layer(const dist::Communicator& comm, const MeshPart& owned) {
-  const std::vector<std::vector<int>> sharers = node_sharers(comm, owned);
-  const MeshData& d = owned.data;
-  const auto npc = static_cast<std::size_t>(d.nodes_per_cell());
+GhostedPart with_ghost_layers(const dist::Communicator& comm, const MeshPart& owned, int layers) {
+  if (layers < 1) throw InternalError(std::to_string(layers) + " ghost layers");
+  const std::vector<std::vector<int>> sharers = node_wanters(comm, owned.node_ids, owned.node_ids);
   const auto me = static_cast<std::size_t>(comm.rank());
-  std::vector<std::vector<std::size_t>> cells_to(static_cast<std::size_t>(comm.size()));
-  for (std::size_t c = 0; c < static_cast<std::size_t>(d.n_cells()); ++c) {
-    cells_to[me].push_back(c);
-    for (std::size_t v = 0; v < npc; ++v)
-      for (const int s : sharers[d.cells[c * npc + v].idx()]) {
-        auto& list = cells_to[static_cast<std::size_t>(s)];
-        if (list.empty() || list.back() != c) list.push_back(c);
-      }
-  }
-  std::vector<Parcel> in = delivered(comm, parcels(owned, cells_to));
+  std::vector<Parcel> in = delivered(comm, parcels(owned, cells_for_layers(comm, owned, layers)));
   std::size_t first = 0;  // where this rank's own cells start once the parcels are joined
   for (std::size_t r = 0; r < me; ++r) first += in[r].cell_ids.size();
   const std::size_t n_owned = in[me].cell_ids.size();

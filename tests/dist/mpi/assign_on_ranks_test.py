@@ -8,6 +8,7 @@ output.
 usage: assign_on_ranks_test.py TOOLS_DIR WORK_DIR MPIEXEC
 """
 import filecmp
+import json
 import os
 import sys
 
@@ -15,7 +16,7 @@ import numpy as np
 import vtk
 from vtk.util import numpy_support as ns
 
-from tool_runs import ToolRuns, grid
+from tool_runs import ToolRuns, grid, unstructured
 
 RUNS = ToolRuns(*sys.argv[1:4])
 check, path, report, write_pieces = RUNS.check, RUNS.path, RUNS.report, RUNS.write_pieces
@@ -153,6 +154,41 @@ check(code == 2, "a bad sum on 3 ranks exits %d, not 2: %s" % (code, err))
 check(err.count("error") == 1 and "cell %d" % cell in err,
       "a bad sum on 3 ranks: not one message naming cell %d: %r" % (cell, err))
 check(not os.listdir(path("bad")), "a bad sum on 3 ranks left files: %s" % os.listdir(path("bad")))
+
+# Unstructured meshes (hexahedra, quads) whose cells come in a shuffled order, in pieces VTK
+# wrote (their border points repeated): the ranks merge the pieces, cut the cells with
+# PT-Scotch and correct across the parts' borders; the gathered file is the serial one's bytes
+# and the report its figures; the .pvtu pieces read in VTK as the serial cells and materials.
+write_pieces(unstructured(grid((13, 11, 17))), "mesh.pvtu", 4)
+write_pieces(unstructured(grid((19, 15, 0), flat=True)), "flat.pvtu", 3)
+for case in ("mesh", "flat"):
+    mended = RUNS.as_serial("assign", case, case + ".pvtu")["assign"]["node_solves"]
+    check(mended > 10, "%s: only %d nodes mended, too few to test the ranks" % (case, mended))
+    serial = by_centre(read(case + "_serial/out.vtu", vtk.vtkXMLUnstructuredGridReader))
+    code, err = run(case + "_3", 3, "../%s.pvtu" % case, "-o", "pieces.pvtu")
+    pieces = by_centre(read(case + "_3/pieces.pvtu", vtk.vtkXMLPUnstructuredGridReader))
+    check(code == 0 and pieces == serial,
+          "%s on 3 ranks, pieces: exit %d (%s), VTK reads %d cells (%d serial) or other "
+          "materials" % (case, code, err, len(pieces), len(serial)))
+RUNS.as_serial("assign", "mesh_islands", "mesh.pvtu", "--min-island", "8", "--keep-materials")
+with open(path("mesh_3", "out.json")) as f:
+    parts = json.load(f)["ranks"]
+check(sum(parts["cells"]) == 13 * 11 * 17 and min(parts["ghost_cells"]) > 0,
+      "the unstructured mesh on 3 ranks: parts %r" % parts)
+code, err = run("usage", 2, "../mesh.pvtu", "-o", "out.pvts")
+check(code == 1 and ".pvts" in err and err.count("error") == 1,
+      "an unstructured mesh to a .pvts on 2 ranks: exit %d, %r" % (code, err))
+bad = unstructured(grid((13, 11, 17)))
+matrix = bad.GetCellData().GetArray("vf_matrix")
+matrix.SetValue(2000, matrix.GetValue(2000) + 0.3)
+write_pieces(bad, "badmesh.pvtu", 4)
+code, serial_err = run("badmesh_serial", 0, "../badmesh.pvtu", "-o", "out.vtu")
+named = serial_err.split("cell ")[-1].split(":")[0]
+code, err = run("badmesh", 3, "../badmesh.pvtu", "-o", "out.pvtu")
+check(code == 2 and err.count("error") == 1 and "cell %s:" % named in err
+      and not os.listdir(path("badmesh")),
+      "a bad sum in an unstructured mesh on 3 ranks: exit %d, %r (one process: %r)"
+      % (code, err, serial_err))
 
 code, err = run("usage", 2, "../hex.pvtr", "-o", "out.vtu")
 check(code == 1 and ".pvtu" in err and "--gather" in err and err.count("error") == 1,

@@ -207,7 +207,7 @@ io::MeshPart scattered(const io::MeshData& whole, std::int64_t tail = -1) {
 }
 
 void expect_reports_of_whole(const io::MeshData& whole, const io::MeshPart& owned, int listed) {
-  const io::GhostedPart part = io::with_ghost_layer(test::world(), owned);
+  const io::GhostedPart part = io::with_ghost_layers(test::world(), owned);
   QualityReportOptions quality;
   quality.threshold = 0.8;
   quality.max_listed = listed;
@@ -277,7 +277,7 @@ TEST(MeasureOnRanks, AFaceOfThreeCellsIsATopologyErrorOnEveryRank) {
   for (io::DataArray& a : whole.point_data)
     a.values.resize(static_cast<std::size_t>(whole.n_points() * a.n_components), 0.0);
   ASSERT_FALSE(quality_report(whole).topology_error.empty());
-  const io::GhostedPart part = io::with_ghost_layer(test::world(), scattered(whole));
+  const io::GhostedPart part = io::with_ghost_layers(test::world(), scattered(whole));
   const QualityReport r = quality_report(test::world(), part);
   EXPECT_FALSE(r.topology_error.empty());
   EXPECT_FALSE(r.passed());

@@ -173,7 +173,7 @@ TEST(PartitionOnRanks, AGhostLayerHoldsEveryCellAroundTheOwnedNodes) {
   const std::vector<int> to =
       dist::scotch_partition(comm, dist::dual_graph(comm, 8, cell_nodes(part)), comm.size());
   const io::MeshPart owned = io::migrate(comm, part, to);
-  const io::GhostedPart g = io::with_ghost_layer(comm, owned);
+  const io::GhostedPart g = io::with_ghost_layers(comm, owned);
   const std::size_t n_owned = owned.cell_ids.size();
   ASSERT_EQ(g.owned_cells, static_cast<index_t>(n_owned));
   EXPECT_EQ(
@@ -218,6 +218,42 @@ TEST(PartitionOnRanks, AGhostLayerHoldsEveryCellAroundTheOwnedNodes) {
     for (std::size_t v = 0; v < 8; ++v)
       EXPECT_EQ(g.part.node_ids[g.part.data.cells[c * 8 + v].idx()],
                 grid[static_cast<std::size_t>(g.part.cell_ids[c]) * 8 + v]);
+}
+
+// Two layers: the ghosts are the other ranks' cells using a node of this rank's cells or of
+// the first layer's; the nodes' owners stay those of one layer.
+TEST(PartitionOnRanks, TwoGhostLayersHoldTheCellsTwoRingsAway) {
+  const auto& comm = dynamic_cast<const dist::MpiCommunicator&>(test::world());
+  const io::MeshPart part = grid_part();
+  const std::vector<int> to =
+      dist::scotch_partition(comm, dist::dual_graph(comm, 8, cell_nodes(part)), comm.size());
+  const io::MeshPart owned = io::migrate(comm, part, to);
+  const io::GhostedPart one = io::with_ghost_layers(comm, owned);
+  const io::GhostedPart two = io::with_ghost_layers(comm, owned, 2);
+  const std::vector<int> parts = dist::all_gather_values(comm, to);
+  const std::vector<std::int64_t> grid = grid_cells();
+  std::vector<char> near((n + 1) * (n + 1) * (n + 1), 0);  // nodes of the cells held in `one`
+  for (const std::int64_t c : one.part.cell_ids)
+    for (std::size_t v = 0; v < 8; ++v) near[static_cast<std::size_t>(grid[8 * c + v])] = 1;
+  std::vector<std::int64_t> ghosts;
+  for (std::size_t c = 0; c < parts.size(); ++c) {
+    bool touches = false;
+    for (std::size_t v = 0; v < 8; ++v) touches |= near[static_cast<std::size_t>(grid[c * 8 + v])];
+    if (parts[c] != comm.rank() && touches) ghosts.push_back(static_cast<std::int64_t>(c));
+  }
+  ASSERT_EQ(two.owned_cells, one.owned_cells);
+  EXPECT_EQ(std::vector<std::int64_t>(two.part.cell_ids.begin() + two.owned_cells,
+                                      two.part.cell_ids.end()),
+            ghosts);
+  EXPECT_GT(two.part.cell_ids.size(), one.part.cell_ids.size());
+  for (std::size_t v = 0; v < two.part.node_ids.size(); ++v) {
+    const auto it =
+        std::lower_bound(one.part.node_ids.begin(), one.part.node_ids.end(), two.part.node_ids[v]);
+    const bool in_one = it != one.part.node_ids.end() && *it == two.part.node_ids[v];
+    EXPECT_EQ(two.owns_node[v] != 0,
+              in_one && one.owns_node[static_cast<std::size_t>(it - one.part.node_ids.begin())])
+        << "node " << two.part.node_ids[v];
+  }
 }
 
 }  // namespace

@@ -38,14 +38,15 @@ class ToolRuns:
 
     def report(self, folder, ranks=None):
         """WORK/folder/out.json without its times and ranks (checked when ranks is given: the
-        count, and the layers owned, bytes sent and peak memory of each)."""
+        count, and the layers owned (of an unstructured mesh: the cells), bytes sent and peak
+        memory of each)."""
         with open(self.path(folder, "out.json")) as f:
             r = json.load(f)
         r.pop("times")
         on = r.pop("ranks", None)
         if ranks:
             self.check(on["count"] == ranks and len(on["bytes_sent"]) == ranks
-                       and len(on["layers"]) == ranks
+                       and len(on["layers"] if "layers" in on else on["cells"]) == ranks
                        and len(on["peak_memory"]) == ranks
                        and all(2 ** 20 < m < 2 ** 32 for m in on["peak_memory"]),
                        "%s: the report's ranks are %r" % (folder, on))
@@ -104,6 +105,30 @@ def add_materials(g, n, flat=False, origin=(0.0, 0.0, 0.0)):
         a.SetName(name)
         g.GetCellData().AddArray(a)
     return g
+
+
+def unstructured(g, seed=3):
+    """`g` (a rectilinear grid's voxels or pixels) as an unstructured grid of hexahedra or
+    quads, its cells in a shuffled order: pieces of it are scattered over the domain."""
+    flat = g.GetCell(0).GetCellType() == vtk.VTK_PIXEL
+    order = (0, 1, 3, 2) if flat else (0, 1, 3, 2, 4, 5, 7, 6)
+    cells = np.random.default_rng(seed).permutation(g.GetNumberOfCells())
+    u = vtk.vtkUnstructuredGrid()
+    points = vtk.vtkPoints()
+    points.SetData(ns.numpy_to_vtk(np.array([g.GetPoint(i) for i in
+                                             range(g.GetNumberOfPoints())]), deep=1))
+    u.SetPoints(points)
+    u.Allocate(len(cells))
+    for c in cells:
+        ids = g.GetCell(int(c)).GetPointIds()
+        u.InsertNextCell(vtk.VTK_QUAD if flat else vtk.VTK_HEXAHEDRON, len(order),
+                         [ids.GetId(k) for k in order])
+    data = g.GetCellData()
+    for i in range(data.GetNumberOfArrays()):
+        a = ns.numpy_to_vtk(ns.vtk_to_numpy(data.GetArray(i))[cells], deep=1)
+        a.SetName(data.GetArrayName(i))
+        u.GetCellData().AddArray(a)
+    return u
 
 
 def grid(n, flat=False):

@@ -1,11 +1,13 @@
 // The part of a mesh one rank holds, and which of it the rank owns.
 //
-// A Block is a contiguous range of the global mesh's cells, in the global order, and the
-// contiguous range of its nodes, so local id + offset is the global id. That is what a
-// structured grid cut into slabs across its last axis gives (cell (i, j, k) is
-// i + nx (j + ny k)), and the whole mesh is the one-rank case. The rank owns a sub-range of
-// each: the cells and nodes it decides for; the others are ghosts, held to see around the
-// owned ones and owned by another rank.
+// A Block is either a range or a list. A range is a contiguous range of the global mesh's
+// cells, in the global order, and the contiguous range of its nodes, so local id + offset is
+// the global id: what a structured grid cut into slabs across its last axis gives (cell
+// (i, j, k) is i + nx (j + ny k)), and the whole mesh is the one-rank case. A list names the
+// global id of every cell and node held: what a partitioner's part of an unstructured mesh
+// with its ghost layers gives (io::GhostedPart). The rank owns a sub-range of the held cells
+// (a list's first ones) and some of the nodes: the cells and nodes it decides for; the others
+// are ghosts, held to see around the owned ones and owned by another rank.
 #pragma once
 
 #include <array>
@@ -18,24 +20,44 @@
 namespace hexadapt::dist {
 
 struct Block {
-  std::int64_t cell_offset = 0;  ///< global id of local cell 0
-  std::int64_t node_offset = 0;  ///< global id of local node 0
+  std::int64_t cell_offset = 0;  ///< a range's global id of local cell 0
+  std::int64_t node_offset = 0;  ///< a range's global id of local node 0
   index_t held_cells = 0, held_nodes = 0;
   index_t owned_cell_first = 0, owned_cell_end = 0;  ///< local ids of the owned cells
-  index_t owned_node_first = 0, owned_node_end = 0;  ///< local ids of the owned nodes
+  index_t owned_node_first = 0, owned_node_end = 0;  ///< a range's local ids of the owned nodes
+  /// A list's global id of each held cell (the owned ones, then the ghosts, each group
+  /// increasing) and node (increasing), and per node whether the rank owns it; empty in a range.
+  std::vector<std::int64_t> cell_ids, node_ids;
+  std::vector<char> owns_node;
 
   /// The whole mesh, owned by its one rank.
   static Block whole(index_t n_cells, index_t n_nodes);
+  /// A list (above): the first `owned_cells` of `cell_ids` are the rank's own.
+  static Block listed(std::vector<std::int64_t> cell_ids, index_t owned_cells,
+                      std::vector<std::int64_t> node_ids, std::vector<char> owns_node);
 
-  std::int64_t global(CellId c) const { return cell_offset + c.value(); }
-  std::int64_t global(NodeId n) const { return node_offset + n.value(); }
+  bool is_list() const { return !cell_ids.empty() || !node_ids.empty(); }
+  std::int64_t global(CellId c) const {
+    return is_list() ? cell_ids[c.idx()] : cell_offset + c.value();
+  }
+  std::int64_t global(NodeId n) const {
+    return is_list() ? node_ids[n.idx()] : node_offset + n.value();
+  }
   /// The local id of global cell g, or an invalid id when this block does not hold it.
   CellId local_cell(std::int64_t g) const;
   /// The local id of global node g, or an invalid id when this block does not hold it.
   NodeId local_node(std::int64_t g) const;
   bool owns(CellId c) const { return c.value() >= owned_cell_first && c.value() < owned_cell_end; }
-  bool owns(NodeId n) const { return n.value() >= owned_node_first && n.value() < owned_node_end; }
+  bool owns(NodeId n) const {
+    return is_list() ? owns_node[n.idx()] != 0
+                     : n.value() >= owned_node_first && n.value() < owned_node_end;
+  }
 };
+
+/// The id in the whole mesh of local cell c of `block`, or c's own without a block.
+inline std::int64_t global_cell(const Block* block, CellId c) {
+  return block ? block->global(c) : c.value();
+}
 
 /// Where a stage runs: the ranks, and the block of the mesh this rank holds.
 struct Distribution {

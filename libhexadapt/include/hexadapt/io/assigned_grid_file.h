@@ -46,10 +46,10 @@ MeshData to_mesh_data(const AssignedGrid& grid);
 
 /// The `array` cell array of `data`: whole numbers in [0, n_materials). Throws InputError
 /// naming `file` and what is wrong: no such array, not one value per cell, or the first cell
-/// whose value is not a material index (numbered from `first_cell`: the global id of the data's
-/// first cell when it is one rank's block).
+/// whose value is not a material index (named by its id in the whole grid when `block`, one
+/// rank's part of it, is given).
 CellMaterials read_material_array(const MeshData& data, int n_materials, const std::string& file,
                                   const std::string& array = "material",
-                                  std::int64_t first_cell = 0);
+                                  const dist::Block* block = nullptr);
 
 }  // namespace hexadapt::io

@@ -86,13 +86,14 @@ Fractions extract_fractions(const MeshData& data, const FractionOptions& options
 /// components, a value that is not an integer, too many labels: naming the file, array and
 /// cell), OptionError (fraction arrays or a void material given too, two labels of one name).
 /// With options.label_values, those are the materials (a block's cells hold some of them);
-/// `first` is the global id of data's first cell, for errors.
+/// `block` is the part of the whole grid data holds (if any), naming cells in errors.
 Fractions fractions_from_labels(const MeshData& data, const FractionOptions& options,
-                                const std::string& file = {}, std::int64_t first = 0);
+                                const std::string& file = {}, const dist::Block* block = nullptr);
 
 /// The distinct values of the label map options.labels in data's cells, increasing; errors
-/// as fractions_from_labels', naming cells by `first` + their id.
+/// as fractions_from_labels', naming cells by their id in `block`'s whole grid.
 std::vector<std::int64_t> label_values(const MeshData& data, const FractionOptions& options,
-                                       const std::string& file = {}, std::int64_t first = 0);
+                                       const std::string& file = {},
+                                       const dist::Block* block = nullptr);
 
 }  // namespace hexadapt::io

@@ -27,7 +27,7 @@ struct MeshPart {
 /// rank calls it.
 MeshPart migrate(const dist::Communicator& comm, const MeshPart& part, const std::vector<int>& to);
 
-/// A rank's cells and one layer of ghost cells around them.
+/// A rank's cells and layers of ghost cells around them.
 struct GhostedPart {
   /// The owned cells first, then the ghosts, each group in increasing id.
   MeshPart part;
@@ -42,8 +42,11 @@ inline PartIds part_ids(const GhostedPart& g) {
   return PartIds(g.part.cell_ids, g.owned_cells, g.part.node_ids, g.owns_node);
 }
 
-/// Every rank's `owned` cells with the cells of the other ranks that share a node with one of
-/// them (a node's whole star is then on each rank using it). Every rank calls it.
-GhostedPart with_ghost_layer(const dist::Communicator& comm, const MeshPart& owned);
+/// Every rank's `owned` cells with `layers` layers (>= 1) of the other ranks' cells around
+/// them: the first, the cells that share a node with an owned one (a node's whole star is
+/// then on each rank using it); each next, the cells that share a node with one held so far.
+/// Every rank calls it.
+GhostedPart with_ghost_layers(const dist::Communicator& comm, const MeshPart& owned,
+                              int layers = 1);
 
 }  // namespace hexadapt::io

@@ -97,7 +97,7 @@ CellQualities cell_qualities(const io::MeshData& data, const Progress& progress 
 /// missing node, a material array with several components) and OptionError (bins < 1).
 QualityReport quality_report(const io::MeshData& data, const QualityReportOptions& options = {});
 /// The report of a mesh spread over ranks, each holding a part with a ghost layer
-/// (io::with_ghost_layer): equal to the report of the whole mesh (ids global), the same on
+/// (io::with_ghost_layers): equal to the report of the whole mesh (ids global), the same on
 /// every rank. A part whose cells the kernels cannot represent makes `topology_error` name
 /// the rank and the part's local cell ids. Every rank calls it.
 QualityReport quality_report(const dist::Communicator& comm, const io::GhostedPart& part,

@@ -106,7 +106,7 @@ SizeReport size_report(const io::MeshData& mesh, const io::MeshData* reference,
                        const SizeReportOptions& options = {});
 
 /// The same report (no reference grid) of a mesh spread over ranks, each holding a part
-/// (io::with_ghost_layer): equal to the report of the whole mesh (ids global), the same on
+/// (io::with_ghost_layers): equal to the report of the whole mesh (ids global), the same on
 /// every rank; errors name global cell ids. Every rank calls it.
 SizeReport size_report(const dist::Communicator& comm, const io::GhostedPart& part,
                        const SizeReportOptions& options = {});

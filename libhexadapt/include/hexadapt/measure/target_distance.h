@@ -28,7 +28,7 @@ struct TargetDistances {
 /// Throws InputError when the array exists with a number of components other than 3.
 TargetDistances target_distances(const io::MeshData& mesh, const std::string& array = "target");
 
-/// The same of a mesh spread over ranks (io::with_ghost_layer's parts): the distances of the
+/// The same of a mesh spread over ranks (io::with_ghost_layers' parts): the distances of the
 /// whole mesh, ids global, the same on every rank. Every rank calls it.
 TargetDistances target_distances(const dist::Communicator& comm, const io::GhostedPart& part,
                                  const std::string& array = "target");

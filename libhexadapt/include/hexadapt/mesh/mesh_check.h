@@ -86,7 +86,7 @@ MeshCheckResult check_mesh(const M& mesh, const MeshCheckOptions& options = {});
 
 /// The same check of a mesh spread over ranks, each holding a part (`part`, numbered by
 /// `ids`) with a ghost layer of every cell sharing a node with one of its owned cells
-/// (io::with_ghost_layer): the result of the whole mesh, ids global, the same on every rank
+/// (io::with_ghost_layers): the result of the whole mesh, ids global, the same on every rank
 /// and equal to check_mesh of the whole mesh. Every rank calls it.
 template <class M>
 MeshCheckResult check_mesh(const dist::Communicator& comm, const M& part, const PartIds& ids,
