@@ -1,6 +1,8 @@
 #include "rank_files.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numeric>
 
 #include "hexadapt/core/error.h"
@@ -117,6 +119,23 @@ double data_bytes(const io::MeshData& d) {
   return bytes;
 }
 
+// Drops the points of `d` (and their point data) for which `keep(point)` is false; the
+// cells are left as they are.
+template <class Keep>
+void keep_points(io::MeshData& d, const Keep& keep) {
+  const auto kept = [&](auto& values, std::size_t width) {
+    auto at = values.begin();
+    for (std::size_t n = 0; n < d.points.size(); ++n)
+      if (keep(n)) {
+        const auto from = values.begin() + static_cast<std::ptrdiff_t>(n * width);
+        at = std::copy(from, from + static_cast<std::ptrdiff_t>(width), at);
+      }
+    values.erase(at, values.end());
+  };
+  for (io::DataArray& a : d.point_data) kept(a.values, static_cast<std::size_t>(a.n_components));
+  kept(d.points, 1);
+}
+
 // The owned cells of `held` (an unstructured part: its first cells, `block` a list) and the
 // nodes they use, with their global ids.
 io::MeshPart owned_cells(io::MeshData held, const dist::Block& block, std::int64_t whole_cells) {
@@ -136,17 +155,7 @@ io::MeshPart owned_cells(io::MeshData held, const dist::Block& block, std::int64
       out.node_ids.push_back(block.node_ids[n]);
     }
   for (NodeId& v : held.cells) v = NodeId(to[v.idx()]);
-  const auto keep = [&](auto& values, std::size_t width) {
-    auto at = values.begin();
-    for (std::size_t n = 0; n < to.size(); ++n)
-      if (to[n] >= 0) {
-        const auto from = values.begin() + static_cast<std::ptrdiff_t>(n * width);
-        at = std::copy(from, from + static_cast<std::ptrdiff_t>(width), at);
-      }
-    values.erase(at, values.end());
-  };
-  keep(held.points, 1);
-  for (io::DataArray& a : held.point_data) keep(a.values, static_cast<std::size_t>(a.n_components));
+  keep_points(held, [&](std::size_t n) { return to[n] >= 0; });
   out.cell_ids.assign(block.cell_ids.begin(),
                       block.cell_ids.begin() + static_cast<std::ptrdiff_t>(owned));
   out.data = std::move(held);
@@ -206,6 +215,51 @@ io::MeshData gathered_disjoint(const dist::Communicator& comm, const io::MeshDat
   return whole;
 }
 
+// The rows of `values` (`width` values per item) in the order `order` gives.
+template <class T>
+std::vector<T> reordered(const std::vector<T>& values, std::size_t width,
+                         const std::vector<std::size_t>& order) {
+  std::vector<T> out;
+  out.reserve(values.size());
+  for (const std::size_t i : order)
+    out.insert(out.end(), values.begin() + static_cast<std::ptrdiff_t>(i * width),
+               values.begin() + static_cast<std::ptrdiff_t>((i + 1) * width));
+  return out;
+}
+
+// `d` with its cells stably sorted by their value of the cell array `key`, and its points by
+// the key of the cells using them (a point no cell uses stays after the one before it).
+io::MeshData in_order_of(io::MeshData d, const std::string& key) {
+  const io::DataArray* k = d.find_cell_array(key);
+  if (k == nullptr || k->n_components != 1)
+    throw InternalError("no cell array " + key + " to order the gathered cells by");
+  const auto npc = static_cast<std::size_t>(d.nodes_per_cell());
+  const std::vector<double> cell_key = k->values;
+  std::vector<double> point_key(d.points.size(), -std::numeric_limits<double>::infinity());
+  for (std::size_t c = 0; c < cell_key.size(); ++c)
+    for (std::size_t v = 0; v < npc; ++v) point_key[d.cells[c * npc + v].idx()] = cell_key[c];
+  for (std::size_t p = 1; p < point_key.size(); ++p)
+    if (std::isinf(point_key[p])) point_key[p] = point_key[p - 1];
+  const auto order_of = [](const std::vector<double>& keys) {
+    std::vector<std::size_t> order(keys.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return keys[a] < keys[b]; });
+    return order;
+  };
+  const std::vector<std::size_t> cells = order_of(cell_key), points = order_of(point_key);
+  std::vector<index_t> new_id(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) new_id[points[i]] = static_cast<index_t>(i);
+  for (NodeId& v : d.cells) v = NodeId(new_id[v.idx()]);
+  d.cells = reordered(d.cells, npc, cells);
+  d.points = reordered(d.points, 1, points);
+  for (io::DataArray& a : d.cell_data)
+    a.values = reordered(a.values, static_cast<std::size_t>(a.n_components), cells);
+  for (io::DataArray& a : d.point_data)
+    a.values = reordered(a.values, static_cast<std::size_t>(a.n_components), points);
+  return d;
+}
+
 }  // namespace
 
 bool unstructured_file(const std::string& path) {
@@ -240,8 +294,9 @@ RankInput read_on_ranks(const dist::Communicator& comm, const CLI::App& app,
 
 RankInput read_mesh_on_ranks(const dist::Communicator& comm, const CLI::App& app,
                              const std::string& path, const io::ReadOptions& options,
-                             int ghost_layers) {
-  if (!unstructured_file(path)) return read_on_ranks(comm, app, path, options, ghost_layers);
+                             int ghost_layers, const std::vector<double>& layer_weights) {
+  if (!unstructured_file(path))
+    return read_on_ranks(comm, app, path, options, ghost_layers, layer_weights);
   io::RankPieces pieces;
   on_every_rank(comm, app, [&] {
     if (ends_with(path, ".pvtu")) {
@@ -341,19 +396,7 @@ void drop_next_piece_nodes(io::MeshData& piece,
     renumbered[static_cast<std::size_t>(v)] = next >= 0 ? kept + next : at++;
   }
   for (NodeId& v : piece.cells) v = NodeId(renumbered[v.idx()]);
-  const auto drop = [&](auto& values, std::size_t width) {
-    auto out = values.begin();
-    for (index_t v = 0; v < n; ++v) {
-      const auto from =
-          values.begin() + static_cast<std::ptrdiff_t>(width * static_cast<std::size_t>(v));
-      if (to[static_cast<std::size_t>(v)] < 0)
-        out = std::copy(from, from + static_cast<std::ptrdiff_t>(width), out);
-    }
-    values.erase(out, values.end());
-  };
-  drop(piece.points, 1);
-  for (io::DataArray& a : piece.point_data)
-    drop(a.values, static_cast<std::size_t>(a.n_components));
+  keep_points(piece, [&](std::size_t v) { return to[v] < 0; });
 }
 
 // Every rank's `piece` as a .vtu, and the .pvtu naming them.
@@ -394,10 +437,12 @@ void write_mesh_part(const dist::Communicator& comm, const CLI::App& app, io::Me
 
 void write_disjoint_pieces(const dist::Communicator& comm, const CLI::App& app,
                            const io::MeshData& piece, const std::string& path, bool gather,
-                           const io::WriteOptions& options, double memory_limit) {
+                           const io::WriteOptions& options, double memory_limit,
+                           const std::string& order_by) {
   if (!gather) return write_pieces(comm, app, piece, path, options);
   check_gather_memory(comm, app, piece, memory_limit);
-  const io::MeshData whole = gathered_disjoint(comm, piece);
+  io::MeshData whole = gathered_disjoint(comm, piece);
+  if (comm.rank() == 0 && !order_by.empty()) whole = in_order_of(std::move(whole), order_by);
   on_every_rank(comm, app, [&] {
     if (comm.rank() == 0) io::write_mesh(whole, path, options);
   });

@@ -48,7 +48,7 @@ RankInput read_on_ranks(const dist::Communicator& comm, const CLI::App& app,
 /// every rank.
 RankInput read_mesh_on_ranks(const dist::Communicator& comm, const CLI::App& app,
                              const std::string& path, const io::ReadOptions& options,
-                             int ghost_layers);
+                             int ghost_layers, const std::vector<double>& layer_weights = {});
 
 /// The labels of the label map `input` reads (--labels), over the whole grid: every rank's,
 /// merged, increasing. Errors are common to every rank.
@@ -79,10 +79,15 @@ void drop_next_piece_nodes(io::MeshData& piece,
 /// the pieces in rank order), to `path`: a
 /// .pvtu naming one .vtu per rank that has cells, or with `gather` one file written by
 /// rank 0 with the bytes of one process writing the whole mesh (checked against
-/// `memory_limit` as write_on_ranks does). Errors are common to every rank.
+/// `memory_limit` as write_on_ranks does). With `order_by` (the name of a cell array, e.g.
+/// the input cell each output cell comes from), the gathered cells are put in the increasing
+/// order of its values, and the points in the order of the cells using them, both stably:
+/// the order of one process when each rank's piece is in that order and no point is used
+/// by cells of two values. Errors are common to every rank.
 void write_disjoint_pieces(const dist::Communicator& comm, const CLI::App& app,
                            const io::MeshData& piece, const std::string& path, bool gather,
-                           const io::WriteOptions& options, double memory_limit);
+                           const io::WriteOptions& options, double memory_limit,
+                           const std::string& order_by = {});
 
 /// The report's `ranks` block: the rank count, and per rank the layers of `in.slab` it owns
 /// (of an unstructured mesh: the cells it owns and its ghost cells), the bytes sent and the

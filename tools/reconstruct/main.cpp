@@ -279,15 +279,16 @@ int run_reconstruct_on_ranks(const CLI::App& app, Options& o, cli::CommonOptions
       o.in.fractions.label_values = cli::grid_labels(comm, app, o.in, o.input, first);
     set_options(o, common, first.shape.dim);
   };
+  // An unstructured mesh is cut by PT-Scotch into parts of equal cell counts, not weighed.
   std::vector<double> weights;
-  if (o.cut == "memory") {
+  if (o.cut == "memory" && !cli::unstructured_file(o.input)) {
     const cli::RankInput probe = cli::read_on_ranks(comm, app, o.input, o.in.read_options(), 1);
     prepare(probe);
     weights = layer_bytes(app, o, comm, probe);
   }
   cli::RankInput in =
-      cli::read_on_ranks(comm, app, o.input, o.in.read_options(),
-                         reconstruct::greedy_ghost_layers(nsub, o.lib.greedy), weights);
+      cli::read_mesh_on_ranks(comm, app, o.input, o.in.read_options(),
+                              reconstruct::greedy_ghost_layers(nsub, o.lib.greedy), weights);
   if (weights.empty()) prepare(in);
   AssignedGrid grid;
   cli::on_every_rank(comm, app, [&] {
@@ -310,8 +311,8 @@ int run_reconstruct_on_ranks(const CLI::App& app, Options& o, cli::CommonOptions
       grid.mesh);
   Timer t;
   cli::write_disjoint_pieces(comm, app, output_data(rec, in.slab.block, grid.fractions, app),
-                             common.output, o.gather, common.write_options(),
-                             common.memory_limit());
+                             common.output, o.gather, common.write_options(), common.memory_limit(),
+                             in.structured ? "" : "parent");
   cli::Json j = report(app, o, rec, {common.output}, t.seconds());
   j["ranks"] = cli::ranks_json(comm, in);
   if (comm.rank() != 0) common.json.clear();  // rank 0 writes the report

@@ -161,48 +161,6 @@ MeshPart assembled(const MeshPart& like, const Parcel& all, const std::vector<st
   return out;
 }
 
-// For each of `mine` (node ids increasing), the other ranks whose `wanted` (node ids
-// increasing) hold it, increasing: every node id meets its holders on the rank it hashes to.
-std::vector<std::vector<int>> node_wanters(const dist::Communicator& comm,
-                                           const std::vector<std::int64_t>& mine,
-                                           const std::vector<std::int64_t>& wanted) {
-  const int n = comm.size();
-  // (id, 2 rank + 1) for a node of mine, (id, 2 rank) for a node wanted.
-  std::vector<std::vector<std::int64_t>> to(static_cast<std::size_t>(n));
-  for (const std::int64_t is_mine : {1, 0})
-    for (const std::int64_t g : is_mine ? mine : wanted) {
-      auto& list = to[static_cast<std::size_t>(dist::rank_of_key(&g, 1, n))];
-      list.push_back(g);
-      list.push_back(2 * static_cast<std::int64_t>(comm.rank()) + is_mine);
-    }
-  std::vector<std::pair<std::int64_t, std::int64_t>> holders;
-  for (const auto& got : dist::all_to_all(comm, std::move(to)))
-    for (std::size_t i = 0; i + 1 < got.size(); i += 2) holders.push_back({got[i], got[i + 1]});
-  std::sort(holders.begin(), holders.end());
-  std::vector<std::vector<std::int64_t>> replies(static_cast<std::size_t>(n));
-  for (std::size_t i = 0; i < holders.size();) {
-    std::size_t end = i + 1;
-    while (end < holders.size() && holders[end].first == holders[i].first) ++end;
-    for (std::size_t a = i; a < end; ++a)
-      for (std::size_t b = i; b < end; ++b) {
-        const std::int64_t user = holders[a].second, wanter = holders[b].second;
-        if (user % 2 == 1 && wanter % 2 == 0 && user / 2 != wanter / 2) {
-          auto& reply = replies[static_cast<std::size_t>(user / 2)];
-          reply.push_back(holders[a].first);
-          reply.push_back(wanter / 2);
-        }
-      }
-    i = end;
-  }
-  std::vector<std::vector<int>> out(mine.size());
-  for (const auto& got : dist::all_to_all(comm, std::move(replies)))
-    for (std::size_t i = 0; i + 1 < got.size(); i += 2) {
-      const auto it = std::lower_bound(mine.begin(), mine.end(), got[i]);
-      out[static_cast<std::size_t>(it - mine.begin())].push_back(static_cast<int>(got[i + 1]));
-    }
-  return out;
-}
-
 // The global ids of the nodes of `cells` (local ids of `part`), increasing, merged into `ids`.
 void add_nodes_of(const MeshPart& part, const std::vector<std::size_t>& cells,
                   std::vector<std::int64_t>& ids) {
@@ -229,7 +187,7 @@ std::vector<std::vector<std::size_t>> cells_for_layers(const dist::Communicator&
   std::iota(cells_to[me].begin(), cells_to[me].end(), std::size_t{0});
   std::vector<std::int64_t> held = owned.node_ids;
   for (int layer = 0; layer < layers; ++layer) {
-    const std::vector<std::vector<int>> wanters = node_wanters(comm, owned.node_ids, held);
+    const std::vector<std::vector<int>> wanters = dist::other_holders(comm, owned.node_ids, held);
     std::vector<std::vector<std::size_t>> added(n);
     for (std::size_t c = 0; c < static_cast<std::size_t>(d.n_cells()); ++c)
       for (std::size_t v = 0; v < npc; ++v)
@@ -260,7 +218,8 @@ std::vector<std::vector<std::size_t>> cells_for_layers(const dist::Communicator&
 
 GhostedPart with_ghost_layers(const dist::Communicator& comm, const MeshPart& owned, int layers) {
   if (layers < 1) throw InternalError(std::to_string(layers) + " ghost layers");
-  const std::vector<std::vector<int>> sharers = node_wanters(comm, owned.node_ids, owned.node_ids);
+  const std::vector<std::vector<int>> sharers =
+      dist::other_holders(comm, owned.node_ids, owned.node_ids);
   const auto me = static_cast<std::size_t>(comm.rank());
   std::vector<Parcel> in = delivered(comm, parcels(owned, cells_for_layers(comm, owned, layers)));
   std::size_t first = 0;  // where this rank's own cells start once the parcels are joined

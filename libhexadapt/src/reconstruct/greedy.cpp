@@ -6,6 +6,7 @@
 #include "hexadapt/core/error.h"
 #include "hexadapt/core/parallel.h"
 #include "hexadapt/dist/communicator.h"
+#include "hexadapt/dist/routing.h"
 
 namespace hexadapt::reconstruct {
 
@@ -261,35 +262,36 @@ class GhostRefresh {
     if (mine.held_cells != px.n_cells())
       throw InternalError("greedy: the block does not hold the cells of the pixels");
     owned_.resize(static_cast<std::size_t>(g.n_free_blocks()));
-    for (index_t s = 0; s < g.n_free_blocks(); ++s)
-      owned_[static_cast<std::size_t>(s)] = mine.owns(px.block_cell(g.block_of_slot(s))) ? 1 : 0;
-    if (where.comm.size() == 1) return;
-    // Every rank's held and owned cells, as global ranges.
-    const std::vector<std::int64_t> ranges = dist::all_gather_values(
-        where.comm, std::vector<std::int64_t>{mine.cell_offset, mine.cell_offset + mine.held_cells,
-                                              mine.cell_offset + mine.owned_cell_first,
-                                              mine.cell_offset + mine.owned_cell_end});
-    const auto range = [&](int r, int which) {
-      const auto at = 4 * static_cast<std::size_t>(r) + 2 * static_cast<std::size_t>(which);
-      return std::make_pair(ranges[at], ranges[at + 1]);
-    };
-    const auto meet = [](std::pair<std::int64_t, std::int64_t> a,
-                         std::pair<std::int64_t, std::int64_t> b) {
-      return a.first < b.second && b.first < a.second;
-    };
-    const int me = where.comm.rank();
-    for (int r = 0; r < where.comm.size(); ++r) {
-      if (r == me || !(meet(range(r, 0), range(me, 1)) || meet(range(r, 1), range(me, 0))))
-        continue;
-      peers_.push_back(r);
-      sent_.emplace_back();
-      const auto [first, end] = range(r, 0);
-      for (index_t s = 0; s < g.n_free_blocks(); ++s) {
-        const std::int64_t id = mine.global(px.block_cell(g.block_of_slot(s)));
-        if (owned_[static_cast<std::size_t>(s)] && id >= first && id < end)
-          sent_.back().push_back(s);
-      }
+    std::vector<std::pair<std::int64_t, index_t>> own, ghost;  // (global cell id, slot)
+    for (index_t s = 0; s < g.n_free_blocks(); ++s) {
+      const CellId c = px.block_cell(g.block_of_slot(s));
+      owned_[static_cast<std::size_t>(s)] = mine.owns(c) ? 1 : 0;
+      (mine.owns(c) ? own : ghost).push_back({mine.global(c), s});
     }
+    if (where.comm.size() == 1) return;
+    std::sort(own.begin(), own.end());
+    std::sort(ghost.begin(), ghost.end());
+    const auto ids = [](const std::vector<std::pair<std::int64_t, index_t>>& v) {
+      std::vector<std::int64_t> out;
+      for (const auto& p : v) out.push_back(p.first);
+      return out;
+    };
+    // The ranks holding each owned free block as a ghost, and the owner of each free ghost:
+    // the peers, the same pairs seen from both sides.
+    const std::vector<std::vector<int>> holders =
+        dist::other_holders(where.comm, ids(own), ids(ghost));
+    const std::vector<std::vector<int>> owners =
+        dist::other_holders(where.comm, ids(ghost), ids(own));
+    for (const auto* ranks : {&holders, &owners})
+      for (const std::vector<int>& r : *ranks) peers_.insert(peers_.end(), r.begin(), r.end());
+    std::sort(peers_.begin(), peers_.end());
+    peers_.erase(std::unique(peers_.begin(), peers_.end()), peers_.end());
+    sent_.resize(peers_.size());
+    for (std::size_t i = 0; i < own.size(); ++i)
+      for (const int r : holders[i]) {
+        const auto at = std::lower_bound(peers_.begin(), peers_.end(), r) - peers_.begin();
+        sent_[static_cast<std::size_t>(at)].push_back(own[i].second);
+      }
   }
 
   bool owned(index_t slot) const { return owned_[static_cast<std::size_t>(slot)] != 0; }
@@ -327,7 +329,8 @@ class GhostRefresh {
   const PixelMesh& px_;
   const dist::Distribution& where_;
   std::vector<std::uint8_t> owned_;
-  std::vector<int> peers_;  ///< the ranks holding cells this rank owns, or owning cells it holds
+  std::vector<int>
+      peers_;  ///< the ranks holding free blocks this rank owns, or owning ones it holds
   std::vector<std::vector<index_t>> sent_;  ///< per peer, the slots of the owned blocks it holds
 };
 

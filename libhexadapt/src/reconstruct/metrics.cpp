@@ -13,6 +13,16 @@ std::int64_t edgecut(const PixelMesh& pixels) {
 }
 
 std::int64_t edgecut(const PixelMesh& pixels, const dist::Distribution& where) {
+  // A face between two ranks' pixels is counted by the rank owning the pixel first in the
+  // global order (its cell's global id, then its place in the cell): local ids may order
+  // the two otherwise on each rank.
+  const auto global_block = [&](std::int64_t p) {
+    return where.block.global(pixels.block_cell(pixels.pixel_block(p)));
+  };
+  const auto first = [&](std::int64_t p, std::int64_t q) {
+    const std::int64_t bp = global_block(p), bq = global_block(q);
+    return bp != bq ? bp < bq : p < q;
+  };
   std::vector<std::int64_t> per_block(static_cast<std::size_t>(pixels.n_blocks()), 0);
   parallel_for(pixels.n_blocks(), [&](std::int64_t b) {
     if (!where.block.owns(pixels.block_cell(static_cast<index_t>(b)))) return;
@@ -21,7 +31,7 @@ std::int64_t edgecut(const PixelMesh& pixels, const dist::Distribution& where) {
          p < pixels.first_pixel(static_cast<index_t>(b + 1)); ++p)
       for (int lf = 0; lf < pixels.faces_per_pixel(); ++lf) {
         const std::int64_t q = pixels.neighbour(p, lf);
-        if (q > p && pixels.label(q) != pixels.label(p)) ++cut;
+        if (q >= 0 && pixels.label(q) != pixels.label(p) && first(p, q)) ++cut;
       }
     per_block[static_cast<std::size_t>(b)] = cut;
   });

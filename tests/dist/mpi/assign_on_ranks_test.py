@@ -161,6 +161,8 @@ check(not os.listdir(path("bad")), "a bad sum on 3 ranks left files: %s" % os.li
 # and the report its figures; the .pvtu pieces read in VTK as the serial cells and materials.
 write_pieces(unstructured(grid((13, 11, 17))), "mesh.pvtu", 4)
 write_pieces(unstructured(grid((19, 15, 0), flat=True)), "flat.pvtu", 3)
+check(0 < read("mesh_1.vtu", vtk.vtkXMLUnstructuredGridReader).GetNumberOfCells() < 13 * 11 * 17,
+      "the pieces of mesh.pvtu are not parts of it")
 for case in ("mesh", "flat"):
     mended = RUNS.as_serial("assign", case, case + ".pvtu")["assign"]["node_solves"]
     check(mended > 10, "%s: only %d nodes mended, too few to test the ranks" % (case, mended))

@@ -76,7 +76,12 @@ class ToolRuns:
         kind = g.GetClassName().replace("vtk", "")
         w = getattr(vtk, "vtkXMLP" + kind + "Writer")()
         w.SetFileName(self.path(name))
-        w.SetInputData(g)
+        if kind == "UnstructuredGrid":  # each piece its share of the cells, not the whole
+            extract = vtk.vtkExtractUnstructuredGridPiece()
+            extract.SetInputData(g)
+            w.SetInputConnection(extract.GetOutputPort())
+        else:
+            w.SetInputData(g)
         w.SetNumberOfPieces(pieces)
         w.SetStartPiece(0)
         w.SetEndPiece(pieces - 1)

@@ -64,6 +64,13 @@ struct Ranges {
 /// every rank and in every run.
 int rank_of_key(const std::int64_t* key, std::size_t n, int size);
 
+/// For each id of `mine` (increasing), the other ranks whose `wanted` (increasing) lists it,
+/// in increasing rank order: e.g. the ranks holding as ghosts the cells this rank owns, or the
+/// ranks using the nodes this rank uses. Every rank calls it.
+std::vector<std::vector<int>> other_holders(const Communicator& comm,
+                                            const std::vector<std::int64_t>& mine,
+                                            const std::vector<std::int64_t>& wanted);
+
 /// For each global id of `wanted`, its row of `rows` (`width` values per id this rank holds
 /// in `ranges`) from the rank holding it, in the order of `wanted`. Every rank calls it.
 template <class T>
