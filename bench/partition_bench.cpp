@@ -80,19 +80,21 @@ void run(const dist::MpiCommunicator& comm, const std::string& path) {
         [&] { graph = dist::dual_graph(comm, read.data.nodes_per_cell(), cell_nodes(read)); });
   std::vector<int> parts;
   phase(comm, "scotch", [&] { parts = dist::scotch_partition(comm, graph, comm.size()); });
+  const std::int64_t read_cells = read.data.n_cells(), n_cells = read.n_cells,
+                     n_nodes = read.n_nodes;
   io::MeshPart moved;
-  phase(comm, "migrate", [&] { moved = io::migrate(comm, read, parts); });
+  phase(comm, "migrate", [&] { moved = io::migrate(comm, std::move(read), parts); });
   io::GhostedPart ghosted;
   phase(comm, "ghost layer", [&] { ghosted = io::with_ghost_layers(comm, moved); });
   const std::int64_t cut = cut_faces(comm, graph, parts);
   const std::vector<double> rows = dist::all_gather_values(
       comm, std::vector<double>{
-                static_cast<double>(read.data.n_cells()), static_cast<double>(moved.data.n_cells()),
+                static_cast<double>(read_cells), static_cast<double>(moved.data.n_cells()),
                 static_cast<double>(ghosted.part.data.n_cells() - ghosted.owned_cells),
                 static_cast<double>(comm.bytes_sent()) / 1e6, peak_mib()});
   if (comm.rank() != 0) return;
-  std::printf("  %lld cells, %lld nodes, %lld faces cut\n", static_cast<long long>(read.n_cells),
-              static_cast<long long>(read.n_nodes), static_cast<long long>(cut));
+  std::printf("  %lld cells, %lld nodes, %lld faces cut\n", static_cast<long long>(n_cells),
+              static_cast<long long>(n_nodes), static_cast<long long>(cut));
   std::printf("  rank   cells read   cells owned   ghosts   MB sent   peak MiB\n");
   for (std::size_t r = 0; r * 5 < rows.size(); ++r)
     std::printf("  %4zu %12.0f %13.0f %8.0f %9.1f %10.0f\n", r, rows[r * 5], rows[r * 5 + 1],

@@ -312,11 +312,15 @@ RankInput read_mesh_on_ranks(const dist::Communicator& comm, const CLI::App& app
   io::MeshPart part;
   on_every_rank(comm, app, [&] { part = io::merge_rank_pieces(comm, std::move(pieces), options); });
   on_every_rank(comm, app, [&] {
-    std::vector<std::int64_t> cell_nodes;
-    cell_nodes.reserve(part.data.cells.size());
-    for (const NodeId v : part.data.cells) cell_nodes.push_back(part.node_ids[v.idx()]);
-    const dist::DistGraph graph = dist::dual_graph(comm, part.data.nodes_per_cell(), cell_nodes);
-    part = io::migrate(comm, part, partition_by_rank(comm, graph));
+    std::vector<int> parts;
+    {
+      std::vector<std::int64_t> cell_nodes;
+      cell_nodes.reserve(part.data.cells.size());
+      for (const NodeId v : part.data.cells) cell_nodes.push_back(part.node_ids[v.idx()]);
+      parts =
+          partition_by_rank(comm, dist::dual_graph(comm, part.data.nodes_per_cell(), cell_nodes));
+    }
+    part = io::migrate(comm, std::move(part), parts);
   });
   io::GhostedPart ghosted;
   on_every_rank(comm, app, [&] { ghosted = io::with_ghost_layers(comm, part, ghost_layers); });
@@ -428,8 +432,8 @@ void write_mesh_part(const dist::Communicator& comm, const CLI::App& app, io::Me
   io::MeshPart owned = owned_cells(std::move(held), input.slab.block, input.whole_cells);
   if (!gather) return write_pieces(comm, app, owned.data, path, options);
   check_gather_memory(comm, app, owned.data, memory_limit);
-  const io::MeshPart whole = io::migrate(comm, owned, std::vector<int>(owned.cell_ids.size(), 0));
-  owned = io::MeshPart();
+  std::vector<int> to_first(owned.cell_ids.size(), 0);
+  const io::MeshPart whole = io::migrate(comm, std::move(owned), to_first);
   on_every_rank(comm, app, [&] {
     if (comm.rank() == 0) io::write_mesh(whole.data, path, options);
   });

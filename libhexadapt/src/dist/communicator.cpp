@@ -48,9 +48,10 @@ double exact_sum(const Communicator& comm, const ExactSum& mine) {
 }
 
 std::vector<Buffer> exchange(const Communicator& comm, const std::vector<int>& peers,
-                             const std::vector<Buffer>& to) {
+                             std::vector<Buffer> to) {
   std::vector<std::vector<std::uint8_t>> bytes;
-  for (const Buffer& b : to) bytes.push_back(b.bytes());
+  for (Buffer& b : to) bytes.push_back(b.take());
+  to = {};
   std::vector<Buffer> out;
   for (auto& b : comm.exchange(peers, bytes)) out.emplace_back(std::move(b));
   return out;

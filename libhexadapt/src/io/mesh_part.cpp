@@ -82,13 +82,16 @@ std::vector<Parcel> delivered(const dist::Communicator& comm, std::vector<Parcel
     if (r != comm.rank()) {
       peers.push_back(r);
       send.push_back(packed(out[static_cast<std::size_t>(r)]));
+      out[static_cast<std::size_t>(r)] = Parcel();
     }
   std::vector<Parcel> in(static_cast<std::size_t>(n));
   in[static_cast<std::size_t>(comm.rank())] = std::move(out[static_cast<std::size_t>(comm.rank())]);
   if (n == 1) return in;
-  std::vector<dist::Buffer> got = dist::exchange(comm, peers, send);
-  for (std::size_t i = 0; i < peers.size(); ++i)
+  std::vector<dist::Buffer> got = dist::exchange(comm, peers, std::move(send));
+  for (std::size_t i = 0; i < peers.size(); ++i) {
     in[static_cast<std::size_t>(peers[i])] = unpacked(got[i]);
+    got[i] = dist::Buffer();
+  }
   return in;
 }
 
@@ -125,6 +128,13 @@ std::vector<double> rows_in(const std::vector<double>& rows, std::size_t width,
   return out;
 }
 
+// `arrays` without their values.
+std::vector<DataArray> headers_of(const std::vector<DataArray>& arrays) {
+  std::vector<DataArray> out;
+  for (const DataArray& a : arrays) out.push_back({a.name, a.n_components, a.type, {}});
+  return out;
+}
+
 // The part holding `all`'s cells in the order `cells` gives and their nodes (one copy of
 // each, increasing id), with `like`'s kind, metadata and array names.
 MeshPart assembled(const MeshPart& like, const Parcel& all, const std::vector<std::size_t>& cells) {
@@ -135,8 +145,8 @@ MeshPart assembled(const MeshPart& like, const Parcel& all, const std::vector<st
   MeshData& m = out.data;
   m.dim = d.dim;
   m.metadata = d.metadata;
-  m.cell_data = d.cell_data;
-  m.point_data = d.point_data;
+  m.cell_data = headers_of(d.cell_data);
+  m.point_data = headers_of(d.point_data);
   std::vector<std::size_t> nodes = order_of(all.node_ids);
   nodes.erase(
       std::unique(nodes.begin(), nodes.end(),
@@ -246,7 +256,7 @@ GhostedPart with_ghost_layers(const dist::Communicator& comm, const MeshPart& ow
   return out;
 }
 
-MeshPart migrate(const dist::Communicator& comm, const MeshPart& part, const std::vector<int>& to) {
+MeshPart migrate(const dist::Communicator& comm, MeshPart part, const std::vector<int>& to) {
   if (to.size() != static_cast<std::size_t>(part.data.n_cells()))
     throw InternalError("a destination for " + std::to_string(to.size()) + " of " +
                         std::to_string(part.data.n_cells()) + " cells");
@@ -256,8 +266,17 @@ MeshPart migrate(const dist::Communicator& comm, const MeshPart& part, const std
       throw InternalError("destination rank " + std::to_string(to[c]));
     cells_to[static_cast<std::size_t>(to[c])].push_back(c);
   }
-  const Parcel all = joined(delivered(comm, parcels(part, cells_to)));
-  return assembled(part, all, order_of(all.cell_ids));
+  std::vector<Parcel> out = parcels(part, cells_to);
+  MeshPart like;  // what assembled() takes of the part, which goes before anything travels
+  like.n_cells = part.n_cells;
+  like.n_nodes = part.n_nodes;
+  like.data.dim = part.data.dim;
+  like.data.metadata = std::move(part.data.metadata);
+  like.data.cell_data = headers_of(part.data.cell_data);
+  like.data.point_data = headers_of(part.data.point_data);
+  part = MeshPart();
+  const Parcel all = joined(delivered(comm, std::move(out)));
+  return assembled(like, all, order_of(all.cell_ids));
 }
 
 }  // namespace hexadapt::io

@@ -131,6 +131,11 @@ class Buffer {
   }
 
   const std::vector<std::uint8_t>& bytes() const { return bytes_; }
+  /// The bytes, moved out: the buffer is left empty.
+  std::vector<std::uint8_t> take() {
+    read_ = 0;
+    return std::move(bytes_);
+  }
 
  private:
   void check(std::uint64_t n) const;
@@ -140,9 +145,10 @@ class Buffer {
 
 /// Every rank's buffer, in rank order.
 std::vector<Buffer> all_gather(const Communicator& comm, const Buffer& mine);
-/// What each of `peers` sent, in the order of `peers` (Communicator::exchange).
+/// What each of `peers` sent, in the order of `peers` (Communicator::exchange). `to` is taken
+/// by value: pass it moved, and its bytes are sent without a copy.
 std::vector<Buffer> exchange(const Communicator& comm, const std::vector<int>& peers,
-                             const std::vector<Buffer>& to);
+                             std::vector<Buffer> to);
 /// On rank `root`, every rank's buffer in rank order; on the others, none.
 std::vector<Buffer> gather(const Communicator& comm, const Buffer& mine, int root);
 

@@ -29,7 +29,7 @@ std::vector<std::vector<T>> all_to_all(const Communicator& comm, std::vector<std
       out.emplace_back();
       out.back().put_vector(to[static_cast<std::size_t>(r)]);
     }
-  std::vector<Buffer> in = exchange(comm, peers, out);
+  std::vector<Buffer> in = exchange(comm, peers, std::move(out));
   for (std::size_t i = 0; i < peers.size(); ++i)
     from[static_cast<std::size_t>(peers[i])] = in[i].get_vector<T>();
   return from;

@@ -25,7 +25,7 @@ struct MeshPart {
 /// the nodes they use, points and point arrays): each rank then holds the cells sent to it
 /// and their nodes, both in increasing global id, the same for any order of arrival. Every
 /// rank calls it.
-MeshPart migrate(const dist::Communicator& comm, const MeshPart& part, const std::vector<int>& to);
+MeshPart migrate(const dist::Communicator& comm, MeshPart part, const std::vector<int>& to);
 
 /// A rank's cells and layers of ghost cells around them.
 struct GhostedPart {
