@@ -184,10 +184,11 @@ void add_nodes_of(const MeshPart& part, const std::vector<std::size_t>& cells,
 
 // For each rank, the cells of `owned` (local ids, increasing) it holds with `layers` layers of
 // ghosts: this rank all of them, another those within `layers` rings of node neighbours of
-// its own. A layer asks who holds each node of the cells held so far; only node ids travel
-// between layers.
+// its own. A layer asks who holds each node of the cells held so far (the first: `sharers`,
+// the other ranks using each owned node); only node ids travel between layers.
 std::vector<std::vector<std::size_t>> cells_for_layers(const dist::Communicator& comm,
-                                                       const MeshPart& owned, int layers) {
+                                                       const MeshPart& owned, int layers,
+                                                       std::vector<std::vector<int>> sharers) {
   const auto n = static_cast<std::size_t>(comm.size());
   const auto me = static_cast<std::size_t>(comm.rank());
   const MeshData& d = owned.data;
@@ -197,7 +198,8 @@ std::vector<std::vector<std::size_t>> cells_for_layers(const dist::Communicator&
   std::iota(cells_to[me].begin(), cells_to[me].end(), std::size_t{0});
   std::vector<std::int64_t> held = owned.node_ids;
   for (int layer = 0; layer < layers; ++layer) {
-    const std::vector<std::vector<int>> wanters = dist::other_holders(comm, owned.node_ids, held);
+    const std::vector<std::vector<int>> wanters =
+        layer == 0 ? std::move(sharers) : dist::other_holders(comm, owned.node_ids, held);
     std::vector<std::vector<std::size_t>> added(n);
     for (std::size_t c = 0; c < static_cast<std::size_t>(d.n_cells()); ++c)
       for (std::size_t v = 0; v < npc; ++v)
@@ -231,7 +233,8 @@ GhostedPart with_ghost_layers(const dist::Communicator& comm, const MeshPart& ow
   const std::vector<std::vector<int>> sharers =
       dist::other_holders(comm, owned.node_ids, owned.node_ids);
   const auto me = static_cast<std::size_t>(comm.rank());
-  std::vector<Parcel> in = delivered(comm, parcels(owned, cells_for_layers(comm, owned, layers)));
+  std::vector<Parcel> in =
+      delivered(comm, parcels(owned, cells_for_layers(comm, owned, layers, sharers)));
   std::size_t first = 0;  // where this rank's own cells start once the parcels are joined
   for (std::size_t r = 0; r < me; ++r) first += in[r].cell_ids.size();
   const std::size_t n_owned = in[me].cell_ids.size();
