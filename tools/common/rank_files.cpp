@@ -292,13 +292,14 @@ RankInput read_on_ranks(const dist::Communicator& comm, const CLI::App& app,
   return in;
 }
 
-RankInput read_mesh_on_ranks(const dist::Communicator& comm, const CLI::App& app,
-                             const std::string& path, const io::ReadOptions& options,
-                             int ghost_layers, const std::vector<double>& layer_weights) {
-  if (!unstructured_file(path))
-    return read_on_ranks(comm, app, path, options, ghost_layers, layer_weights);
+io::RankPieces read_pieces_on_ranks(const dist::Communicator& comm, const CLI::App& app,
+                                    const std::string& path, const io::ReadOptions& options) {
   io::RankPieces pieces;
   on_every_rank(comm, app, [&] {
+    if (!unstructured_file(path))
+      throw OptionError(path +
+                        ": on several ranks this stage reads unstructured meshes only (.pvtu, "
+                        ".vtu, .exo): run it on one process");
     if (ends_with(path, ".pvtu")) {
       pieces = io::read_rank_pieces(path, options, comm.rank(), comm.size());
     } else if (comm.rank() == 0) {
@@ -307,6 +308,15 @@ RankInput read_mesh_on_ranks(const dist::Communicator& comm, const CLI::App& app
       pieces.index.push_back(0);
     }
   });
+  return pieces;
+}
+
+RankInput read_mesh_on_ranks(const dist::Communicator& comm, const CLI::App& app,
+                             const std::string& path, const io::ReadOptions& options,
+                             int ghost_layers, const std::vector<double>& layer_weights) {
+  if (!unstructured_file(path))
+    return read_on_ranks(comm, app, path, options, ghost_layers, layer_weights);
+  io::RankPieces pieces = read_pieces_on_ranks(comm, app, path, options);
   // Each collective step whole inside on_every_rank: a rank that fails alone must not leave
   // the others waiting in a collective it skipped.
   io::MeshPart part;

@@ -12,6 +12,7 @@
 #include "hexadapt/dist/block.h"
 #include "hexadapt/io/mesh_data.h"
 #include "hexadapt/io/mesh_file.h"
+#include "hexadapt/io/vtk_collection.h"
 
 namespace hexadapt::cli {
 
@@ -38,6 +39,12 @@ bool unstructured_file(const std::string& path);
 RankInput read_on_ranks(const dist::Communicator& comm, const CLI::App& app,
                         const std::string& path, io::ReadOptions options, int ghost_layers,
                         const std::vector<double>& layer_weights = {});
+
+/// Every rank's share of the pieces of the unstructured mesh in `path` (io::RankPieces): of a
+/// .pvtu, the pieces io::read_rank_pieces gives it; a single file (.vtu .exo .e .g) is read
+/// by rank 0, as one piece. Another file is an OptionError. Errors are common to every rank.
+io::RankPieces read_pieces_on_ranks(const dist::Communicator& comm, const CLI::App& app,
+                                    const std::string& path, const io::ReadOptions& options);
 
 /// read_on_ranks' slab of a structured grid, or every rank's part of the unstructured mesh in
 /// `path` (.pvtu .vtu .exo .e .g) with `ghost_layers` layers of ghost cells: a .pvtu's pieces

@@ -24,6 +24,7 @@
 #include "hexadapt/measure/target_distance.h"
 #include "input_record.h"
 #include "memory.h"
+#include "rank_files.h"
 #include "ranks.h"
 
 namespace {
@@ -334,7 +335,8 @@ int measure(const CLI::App& app, const cli::CommonOptions& common, const Args& a
   return finish(app, common, a, {report, distances, size, disc.report, recorded}, times, {});
 }
 
-// On the ranks of an MPI job: rank r reads its share of the .pvtu's pieces; the pieces are
+// On the ranks of an MPI job: rank r reads its share of the .pvtu's pieces (a single file:
+// rank 0 reads it); the pieces are
 // merged on the ranks (the mesh one process reads), each rank's cells get a ghost layer, and
 // the reports are those of the whole mesh (ids global; measure/quality_report.h).
 int measure_on_ranks(const CLI::App& app, const cli::CommonOptions& common, const Args& a,
@@ -353,10 +355,7 @@ int measure_on_ranks(const CLI::App& app, const cli::CommonOptions& common, cons
   PhaseTimes times;
   const Timer timer;
   const io::ReadOptions reading = a.in.read_options();
-  io::RankPieces pieces;
-  cli::on_every_rank(comm, app, [&] {
-    pieces = io::read_rank_pieces(a.input, reading, comm.rank(), comm.size());
-  });
+  io::RankPieces pieces = cli::read_pieces_on_ranks(comm, app, a.input, reading);
   // Each step whole inside on_every_rank: a rank that fails alone must not leave the others
   // waiting in a collective it skipped.
   io::MeshPart merged;

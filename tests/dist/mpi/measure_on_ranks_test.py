@@ -153,6 +153,17 @@ for case, wanted in (("defects", 3), ("far", 3), ("two", 3)):
               and all(2 ** 20 < m < 2 ** 32 for m in on["peak_memory"]),
               "%s on %d ranks: the report's ranks are %r" % (case, ranks, on))
 
+# A single .vtu: rank 0 reads it, the ranks cut it as they cut pieces; the serial report.
+single = vtk.vtkXMLUnstructuredGridWriter()
+single.SetFileName(path("defects.vtu"))
+single.SetInputData(defective())
+single.Write()
+code, err = run("measure", "single_serial", 0, "../defects.vtu", *MEASURE)
+code_ranks, err_ranks = run("measure", "single_3", 3, "../defects.vtu", *MEASURE)
+check(code == 3 and code_ranks == 3 and report("single_3") == report("single_serial"),
+      "a single .vtu on 3 ranks: exit %d (%s), serial %d (%s), or another report"
+      % (code_ranks, err_ranks, code, err))
+
 # Refused on several ranks before any work, with one message.
 for args, code_wanted, words in (
         (("../defects.pvtu", "--reference", "../defects.pvtu"), 1, ["--reference", "one process"]),
