@@ -926,7 +926,10 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
   report["ranks"] = cli::ranks_json(comm, in);
   report["ranks"].update(per_rank);
   report["ranks"]["runs"] = steps;
-  report["ranks"]["cut_layers"] = pillowed ? "pillowed" : "unpillowed";
+  // In 2D the layers are cavities, and no cavity holds a cut's node: nothing is laid across.
+  report["ranks"]["cut_layers"] = !pillowed           ? "unpillowed"
+                                  : in.shape.dim == 2 ? "none"
+                                                      : "pillowed";
   const auto below = combined["cells_below_threshold"].get<std::int64_t>() +
                      combined["cells_below_min_edge"].get<std::int64_t>();
   report["threshold_met"] = below == 0;

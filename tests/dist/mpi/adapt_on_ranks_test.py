@@ -74,8 +74,8 @@ def check_one_mesh(name, label, threshold=0.3):
     return p, conn
 
 
-def report(folder):
-    with open(path(folder, "out.json")) as f:
+def report(folder, name="out.json"):
+    with open(path(folder, name)) as f:
         return json.load(f)
 
 
@@ -199,6 +199,26 @@ check(code == 0, "adapt of the vortex on 2 ranks exits %d: %s" % (code, err))
 check(report("vortex")["ranks"]["cut_layers"] == "unpillowed",
       "the vortex on 2 ranks: the cuts' cells %s" % report("vortex")["ranks"]["cut_layers"])
 check_one_mesh("vortex/out.pvtu", "the vortex on 2 ranks")
+
+# 2D (three disks, cut across y): nothing laid across the cuts (the layers are cavities);
+# the gathered mesh keeps the threshold, passes measure's checks against the input, and its
+# interface nodes are all near their interface, as on one process.
+for tool, args in (("generate", ("venn", "--dims", "40,24", "-o", "vf.vts")),
+                   ("assign", ("vf.vts", "-o", "assigned.vts")),
+                   ("adapt", ("assigned.vts", "-o", "serial.vtu", "--json", "serial.json"))):
+    code, err = run(tool, "flat", 0, *args)
+    check(code == 0, "%s of the 2D case exits %d: %s" % (tool, code, err))
+code, err = run("adapt", "flat", 2, "assigned.vts", "-o", "out.vtu", "--gather", "--json",
+                "out.json")
+check(code == 0, "adapt of the 2D case on 2 ranks exits %d: %s" % (code, err))
+flat, flat_serial = report("flat"), report("flat", "serial.json")
+check(flat["ranks"]["cut_layers"] == "none" and flat["threshold_met"]
+      and flat["result"]["near_interface"] == flat_serial["result"]["near_interface"] > 100,
+      "the 2D case on 2 ranks: cut layers %s, threshold met %s, near %d (one process: %d)"
+      % (flat["ranks"]["cut_layers"], flat["threshold_met"], flat["result"]["near_interface"],
+         flat_serial["result"]["near_interface"]))
+code, err = run("measure", "flat", 0, "out.vtu", "--reference", "vf.vts")
+check(code == 0, "measure of the 2D case's gathered mesh exits %d: %s" % (code, err))
 
 # The chain on ranks: assign writes .vts pieces, adapt reads its slabs of them.
 code, err = run("assign", "chain", 3, "../vf.vts", "-o", "assigned.pvts")
