@@ -172,7 +172,13 @@ for case in ("mesh", "flat"):
     check(code == 0 and pieces == serial,
           "%s on 3 ranks, pieces: exit %d (%s), VTK reads %d cells (%d serial) or other "
           "materials" % (case, code, err, len(pieces), len(serial)))
-RUNS.as_serial("assign", "mesh_islands", "mesh.pvtu", "--min-island", "8", "--keep-materials")
+islands = RUNS.as_serial("assign", "mesh_islands", "mesh.pvtu",
+                        "--min-island", "8")["assign"]["islands"]
+check(islands["reassigned"] > 3, "--min-island, unstructured: the serial run reassigns %r" % islands)
+write_pieces(unstructured(thin), "thinmesh.pvtu", 4)
+kept = RUNS.as_serial("assign", "thinmesh", "thinmesh.pvtu", "--keep-materials")["assign"]["kept"]
+check(len(kept) == 1 and kept[0]["cells"] > 10,
+      "kept material, unstructured: the serial run keeps %r" % kept)
 with open(path("mesh_3", "out.json")) as f:
     parts = json.load(f)["ranks"]
 check(sum(parts["cells"]) == 13 * 11 * 17 and min(parts["ghost_cells"]) > 0,
