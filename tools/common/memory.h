@@ -21,6 +21,10 @@ inline constexpr double measure_bytes_per_cell = 500;  ///< per cell of mesh and
 /// by memory. Fitted to the peaks of the sphere at 96^3 and 128^3 on one process: 181 bytes
 /// per cell plus 1.1 times the pixel estimate.
 inline constexpr double reconstruct_grid_bytes_per_cell = 200;
+/// The same for a rank's part of an unstructured mesh (cut by PT-Scotch), which weighs more
+/// while it is merged, cut and moved: about 700 bytes per cell besides the pixels, from
+/// assign's peaks on 4 ranks of a 2.1 M-cell jittered hex mesh (342-372 MiB per 520 k cells).
+inline constexpr double reconstruct_part_bytes_per_cell = 700;
 
 /// "123", "500M", "8G", "1.5T" (powers of 1000) -> bytes; "" -> physical_memory().
 /// Throws OptionError naming --max-memory.

@@ -260,6 +260,27 @@ io::MeshData in_order_of(io::MeshData d, const std::string& key) {
   return d;
 }
 
+// Integer weights for the partitioner from `weights` (per cell of this rank, > 0): each over
+// the lightest cell's of the whole mesh, rounded, from 1 to 64, and lower caps where the sum
+// over `whole_cells` cells could pass Scotch's 2^31.
+std::vector<std::int64_t> integer_weights(const dist::Communicator& comm,
+                                          const std::vector<double>& weights,
+                                          std::int64_t whole_cells) {
+  double lightest = std::numeric_limits<double>::infinity();
+  for (const double w : weights)
+    if (w > 0) lightest = std::min(lightest, w);
+  for (const double w : dist::all_gather_values(comm, std::vector<double>{lightest}))
+    lightest = std::min(lightest, w);
+  const double cap = std::clamp(
+      std::floor(std::ldexp(1.0, 30) / static_cast<double>(std::max<std::int64_t>(1, whole_cells))),
+      1.0, 64.0);
+  std::vector<std::int64_t> out;
+  out.reserve(weights.size());
+  for (const double w : weights)
+    out.push_back(static_cast<std::int64_t>(std::clamp(std::round(w / lightest), 1.0, cap)));
+  return out;
+}
+
 }  // namespace
 
 bool unstructured_file(const std::string& path) {
@@ -313,7 +334,8 @@ io::RankPieces read_pieces_on_ranks(const dist::Communicator& comm, const CLI::A
 
 RankInput read_mesh_on_ranks(const dist::Communicator& comm, const CLI::App& app,
                              const std::string& path, const io::ReadOptions& options,
-                             int ghost_layers, const std::vector<double>& layer_weights) {
+                             int ghost_layers, const std::vector<double>& layer_weights,
+                             const CellWeights& cell_weights) {
   if (!unstructured_file(path))
     return read_on_ranks(comm, app, path, options, ghost_layers, layer_weights);
   io::RankPieces pieces = read_pieces_on_ranks(comm, app, path, options);
@@ -327,8 +349,9 @@ RankInput read_mesh_on_ranks(const dist::Communicator& comm, const CLI::App& app
       std::vector<std::int64_t> cell_nodes;
       cell_nodes.reserve(part.data.cells.size());
       for (const NodeId v : part.data.cells) cell_nodes.push_back(part.node_ids[v.idx()]);
-      parts =
-          partition_by_rank(comm, dist::dual_graph(comm, part.data.nodes_per_cell(), cell_nodes));
+      dist::DistGraph graph = dist::dual_graph(comm, part.data.nodes_per_cell(), cell_nodes);
+      if (cell_weights) graph.weights = integer_weights(comm, cell_weights(part), part.n_cells);
+      parts = partition_by_rank(comm, graph);
     }
     part = io::migrate(comm, std::move(part), parts);
   });

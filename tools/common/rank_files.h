@@ -4,6 +4,7 @@
 // rank 0, which writes one file of the whole grid.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "hexadapt/dist/block.h"
 #include "hexadapt/io/mesh_data.h"
 #include "hexadapt/io/mesh_file.h"
+#include "hexadapt/io/mesh_part.h"
 #include "hexadapt/io/vtk_collection.h"
 
 namespace hexadapt::cli {
@@ -46,16 +48,23 @@ RankInput read_on_ranks(const dist::Communicator& comm, const CLI::App& app,
 io::RankPieces read_pieces_on_ranks(const dist::Communicator& comm, const CLI::App& app,
                                     const std::string& path, const io::ReadOptions& options);
 
+/// The weight of each cell of a part of an unstructured mesh (one value > 0 per cell of the
+/// part, e.g. the bytes a stage needs for it), for the cut to balance.
+using CellWeights = std::function<std::vector<double>(const io::MeshPart&)>;
+
 /// read_on_ranks' slab of a structured grid, or every rank's part of the unstructured mesh in
 /// `path` (.pvtu .vtu .exo .e .g) with `ghost_layers` layers of ghost cells: a .pvtu's pieces
 /// are read by the ranks in turn (a single file by rank 0) and merged as one process merges
 /// them (io::merge_rank_pieces: the ids of one process's mesh), then the cells are cut into
 /// one part per rank by PT-Scotch on their dual graph, each part's ghosts the cells within
-/// `ghost_layers` rings of node neighbours (io::with_ghost_layers). Errors are common to
-/// every rank.
+/// `ghost_layers` rings of node neighbours (io::with_ghost_layers). With `cell_weights`, the
+/// parts balance the cells' weights (each over the lightest cell's, rounded, 1 to 64) instead
+/// of their counts; `layer_weights` are a grid's (read_on_ranks). Errors are common to every
+/// rank.
 RankInput read_mesh_on_ranks(const dist::Communicator& comm, const CLI::App& app,
                              const std::string& path, const io::ReadOptions& options,
-                             int ghost_layers, const std::vector<double>& layer_weights = {});
+                             int ghost_layers, const std::vector<double>& layer_weights = {},
+                             const CellWeights& cell_weights = {});
 
 /// The labels of the label map `input` reads (--labels), over the whole grid: every rank's,
 /// merged, increasing. Errors are common to every rank.

@@ -254,6 +254,22 @@ std::vector<double> layer_bytes(const CLI::App& app, const Options& o,
   return dist::layer_sums(comm, in.slab, owned);
 }
 
+// The bytes each cell of a part of an unstructured mesh needs (the grid's own and its
+// pixels'), for PT-Scotch to balance: the pixels of the cells beside the part's border are
+// counted as the part alone shows them.
+std::vector<double> cell_bytes(const Options& o, const io::MeshPart& part) {
+  const dist::Block block = dist::Block::listed(part.cell_ids, part.data.n_cells(), part.node_ids,
+                                                std::vector<char>(part.node_ids.size(), 1));
+  const AssignedGrid grid = read_grid(part.data, o, &block);
+  std::vector<double> bytes = std::visit(
+      [&](const auto& m) {
+        return reconstruct::owned_cell_bytes(m, grid.fractions, grid.material, o.lib.pixels, block);
+      },
+      grid.mesh);
+  for (double& b : bytes) b += cli::reconstruct_part_bytes_per_cell;
+  return bytes;
+}
+
 // On the ranks of an MPI job: each rank reads its slab of the grid with the ghost layers
 // greedy needs, pixelates it and writes the pixels of the cells it owns. With --cut memory
 // the grid is first read cut by layer counts to weigh its layers (the pixels follow the mixed
@@ -279,16 +295,23 @@ int run_reconstruct_on_ranks(const CLI::App& app, Options& o, cli::CommonOptions
       o.in.fractions.label_values = cli::grid_labels(comm, app, o.in, o.input, first);
     set_options(o, common, first.shape.dim);
   };
-  // An unstructured mesh is cut by PT-Scotch into parts of equal cell counts, not weighed.
+  // An unstructured mesh is cut by PT-Scotch, its cells weighed by their bytes (a label map's
+  // cells are pure: all alike).
   std::vector<double> weights;
+  cli::CellWeights cell_weights;
+  if (o.cut == "memory" && o.in.fractions.labels.empty())
+    cell_weights = [&](const io::MeshPart& part) {
+      set_options(o, common, part.data.dim);
+      return cell_bytes(o, part);
+    };
   if (o.cut == "memory" && !cli::unstructured_file(o.input)) {
     const cli::RankInput probe = cli::read_on_ranks(comm, app, o.input, o.in.read_options(), 1);
     prepare(probe);
     weights = layer_bytes(app, o, comm, probe);
   }
-  cli::RankInput in =
-      cli::read_mesh_on_ranks(comm, app, o.input, o.in.read_options(),
-                              reconstruct::greedy_ghost_layers(nsub, o.lib.greedy), weights);
+  cli::RankInput in = cli::read_mesh_on_ranks(comm, app, o.input, o.in.read_options(),
+                                              reconstruct::greedy_ghost_layers(nsub, o.lib.greedy),
+                                              weights, cell_weights);
   if (weights.empty()) prepare(in);
   AssignedGrid grid;
   cli::on_every_rank(comm, app, [&] {

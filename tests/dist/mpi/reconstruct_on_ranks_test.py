@@ -143,6 +143,26 @@ got = pixels("top_layers/p.pvtu", vtk.vtkXMLPUnstructuredGridReader)
 check(got == want, "top on 4 ranks, --cut layers: other pixels (%d, serial %d)"
       % (len(got), len(want)))
 
+# The same cells as an unstructured mesh: PT-Scotch balances the cells' bytes (--cut memory,
+# the default), so the ranks holding the mixed cells own fewer cells; --cut layers balances
+# their counts. The pixels are one process's either way.
+write_pieces(unstructured(top), "topmesh.pvtu", 3)
+code, err = run("reconstruct", "topmesh_serial", 0, "../topmesh.pvtu", "--majority", "-o", "p.vtu")
+want = pixels("topmesh_serial/p.vtu", vtk.vtkXMLUnstructuredGridReader)
+spread = {}
+for cut in ("memory", "layers"):
+    folder = "topmesh_" + cut
+    code, err = run("reconstruct", folder, 4, "../topmesh.pvtu", "--majority", "-o", "p.pvtu",
+                    "--json", "out.json", "--cut", cut)
+    got = pixels(folder + "/p.pvtu", vtk.vtkXMLPUnstructuredGridReader)
+    check(code == 0 and got == want, "the unstructured top on 4 ranks, --cut %s: exit %d (%s), "
+          "%d pixels (one process: %d)" % (cut, code, err, len(got), len(want)))
+    with open(path(folder, "out.json")) as f:
+        cells = json.load(f)["ranks"]["cells"] if code == 0 else [1]
+    spread[cut] = max(cells) / min(cells)
+check(spread["memory"] > 1.5 and spread["layers"] < 1.1,
+      "the unstructured top on 4 ranks: the most cells a rank owns over the fewest, %r" % spread)
+
 # Refused on several ranks before any work, with one message and no output.
 for args, code_wanted, words in (
         (("--model", "m.vtk"), 1, ["--model", "one process"]),

@@ -17,6 +17,8 @@ struct DistGraph {
   std::int64_t first = 0;
   std::vector<std::int64_t> offsets{0};
   std::vector<std::int64_t> neighbours;
+  /// Per vertex, its weight (>= 1) for a partitioner to balance; empty: every vertex 1.
+  std::vector<std::int64_t> weights;
 
   std::int64_t n_vertices() const { return static_cast<std::int64_t>(offsets.size()) - 1; }
 };

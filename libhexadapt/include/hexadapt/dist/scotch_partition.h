@@ -11,7 +11,8 @@
 namespace hexadapt::dist {
 
 /// The part (0 .. parts - 1) of each of this rank's vertices of `graph`: few edges between
-/// parts, the parts' vertex counts within 5 % of each other. Deterministic: the same graph on
+/// parts, the parts' vertex counts (with graph.weights, their weights) within 5 % of each
+/// other. Deterministic: the same graph on
 /// the same number of ranks gives the same parts in every run (Scotch's deterministic mode
 /// and fixed random seed). Throws OptionError when parts < 1, ResourceError when the graph
 /// has 2^31 vertices or arcs or more (the 32-bit numbers of Debian's default Scotch),

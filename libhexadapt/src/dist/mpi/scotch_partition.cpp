@@ -24,8 +24,10 @@ void check(int status, const char* what) {
 
 SCOTCH_Num to_num(std::int64_t v) {
   if (v > std::numeric_limits<SCOTCH_Num>::max())
-    throw ResourceError("the graph to partition has " + std::to_string(v) +
-                        " vertices or arcs: more than the 32-bit numbers of Debian's Scotch hold");
+    throw ResourceError(
+        "the graph to partition has " + std::to_string(v) +
+        " vertices, arcs or units of vertex weight: more than the 32-bit numbers of "
+        "Debian's Scotch hold");
   return static_cast<SCOTCH_Num>(v);
 }
 
@@ -49,27 +51,45 @@ std::vector<int> scotch_partition(const MpiCommunicator& comm, const DistGraph& 
   if (parts < 1) throw OptionError("partition into " + std::to_string(parts) + " parts");
   const auto n = static_cast<std::size_t>(graph.n_vertices());
   // Sizes first, on every rank, so that every rank refuses a graph too large together.
+  if (!graph.weights.empty() && graph.weights.size() != n)
+    throw InternalError(std::to_string(graph.weights.size()) + " weights for " + std::to_string(n) +
+                        " vertices");
+  std::int64_t weight = 0;
+  for (const std::int64_t w : graph.weights) {
+    if (w < 1) throw InternalError("a vertex weight " + std::to_string(w) + " below 1");
+    weight += w;
+  }
   const std::vector<std::int64_t> sizes = all_gather_values(
       comm, std::vector<std::int64_t>{graph.n_vertices(),
-                                      static_cast<std::int64_t>(graph.neighbours.size())});
-  std::int64_t vertices = 0, arcs = 0;
-  for (std::size_t r = 0; r + 1 < sizes.size(); r += 2) {
+                                      static_cast<std::int64_t>(graph.neighbours.size()), weight,
+                                      graph.weights.empty() ? 0 : 1});
+  std::int64_t vertices = 0, arcs = 0, weights = 0;
+  bool weighted = false;  // Scotch takes weights from every rank or from none
+  for (std::size_t r = 0; r + 3 < sizes.size(); r += 4) {
     vertices += sizes[r];
     arcs += sizes[r + 1];
+    weights += sizes[r + 2];
+    weighted = weighted || sizes[r + 3] != 0;
   }
+  if (weighted && graph.weights.empty() && n > 0)
+    throw InternalError("vertex weights on some ranks only");
   to_num(vertices);
   to_num(arcs);
+  to_num(weights);
   if (parts == 1) return std::vector<int>(n, 0);
   std::vector<SCOTCH_Num> offsets(graph.offsets.begin(), graph.offsets.end());
   std::vector<SCOTCH_Num> neighbours(graph.neighbours.begin(), graph.neighbours.end());
   if (neighbours.empty()) neighbours.push_back(0);  // Scotch wants an array even when empty
+  std::vector<SCOTCH_Num> vertex_weights(graph.weights.begin(), graph.weights.end());
+  if (vertex_weights.empty()) vertex_weights.push_back(1);  // a rank without vertices
   Scotch s;
   check(SCOTCH_dgraphInit(&s.built, MPI_COMM_WORLD), "graph init");
   s.have_built = true;
   const auto local = static_cast<SCOTCH_Num>(n);
   const auto local_arcs = static_cast<SCOTCH_Num>(graph.neighbours.size());
-  check(SCOTCH_dgraphBuild(&s.built, 0, local, local, offsets.data(), offsets.data() + 1, nullptr,
-                           nullptr, local_arcs, local_arcs, neighbours.data(), nullptr, nullptr),
+  check(SCOTCH_dgraphBuild(&s.built, 0, local, local, offsets.data(), offsets.data() + 1,
+                           weighted ? vertex_weights.data() : nullptr, nullptr, local_arcs,
+                           local_arcs, neighbours.data(), nullptr, nullptr),
         "graph build");
   check(SCOTCH_contextInit(&s.context), "context init");
   s.have_context = true;
