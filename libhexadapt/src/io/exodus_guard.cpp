@@ -53,6 +53,14 @@ void check_variable_size(const ExodusFile& f, const std::string& name, std::size
                          std::to_string(values));
 }
 
+void read_int_variable(const ExodusFile& f, const std::string& name, std::vector<int>& values) {
+  check_variable_size(f, name, values.size());
+  int varid = -1;
+  if (nc_inq_varid(f.id(), name.c_str(), &varid) != NC_NOERR ||
+      nc_get_var_int(f.id(), varid, values.data()) != NC_NOERR)
+    throw InputError(f.path(), "variable " + name, "unreadable");
+}
+
 void check_string_length(const ExodusFile& f, const std::string& name, std::size_t max_length) {
   std::vector<std::size_t> shape;
   if (!variable_shape(f, name, shape)) return;

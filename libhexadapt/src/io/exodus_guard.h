@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace hexadapt::io::detail {
 
@@ -16,6 +17,12 @@ class ExodusFile;
 /// holds exactly `values` values.
 void check_variable_size(const ExodusFile& f, const std::string& name, std::size_t values,
                          bool required = true);
+
+/// Reads integer variable `name` into `values`, which must be its size (check_variable_size)
+/// straight from netCDF: by its name, not through the Exodus library's lookup of a block's
+/// id, whose cache of ids outlives a file (a stale cache sent a block's read to another,
+/// larger variable, past the buffer). Throws InputError.
+void read_int_variable(const ExodusFile& f, const std::string& name, std::vector<int>& values);
 
 /// Throws InputError unless every dimension of variable `name` after the first is at most
 /// `max_length` (name tables: the Exodus library copies each row into a fixed buffer).

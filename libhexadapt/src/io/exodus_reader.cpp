@@ -163,8 +163,7 @@ void read_cells(const ExodusFile& f, const Header& h, const std::vector<Block>& 
     if (b.count == 0) continue;
     const std::string where = "element block " + std::to_string(b.id);
     std::vector<int> conn(static_cast<std::size_t>(b.count) * npc);
-    detail::check_variable_size(f, "connect" + std::to_string(position + 1), conn.size());
-    f.check(ex_get_conn(f.id(), EX_ELEM_BLOCK, b.id, conn.data(), nullptr, nullptr), where);
+    detail::read_int_variable(f, "connect" + std::to_string(position + 1), conn);
     for (std::size_t e = 0; e < static_cast<std::size_t>(b.count); ++e)
       for (std::size_t k = 0; k < npc; ++k) {
         const std::size_t from =
