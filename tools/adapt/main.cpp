@@ -15,6 +15,7 @@
 #include "hexadapt/adapt/adapt.h"
 #include "hexadapt/adapt/adapt_io.h"
 #include "hexadapt/core/error.h"
+#include "hexadapt/dist/routing.h"
 #include "hexadapt/io/assigned_grid_file.h"
 #include "hexadapt/io/fractions_reader.h"
 #include "hexadapt/io/mesh_file.h"
@@ -25,6 +26,7 @@
 #include "own_part.h"
 #include "rank_files.h"
 #include "ranks.h"
+#include "shared_nodes.h"
 
 namespace {
 
@@ -351,36 +353,108 @@ constexpr int cut_rings = 4;
 // for the nodes of the own layers, the cuts' too, and the cells whose layers cross a cut.
 constexpr int target_ghost_layers = 3;
 
-// A rank's own layers of the grid, with the targets of their nodes.
-struct OwnSlab {
-  io::MeshData data;  ///< the own layers' data
-  AssignedGrid grid;
-  AssignedGrid read;           ///< the layers read: the own ones and the ghost layers around
-  index_t first_cell = 0;      ///< local id of the first own cell among those read
-  index_t plane = 0;           ///< nodes per cut
-  std::array<int, 2> owned{};  ///< the own layers among those read, [first, end)
-  int held = 0;                ///< layers read
-  bool below = false, above = false;
-  /// Of the nodes read; those of the own layers as one process computes them on the whole grid.
+// A rank's part of the input: the cells it read and adapts (its own and the ghost layers
+// around them), which of them are its own, and the targets of their nodes.
+struct HeldPart {
+  AssignedGrid read;               ///< the cells read
+  std::vector<std::string> names;  ///< the materials'
+  io::MeshData input;              ///< the input's metadata only (its record of how it was read)
+  index_t first_cell = 0, own_cells = 0;  ///< the own cells among those read: [first, first + own)
+  /// The input nodes a part lists first, in order (a slab's own node layers; none of a mesh).
+  std::array<index_t, 2> first_nodes{};
+  /// What the volume offset's sums count here: the own cells, and the nodes this rank decides
+  /// for (each node of the whole input counted by one rank).
+  IdVector<CellId, char> counted_cells;
+  IdVector<NodeId, char> counted_nodes;
+  /// The cuts' nodes: those of the own cells that other ranks' own cells use too, frozen so
+  /// that the parts fit together there.
+  IdVector<NodeId, char> frozen;
+  /// A mesh's: the rank owning each cell read. A slab's: none (its cuts are its node layers).
+  std::vector<int> cell_owner;
+  // A slab's:
+  index_t plane = 0;                  ///< nodes per cut
+  std::array<int, 2> owned{};         ///< the own layers among those read, [first, end)
+  bool below = false, above = false;  ///< a cut below, above
+  /// Of the nodes read; those of the own cells as one process computes them on the whole input.
   Targets targets;
 };
 
-// The slab's own layers from the layers read.
-OwnSlab own_slab(cli::RankInput& in, const Args& args) {
+// The part of a structured grid's slab: its own layers and the ghost layers around them.
+HeldPart slab_part(cli::RankInput& in, const Args& args) {
   const auto axis = static_cast<std::size_t>(in.shape.dim - 1);
   const int first = in.slab.first_layer;
-  const io::AssignedGridOptions how = args.in.grid(io::MaterialSource::array);
-  OwnSlab s;
+  HeldPart s;
   s.owned = {in.slab.owned_layers[0] - first, in.slab.owned_layers[1] - first};
-  s.held = in.slab.held[axis];
   s.below = in.slab.owned_layers[0] > 0;
   s.above = in.slab.owned_layers[1] < in.shape.cells[axis];
-  s.read = io::to_assigned_grid(in.data, how, args.input);
-  s.data = std::move(in.data);
-  io::keep_layers(s.data, s.owned, args.input);
-  s.grid = io::to_assigned_grid(s.data, how, args.input);
+  s.read = io::to_assigned_grid(in.data, args.in.grid(io::MaterialSource::array), args.input);
+  s.names = s.read.names();
+  s.input.metadata = std::move(in.data.metadata);
+  const index_t n_cells = in.data.n_cells();
+  const auto n_nodes = static_cast<index_t>(in.data.points.size());
+  in.data = io::MeshData();
+  const int held = in.slab.held[axis];
+  const index_t cells = n_cells / held;
+  s.plane = n_nodes / (held + 1);
   s.first_cell = in.slab.block.owned_cell_first;
-  s.plane = static_cast<index_t>(s.data.points.size()) / (s.owned[1] - s.owned[0] + 1);
+  s.own_cells = in.slab.block.owned_cell_end - s.first_cell;
+  s.first_nodes = {s.owned[0] * s.plane, (s.owned[1] + 1) * s.plane};
+  s.counted_cells.assign(static_cast<std::size_t>(n_cells), 0);
+  for (index_t c = s.owned[0] * cells; c < s.owned[1] * cells; ++c) s.counted_cells[CellId(c)] = 1;
+  // A cut's nodes are counted by the rank above it.
+  s.counted_nodes.assign(static_cast<std::size_t>(n_nodes), 0);
+  const int last = s.above ? s.owned[1] - 1 : s.owned[1];
+  for (index_t v = s.owned[0] * s.plane; v < (last + 1) * s.plane; ++v)
+    s.counted_nodes[NodeId(v)] = 1;
+  s.frozen.assign(static_cast<std::size_t>(n_nodes), 0);
+  for (index_t k = 0; k < s.plane; ++k) {
+    if (s.below) s.frozen[NodeId(s.owned[0] * s.plane + k)] = 1;
+    if (s.above) s.frozen[NodeId(s.owned[1] * s.plane + k)] = 1;
+  }
+  return s;
+}
+
+// The part of an unstructured mesh cut by PT-Scotch: its own cells (the first ones) and the
+// ghost layers around them. Every rank calls it.
+HeldPart mesh_part(const dist::Communicator& comm, cli::RankInput& in, const Args& args) {
+  const dist::Block& block = in.slab.block;
+  HeldPart s;
+  s.read = io::to_assigned_grid(in.data, args.in.grid(io::MaterialSource::array), args.input);
+  s.names = s.read.names();
+  s.input.metadata = std::move(in.data.metadata);
+  in.data = io::MeshData();
+  s.own_cells = block.owned_cell_end;
+  std::visit(
+      [&](const auto& mesh) {
+        s.counted_cells.assign(static_cast<std::size_t>(mesh.n_cells()), 0);
+        s.counted_nodes.assign(static_cast<std::size_t>(mesh.n_nodes()), 0);
+        s.frozen.assign(static_cast<std::size_t>(mesh.n_nodes()), 0);
+        IdVector<NodeId, char> in_own(static_cast<std::size_t>(mesh.n_nodes()), 0);
+        for (CellId c : id_range<CellId>(mesh.n_cells())) {
+          const bool own = block.owns(c);
+          s.counted_cells[c] = own;
+          for (NodeId v : mesh.cell_nodes(c))
+            if (own)
+              in_own[v] = 1;
+            else
+              s.frozen[v] = 1;  // a ghost's node; the cuts' are the own cells' among them
+        }
+        for (NodeId v : id_range<NodeId>(mesh.n_nodes())) {
+          s.frozen[v] = s.frozen[v] && in_own[v];
+          s.counted_nodes[v] = block.owns(v);
+        }
+      },
+      s.read.mesh);
+  const auto first_ghost = static_cast<std::ptrdiff_t>(block.owned_cell_end);
+  const std::vector<std::int64_t> own(block.cell_ids.begin(), block.cell_ids.begin() + first_ghost),
+      ghosts(block.cell_ids.begin() + first_ghost, block.cell_ids.end());
+  const std::vector<std::vector<int>> owners = dist::other_holders(comm, ghosts, own);
+  s.cell_owner.assign(own.size(), comm.rank());
+  for (const std::vector<int>& o : owners) {
+    if (o.size() != 1)
+      throw InternalError("a ghost cell owned by " + std::to_string(o.size()) + " ranks");
+    s.cell_owner.push_back(o.front());
+  }
   return s;
 }
 
@@ -401,24 +475,17 @@ UnitFrame whole_frame(const dist::Communicator& comm, const M& mesh) {
   return unit_frame(corners);
 }
 
-// The targets of the nodes read, those of the slab's own nodes as one process computes them on
-// the whole grid: on the layers read, in the whole grid's frame, the volume offset's sums over
-// every rank's own cells and nodes (a cut's nodes counted by the rank above it). Every rank
-// calls it.
-void slab_targets(const dist::Communicator& comm, OwnSlab& s, const AdaptOptions& options) {
+// The targets of the nodes read, those of the own cells' nodes as one process computes them on
+// the whole input: on the cells read, in the whole input's frame, the volume offset's sums
+// over what every rank counts. Every rank calls it.
+void part_targets(const dist::Communicator& comm, HeldPart& s, const AdaptOptions& options) {
   std::visit(
       [&](const auto& grid) {
         const UnitFrame frame = whole_frame(comm, grid);
         const auto m = to_local(grid, frame);
-        const index_t plane = m.n_nodes() / (s.held + 1), cells = m.n_cells() / s.held;
         VolumeParts parts;
-        parts.counted_cells.assign(static_cast<std::size_t>(m.n_cells()), 0);
-        parts.counted_nodes.assign(static_cast<std::size_t>(m.n_nodes()), 0);
-        for (index_t c = s.owned[0] * cells; c < s.owned[1] * cells; ++c)
-          parts.counted_cells[CellId(c)] = 1;
-        const int last = s.above ? s.owned[1] - 1 : s.owned[1];
-        for (index_t v = s.owned[0] * plane; v < (last + 1) * plane; ++v)
-          parts.counted_nodes[NodeId(v)] = 1;
+        parts.counted_cells = s.counted_cells;
+        parts.counted_nodes = s.counted_nodes;
         parts.add_up = [&](std::vector<double>& values) {
           const std::vector<double> all = dist::all_gather_values(comm, values);
           std::fill(values.begin(), values.end(), 0.0);
@@ -434,19 +501,8 @@ void slab_targets(const dist::Communicator& comm, OwnSlab& s, const AdaptOptions
       s.read.mesh);
 }
 
-// The cuts' nodes among those read, frozen so that the slabs' meshes fit together there.
-IdVector<NodeId, char> cut_nodes(const OwnSlab& s) {
-  IdVector<NodeId, char> frozen(static_cast<std::size_t>(s.plane) * (s.held + 1), 0);
-  for (index_t k = 0; k < s.plane; ++k) {
-    if (s.below) frozen[NodeId(s.owned[0] * s.plane + k)] = 1;
-    if (s.above) frozen[NodeId(s.owned[1] * s.plane + k)] = 1;
-  }
-  return frozen;
-}
-
 // What a rank's part adds to the run's, one value per figure (counts are exact in a double):
-// its cells, and the nodes it owns (all but its top cut's nodes and their copies, which the
-// rank above owns).
+// its cells, and the nodes it counts (a node several ranks' parts hold is the highest one's).
 enum Figure {
   cells_in,
   cells,
@@ -472,11 +528,11 @@ enum Figure {
 };
 
 template <class M>
-std::vector<double> rank_figures(const AdaptResult<M>& r, const IdVector<NodeId, cli::CutSide>& cut,
+std::vector<double> rank_figures(const AdaptResult<M>& r, const IdVector<NodeId, char>& counted,
                                  index_t input_cells, double time) {
   std::vector<double> f(n_figures, 0.0);
   for (NodeId v : id_range<NodeId>(r.mesh.n_nodes())) {
-    if (cut[v] == cli::CutSide::above) continue;
+    if (!counted[v]) continue;
     f[nodes] += 1;
     if (!r.has_target[v]) continue;
     f[interface_nodes] += 1;
@@ -607,44 +663,72 @@ Json rank_failures(const dist::Communicator& comm, const std::vector<CellFailure
   return failures_json(worst_on_ranks(comm, mine), threshold);
 }
 
-// A rank's part of the mesh (own_part.h) and the cut each of its nodes lies on: its frozen
-// nodes, by the node layer of the input node they are (a copy of).
+// A rank's part of the mesh (own_part.h) and the ranks whose parts hold its frozen nodes (a
+// cut's nodes and their copies) too.
 template <class M>
 struct RankMesh {
   cli::OwnPart<M> part;
+  cli::SharedNodes shared;
+  std::vector<int> across;         ///< per face of part.cut_faces, the rank whose part is across it
+  IdVector<NodeId, char> counted;  ///< the nodes this rank counts (SharedNodes::counts)
+  // A slab's: the cut each frozen node lies on, by the node layer of the input node it is (a
+  // copy of), and the faces on the cut below and above.
   IdVector<NodeId, cli::CutSide> cut;
-  /// Per node on a cut, its name on both ranks beside it: its input node and the input cells
-  /// of the cells around it, by their ids in the whole grid.
-  std::vector<std::vector<std::int64_t>> key;
-  std::array<std::vector<typename M::FaceNodes>, 2> cut_faces;  ///< on the cut below, above
-  cli::SlabMesh<M> slab(const OwnSlab& s) {
+  std::array<std::vector<typename M::FaceNodes>, 2> cut_faces;
+  cli::SlabMesh<M> slab(const HeldPart& s) {
     return {part.result, cut, cut_faces, s.below, s.above};
   }
 };
 using AnyRankMesh = std::variant<RankMesh<QuadMesh>, RankMesh<HexMesh>>;
 
+// The part of `r` that comes from the rank's own cells, and who else holds its frozen nodes:
+// the owners of the input cells around them (a slab's: the rank beside its cut).
 template <class M>
-RankMesh<M> rank_mesh(AdaptResult<M> r, const OwnSlab& s, const dist::Block& block) {
-  const index_t cells = s.grid.fractions.n_cells();
-  RankMesh<M> m{cli::own_part(std::move(r), {s.first_cell, s.first_cell + cells},
-                              {s.owned[0] * s.plane, (s.owned[1] + 1) * s.plane}),
-                {},
-                {},
-                {}};
+RankMesh<M> rank_mesh(const dist::Communicator& comm, AdaptResult<M> r, const HeldPart& s,
+                      const dist::Block& block) {
+  RankMesh<M> m;
+  m.part = cli::own_part(std::move(r), {s.first_cell, s.first_cell + s.own_cells}, s.first_nodes);
   const AdaptResult<M>& own = m.part.result;
-  m.cut.assign(static_cast<std::size_t>(own.mesh.n_nodes()), cli::CutSide::none);
-  m.key.resize(static_cast<std::size_t>(own.mesh.n_nodes()));
+  const auto n = static_cast<std::size_t>(own.mesh.n_nodes());
+  const int me = comm.rank();
+  m.cut.assign(n, cli::CutSide::none);
+  m.shared.ranks.resize(n);
+  m.shared.key.resize(n);
+  const auto owner = [&](CellId c) {  // a slab's cells around its cuts: its own or beside
+    if (!s.cell_owner.empty()) return s.cell_owner[c.idx()];
+    if (c.value() < s.first_cell) return me - 1;
+    return c.value() < s.first_cell + s.own_cells ? me : me + 1;
+  };
   for (NodeId v : id_range<NodeId>(own.mesh.n_nodes())) {
     if (v.idx() >= own.sliding.size() || !own.sliding[v].frozen()) continue;
-    m.cut[v] = own.node_origin[v].value() / s.plane == s.owned[0] ? cli::CutSide::below
-                                                                  : cli::CutSide::above;
-    std::vector<std::int64_t>& key = m.key[v.idx()];
-    key.push_back(block.global(own.node_origin[v]));
-    for (CellId c : m.part.around[v.idx()]) key.push_back(block.global(c));
+    std::vector<std::int64_t>& key = m.shared.key[v.idx()];
+    std::vector<int>& ranks = m.shared.ranks[v.idx()];
+    for (CellId c : m.part.around[v.idx()]) {
+      key.push_back(block.global(c));
+      if (owner(c) != me) ranks.push_back(owner(c));
+    }
+    std::sort(key.begin(), key.end());
+    key.insert(key.begin(), block.global(own.node_origin[v]));
+    std::sort(ranks.begin(), ranks.end());
+    ranks.erase(std::unique(ranks.begin(), ranks.end()), ranks.end());
+    if (s.cell_owner.empty())
+      m.cut[v] = own.node_origin[v].value() / s.plane == s.owned[0] ? cli::CutSide::below
+                                                                    : cli::CutSide::above;
   }
+  for (int q : s.cell_owner)
+    if (q != me) m.shared.peers.push_back(q);
+  if (s.below) m.shared.peers.push_back(me - 1);
+  if (s.above) m.shared.peers.push_back(me + 1);
+  std::sort(m.shared.peers.begin(), m.shared.peers.end());
+  m.shared.peers.erase(std::unique(m.shared.peers.begin(), m.shared.peers.end()),
+                       m.shared.peers.end());
+  for (CellId c : m.part.cut_across) m.across.push_back(owner(c));
+  m.counted.assign(n, 0);
+  for (NodeId v : id_range<NodeId>(own.mesh.n_nodes())) m.counted[v] = m.shared.counts(v, me);
   // Every node of a face on a cut is the cut's node or a copy of one.
-  for (const auto& f : m.part.cut_faces)
-    m.cut_faces[m.cut[f[0]] == cli::CutSide::below ? 0 : 1].push_back(f);
+  if (s.cell_owner.empty())
+    for (const auto& f : m.part.cut_faces)
+      m.cut_faces[m.cut[f[0]] == cli::CutSide::below ? 0 : 1].push_back(f);
   return m;
 }
 
@@ -666,7 +750,7 @@ void place(AdaptResult<M>& r, const std::vector<std::pair<NodeId, Vec3>>& nodes)
 // above's when none of its cells does. False on every rank when neither can, at some cut.
 // Every rank calls it.
 template <class M>
-bool share_cut_nodes(const dist::Communicator& comm, RankMesh<M>& m, const OwnSlab& s,
+bool share_cut_nodes(const dist::Communicator& comm, RankMesh<M>& m, const HeldPart& s,
                      const AdaptOptions& o) {
   AdaptResult<M>& r = m.part.result;
   std::vector<int> peers;
@@ -682,7 +766,7 @@ bool share_cut_nodes(const dist::Communicator& comm, RankMesh<M>& m, const OwnSl
     dist::Buffer& b = mine.emplace_back();
     for (NodeId v : id_range<NodeId>(r.mesh.n_nodes()))
       if (m.cut[v] == side) {
-        b.put_vector(m.key[v.idx()]);
+        b.put_vector(m.shared.key[v.idx()]);
         b.put_point(r.mesh.point(v));
       }
   }
@@ -702,7 +786,7 @@ bool share_cut_nodes(const dist::Communicator& comm, RankMesh<M>& m, const OwnSl
     std::vector<std::pair<NodeId, Vec3>> own;
     for (NodeId v : id_range<NodeId>(r.mesh.n_nodes())) {
       if (m.cut[v] != sides[k]) continue;
-      const auto at = points.find(m.key[v.idx()]);
+      const auto at = points.find(m.shared.key[v.idx()]);
       if (at == points.end()) {
         m.cut[v] = cli::CutSide::none;
         continue;
@@ -734,9 +818,9 @@ bool share_cut_nodes(const dist::Communicator& comm, RankMesh<M>& m, const OwnSl
 // them): then `bad` holds every rank's own ones by their ids in the whole grid, as one process
 // names them, and `worst` the worst of them. Every rank calls it.
 bool stopped_on_input(const dist::Communicator& comm, const AnyAdaptResult& result,
-                      const OwnSlab& s, const dist::Block& block, std::vector<std::int64_t>& bad,
+                      const HeldPart& s, const dist::Block& block, std::vector<std::int64_t>& bad,
                       std::vector<CellFailure>& worst) {
-  const index_t first = s.first_cell, end = first + s.grid.fractions.n_cells();
+  const index_t first = s.first_cell, end = first + s.own_cells;
   const auto own = [&](CellId c) { return c.value() >= first && c.value() < end; };
   bool stopped = false;
   std::vector<std::int64_t> mine;
@@ -759,60 +843,16 @@ bool stopped_on_input(const dist::Communicator& comm, const AnyAdaptResult& resu
   return std::find(stops.begin(), stops.end(), 1) != stops.end();
 }
 
-// The nodes of a rank's piece that are the next piece's (its top cut's nodes and their
-// copies), each with its id in that piece once it dropped its own: matched by their points,
-// which both ranks share. Every rank calls it.
-template <class M>
-std::vector<std::pair<index_t, index_t>> next_piece_nodes(const dist::Communicator& comm,
-                                                          const cli::SlabMesh<M>& slab) {
-  const M& mesh = slab.result.mesh;
-  std::vector<int> peers;
-  std::vector<dist::Buffer> mine;
-  if (slab.below) {  // the rank below takes this piece's bottom cut
-    peers.push_back(comm.rank() - 1);
-    mine.emplace_back();
-    std::vector<double> points;
-    index_t dropped = 0;  // the nodes before v this piece drops (its own top cut's)
-    for (NodeId v : id_range<NodeId>(mesh.n_nodes())) {
-      dropped += slab.cut[v] == cli::CutSide::above;
-      if (slab.cut[v] != cli::CutSide::below) continue;
-      const Vec3 p = mesh.point(v);
-      points.insert(points.end(), {p.x(), p.y(), p.z(), static_cast<double>(v.value() - dropped)});
-    }
-    mine.back().put_vector(points);
-  }
-  if (slab.above) {
-    peers.push_back(comm.rank() + 1);
-    mine.emplace_back();
-    mine.back().put_vector(std::vector<double>{});
-  }
-  std::vector<dist::Buffer> theirs = dist::exchange(comm, peers, mine);
-  std::vector<std::pair<index_t, index_t>> shared;
-  if (!slab.above) return shared;
-  std::map<std::array<double, 3>, index_t> next;
-  const std::vector<double> points = theirs.back().get_vector<double>();
-  for (std::size_t k = 0; k + 3 < points.size(); k += 4)
-    next.emplace(std::array<double, 3>{points[k], points[k + 1], points[k + 2]},
-                 static_cast<index_t>(points[k + 3]));
-  for (NodeId v : id_range<NodeId>(mesh.n_nodes())) {
-    if (slab.cut[v] != cli::CutSide::above) continue;
-    const Vec3 p = mesh.point(v);
-    const auto at = next.find({p.x(), p.y(), p.z()});
-    if (at == next.end()) throw InternalError("a node of a cut is not the next piece's");
-    shared.emplace_back(v.value(), at->second);
-  }
-  return shared;
-}
-
 // On the ranks of an MPI job, after ParMmg's iterative interface displacement: each rank reads
-// its slab of the grid and the ghost layers beyond its cuts, and adapts them with the node
-// layers it shares with the ranks beside it (the cuts) frozen, the cells around them
-// pillowed as one process pillows them (BoundaryOptions::pillow_frozen); its part of the
-// mesh is the cells that come from its own layers (own_part.h). The ranks beside a cut lay the
-// same layers across it; where they do not (a mending run leaving cells out near it on one
-// side), every rank adapts again with the cells around the cuts left unpillowed. Then the
-// nodes around every cut move on, the two ranks beside it moving the same band
-// (cut_bands.h); each rank writes its part as one piece.
+// its part of the input (a structured grid's slab, or the cells PT-Scotch gives it of an
+// unstructured mesh) and the ghost layers around it, and adapts them with the nodes it shares
+// with other ranks' own cells (the cuts) frozen, the cells around them pillowed as one
+// process pillows them (BoundaryOptions::pillow_frozen); its part of the mesh is the cells
+// that come from its own cells (own_part.h). The ranks beside a cut lay the same layers across
+// it; where they do not (a mending run leaving cells out near it on one side), every rank
+// adapts again with the cells around the cuts left unpillowed. Then, on a slab, the nodes
+// around every cut move on, the two ranks beside it moving the same band (cut_bands.h); a
+// mesh's cuts stay where the first pass left them. Each rank writes its part as one piece.
 int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& common,
                        const dist::Communicator& comm) {
   AdaptOptions options = args.options;
@@ -832,20 +872,21 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
   Timer clock;
   PhaseTimes times;
   cli::RankInput in =
-      cli::read_on_ranks(comm, app, args.input, args.in.read_options(), target_ghost_layers);
+      cli::read_mesh_on_ranks(comm, app, args.input, args.in.read_options(), target_ghost_layers);
   if (!args.in.fractions.labels.empty())
     args.in.fractions.label_values = cli::grid_labels(comm, app, args.in, args.input, in);
-  OwnSlab part;
+  HeldPart part;
   cli::on_every_rank(comm, app, [&] {
-    // A rank adapts the layers it read: its own and the ghost layers beyond its cuts.
+    // A rank adapts the cells it read: its own and the ghost layers around them.
     const index_t cells = in.data.n_cells();
     cli::check_memory(
         "adapting " + std::to_string(cells) + " cells on rank " + std::to_string(comm.rank()),
         static_cast<double>(cells) * cli::adapt_bytes_per_cell, common.memory_limit());
-    part = own_slab(in, args);
+    if (in.structured) part = slab_part(in, args);
   });
-  cli::on_every_rank(comm, app, [&] { slab_targets(comm, part, options); });
-  options.boundary.frozen = cut_nodes(part);
+  if (!in.structured) part = mesh_part(comm, in, args);
+  cli::on_every_rank(comm, app, [&] { part_targets(comm, part, options); });
+  options.boundary.frozen = part.frozen;
   options.progress = comm.rank() == 0 ? cli::terminal_progress(common) : nullptr;
   times.emplace_back("read", clock.seconds());
   clock.restart();
@@ -862,10 +903,14 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
     cli::on_every_rank(comm, app,
                        [&] { result = adapt(part.read, options, nullptr, &part.targets); });
     stopped = stopped_on_input(comm, result, part, in.slab.block, bad, worst_input);
-    std::visit([&](auto& r) { mesh = rank_mesh(std::move(r), part, in.slab.block); }, result);
+    std::visit([&](auto& r) { mesh = rank_mesh(comm, std::move(r), part, in.slab.block); }, result);
     if (stopped) break;
     pillowed = pillow && std::visit(
                              [&](auto& m) {
+                               if (!in.structured)
+                                 return cli::share_nodes(comm, m.part.result, m.shared, options) &&
+                                        cli::parts_meet(comm, m.part.result.mesh, m.shared,
+                                                        m.part.cut_faces, m.across);
                                return share_cut_nodes(comm, m, part, options) &&
                                       cli::cuts_fit(comm, m.slab(part));
                              },
@@ -875,7 +920,7 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
   part.read = AssignedGrid();
   const double adapt_seconds = clock.seconds();
   times.emplace_back("adapt", adapt_seconds);
-  if (!stopped) {
+  if (!stopped && in.structured) {
     clock.restart();
     std::visit([&](auto& m) { cli::resume_across_cuts(comm, m.slab(part), cut_rings, options); },
                mesh);
@@ -885,11 +930,11 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
   std::vector<double> figures;
   Json failures, steps;
   io::MeshData piece;
-  std::vector<std::pair<index_t, index_t>> shared;  // with the next piece, for --gather
+  std::vector<std::pair<index_t, index_t>> shared;  // counted by higher ranks, for --gather
   std::visit(
       [&](auto& m) {
         const auto& r = m.part.result;
-        figures = rank_figures(r, m.cut, part.grid.fractions.n_cells(), adapt_seconds);
+        figures = rank_figures(r, m.counted, part.own_cells, adapt_seconds);
         // The ranks that did not stop adapted their slabs: their cells are not the grid's.
         failures = stopped ? failures_json(worst_input, options.threshold)
                            : rank_failures(comm, r.failures, r.mesh.n_cells(), options.threshold);
@@ -898,14 +943,14 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
                                  {"interface_layer_cells", r.n_interface_layer_cells},
                                  {"cavities_published", r.n_cavities_published}});
         if (stopped) return;
-        piece = adapt_mesh_data(r, part.grid.names());
-        if (args.gather) shared = next_piece_nodes(comm, m.slab(part));
+        piece = adapt_mesh_data(r, part.names);
+        if (args.gather) shared = cli::nodes_counted_above(comm, m.shared);
       },
       mesh);
   mesh = AnyRankMesh();
   Json per_rank;
   const Json combined = combined_result(dist::all_gather_values(comm, figures), per_rank);
-  Json report = report_start(app, args, common, options, part.grid.names());
+  Json report = report_start(app, args, common, options, part.names);
   report["result"] = combined;
   report["result"]["failures"] = failures;
   report["result"]["input_cells_below_threshold"] = bad.size();
@@ -918,7 +963,7 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
   }
   clock.restart();
   for (auto& kv : cli::provenance(app)) piece.metadata.push_back(kv);
-  cli::pass_input_record(part.data, piece);
+  cli::pass_input_record(part.input, piece);
   if (args.gather) cli::drop_next_piece_nodes(piece, shared);
   cli::write_disjoint_pieces(comm, app, piece, common.output, args.gather, common.write_options(),
                              common.memory_limit());
@@ -930,6 +975,8 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
   report["ranks"]["cut_layers"] = !pillowed           ? "unpillowed"
                                   : in.shape.dim == 2 ? "none"
                                                       : "pillowed";
+  // A slab's cuts' nodes moved on in the second pass; a mesh's stay where the first left them.
+  report["ranks"]["cuts_moved"] = in.structured;
   const auto below = combined["cells_below_threshold"].get<std::int64_t>() +
                      combined["cells_below_min_edge"].get<std::int64_t>();
   report["threshold_met"] = below == 0;

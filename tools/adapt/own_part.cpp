@@ -65,6 +65,7 @@ OwnPart<M> own_part(AdaptResult<M> r, std::array<index_t, 2> cells, std::array<i
       typename M::FaceNodes face = r.mesh.face_nodes(c, lf);
       for (NodeId& v : face) v = NodeId(to[v.idx()]);
       part.cut_faces.push_back(face);
+      part.cut_across.push_back(r.cell_origin[across]);
     }
   AdaptResult<M>& out = part.result;
   out = std::move(r);

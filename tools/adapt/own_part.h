@@ -20,6 +20,7 @@ struct OwnPart {
   /// of the cells around it in the whole result, increasing, the other part's too; else none.
   std::vector<std::vector<CellId>> around;
   std::vector<typename M::FaceNodes> cut_faces;  ///< nodes of the part, each face's corners
+  std::vector<CellId> cut_across;  ///< per cut face, the input cell of the cell across it
 };
 
 /// The part of `r` whose cells come from the input cells [cells[0], cells[1]), renumbered:

@@ -1,0 +1,61 @@
+// Where the parts adapted on the ranks of an MPI job from the parts of an unstructured mesh
+// meet. Each rank adapted its own cells and the ghost layers around them with the nodes its
+// own cells share with other ranks' (the cuts) frozen, and their copies where the cells around
+// them were pillowed (BoundaryOptions::pillow_frozen). A cut's node, or a copy of one, is held
+// by the ranks owning the input cells around it, any number of them, which name it alike (its
+// input node and those cells, by their global ids). These take each such node to one point on
+// every rank holding it, check that the parts' faces meet, and name each node in the gathered
+// mesh once.
+#pragma once
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "hexadapt/adapt/adapt.h"
+#include "hexadapt/dist/communicator.h"
+
+namespace hexadapt::cli {
+
+/// The nodes of a rank's part that other ranks' parts hold too.
+struct SharedNodes {
+  /// Per node of the part: the other ranks holding it, increasing; empty for the others.
+  std::vector<std::vector<int>> ranks;
+  /// Per node other ranks hold: its name on each of them (its input node, then the input cells
+  /// of the cells around it, by their global ids, increasing).
+  std::vector<std::vector<std::int64_t>> key;
+  /// The ranks owning cells this rank holds as ghosts, increasing: the same pairs seen from
+  /// both sides, and every rank `ranks` names among them.
+  std::vector<int> peers;
+
+  /// Whether this rank counts node v (when no higher rank holds it): each node by one rank.
+  bool counts(NodeId v, int rank) const {
+    const std::vector<int>& r = ranks[v.idx()];
+    return r.empty() || r.back() < rank;
+  }
+};
+
+/// Takes every shared node of `r` to one point on every rank holding it: the lowest holder's,
+/// when no rank's cells then fail a criterion more than before; else the highest holder's when
+/// none does. Their points differ a little where the copies were smoothed among ghost cells
+/// that differ from rank to rank. False on every rank (the points left as they were) when
+/// neither choice holds, or when a rank holds a shared node the ranks it names do not: the
+/// parts do not meet. Every rank calls it.
+template <class M>
+bool share_nodes(const dist::Communicator& comm, AdaptResult<M>& r, const SharedNodes& shared,
+                 const AdaptOptions& options);
+
+/// True on every rank when every rank's faces toward another's part (`faces`, with the rank
+/// across each in `across`) are that rank's faces toward it, corner by corner to the bit, and
+/// their corners shared with it. Every rank calls it.
+template <class M>
+bool parts_meet(const dist::Communicator& comm, const M& mesh, const SharedNodes& shared,
+                const std::vector<typename M::FaceNodes>& faces, const std::vector<int>& across);
+
+/// For write_disjoint_pieces' gathering (drop_next_piece_nodes): each node of this rank's part
+/// that a higher rank counts, with its id past this rank's own points in the gathered mesh
+/// (the pieces in rank order, each without the nodes it does not count). Every rank calls it.
+std::vector<std::pair<index_t, index_t>> nodes_counted_above(const dist::Communicator& comm,
+                                                             const SharedNodes& shared);
+
+}  // namespace hexadapt::cli
