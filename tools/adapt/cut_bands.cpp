@@ -60,18 +60,34 @@ NodeConstraint get_constraint(dist::Buffer& b) {
   return c;
 }
 
-// A rank's half of a band: its cells near the cut and their nodes, with what the moves need.
-// The nodes it moves are let go (the band adds the boundary of the cut's); the nodes of the
-// slab's other cut stay frozen.
+// The ranks of `group` (increasing) that hold v besides this one.
+int others_in(const std::vector<int>& group, const std::vector<int>& holders) {
+  int n = 0;
+  for (int q : holders) n += std::binary_search(group.begin(), group.end(), q);
+  return n;
+}
+
+// Whether every rank holding v (this one and `holders`) is in `group`.
+bool within(const std::vector<int>& group, const std::vector<int>& holders) {
+  return others_in(group, holders) == static_cast<int>(holders.size());
+}
+
+// A rank's half of the band of `group`: its cells near the nodes the group's ranks alone hold,
+// and their nodes, with what the moves need. The nodes it may move are let go (the band adds
+// the boundary of the shared ones); the nodes a rank outside the group holds stay frozen.
 template <class M>
-dist::Buffer half_band(const SlabMesh<M>& slab, bool top, int rings) {
-  const AdaptResult<M>& r = slab.result;
+dist::Buffer half_band(const AdaptResult<M>& r, const SharedNodes& shared,
+                       const std::vector<int>& group, int me, int rings) {
   const M& mesh = r.mesh;
-  const CutSide side = top ? CutSide::above : CutSide::below;
-  std::vector<NodeId> cut;
+  const auto holders = [&](NodeId v) {
+    std::vector<int> h = shared.ranks[v.idx()];
+    h.insert(std::lower_bound(h.begin(), h.end(), me), me);
+    return h;
+  };
+  std::vector<NodeId> seeds;
   for (NodeId v : id_range<NodeId>(mesh.n_nodes()))
-    if (slab.cut[v] == side) cut.push_back(v);
-  const auto [cells, ring] = band_of(mesh, cut, rings);
+    if (!shared.ranks[v.idx()].empty() && holders(v) == group) seeds.push_back(v);
+  const auto [cells, ring] = band_of(mesh, seeds, rings);
   std::vector<index_t> slot(static_cast<std::size_t>(mesh.n_nodes()), unset);
   std::vector<NodeId> nodes;
   for (NodeId v : id_range<NodeId>(mesh.n_nodes()))
@@ -82,10 +98,10 @@ dist::Buffer half_band(const SlabMesh<M>& slab, bool top, int rings) {
   dist::Buffer b;
   b.put(static_cast<std::uint64_t>(nodes.size()));
   for (NodeId v : nodes) {
-    const bool on_cut = slab.cut[v] == side;
-    const bool movable = ring[v.idx()] < rings && (on_cut || slab.cut[v] == CutSide::none);
+    const std::vector<int>& others = shared.ranks[v.idx()];
+    const bool movable = ring[v.idx()] < rings && within(group, others);
     b.put(v.value());
-    b.put(static_cast<char>(on_cut));
+    b.put(others_in(group, others));  // the other halves holding it, matched by its point
     b.put(static_cast<char>(movable));
     b.put_point(mesh.point(v));
     b.put(r.has_target[v]);
@@ -100,7 +116,7 @@ dist::Buffer half_band(const SlabMesh<M>& slab, bool top, int rings) {
   return b;
 }
 
-// The band mesh both ranks build from the two halves (the lower's first), the same on each.
+// The band mesh every rank of a group builds from the halves (in rank order), the same on each.
 template <class M>
 struct Band {
   M mesh;
@@ -109,50 +125,55 @@ struct Band {
   SizeCriterion size;
   std::vector<NodeId> movable;
   /// Per half: each of its nodes' local id on its rank and id in the band.
-  std::array<std::vector<std::pair<NodeId, NodeId>>, 2> ids;
+  std::vector<std::vector<std::pair<NodeId, NodeId>>> ids;
 };
 
-// A point as a key: both ranks place a cut's nodes and their copies at the same points.
+// A point as a key: the ranks holding a node place it at the same point.
 std::array<double, 3> key(const Vec3& p) {
   return {p.x(), p.y(), p.z()};
 }
 
 template <class M>
-Band<M> joined(std::array<dist::Buffer, 2> halves, double min_edge, const BoundaryOptions& bo) {
+Band<M> joined(std::vector<dist::Buffer> halves, double min_edge, const BoundaryOptions& bo) {
   Band<M> band;
   std::vector<Vec3> points;
   std::vector<typename M::CellNodes> cells;
-  // The band id of each node of the cut, from the lower half, by its point.
-  std::map<std::array<double, 3>, index_t> cut_band;
-  std::vector<char> is_cut, movable;
-  for (int h = 0; h < 2; ++h) {
-    dist::Buffer& b = halves[static_cast<std::size_t>(h)];
+  // The band id of each node several halves hold, from the first half holding it, by its point.
+  std::map<std::array<double, 3>, index_t> shared_band;
+  // Per band node: the halves that hold it besides the first, those that sent it since, and
+  // whether every one of them lets it move.
+  std::vector<int> others, seen;
+  std::vector<char> movable;
+  for (dist::Buffer& b : halves) {
+    std::vector<std::pair<NodeId, NodeId>>& ids = band.ids.emplace_back();
     const auto n = b.get<std::uint64_t>();
     std::vector<index_t> to(n);
     for (std::uint64_t i = 0; i < n; ++i) {
       const NodeId local(b.get<index_t>());
-      const bool on_cut = b.get<char>() != 0;
+      const int in_others = b.get<int>();
       const bool move = b.get<char>() != 0;
       const Vec3 p = b.get_point();
       const char has = b.get<char>();
       const Vec3 target = b.get_point();
       const NodeConstraint c = get_constraint(b);
-      if (h == 1 && on_cut) {  // the lower half has it
-        const auto at = cut_band.find(key(p));
-        if (at == cut_band.end())
-          throw InternalError("a node of a cut on the rank above is not the rank below's");
+      const auto at = in_others > 0 ? shared_band.find(key(p)) : shared_band.end();
+      if (at != shared_band.end()) {
         to[i] = at->second;
+        const auto k = static_cast<std::size_t>(at->second);
+        seen[k] += 1;
+        movable[k] = movable[k] && move;
       } else {
         to[i] = static_cast<index_t>(points.size());
         points.push_back(p);
         band.targets.has.push_back(has);
         band.targets.position.push_back(target);
         band.sliding.push_back(c);
-        is_cut.push_back(on_cut);
+        others.push_back(in_others);
+        seen.push_back(0);
         movable.push_back(move);
-        if (on_cut) cut_band.emplace(key(p), to[i]);
+        if (in_others > 0) shared_band.emplace(key(p), to[i]);
       }
-      band.ids[static_cast<std::size_t>(h)].emplace_back(local, NodeId(to[i]));
+      ids.emplace_back(local, NodeId(to[i]));
     }
     const auto m = b.get<std::uint64_t>();
     for (std::uint64_t i = 0; i < m; ++i) {
@@ -166,12 +187,14 @@ Band<M> joined(std::array<dist::Buffer, 2> halves, double min_edge, const Bounda
   band.mesh = M(std::move(points), std::move(cells));
   const auto boundary = boundary_constraints(band.mesh, bo.without_frozen());
   for (NodeId v : id_range<NodeId>(band.mesh.n_nodes())) {
-    if (is_cut[v.idx()]) {
+    const std::size_t k = v.idx();
+    if (others[k] > 0) {  // a cut's node: the band's boundary is the domain's there
       NodeConstraint c = boundary[v];
       c.add(band.sliding[v]);
       band.sliding[v] = c;
     }
-    if (movable[v.idx()])
+    // A node moves when every rank holding it sent all its cells around it.
+    if (movable[k] && seen[k] == others[k])
       band.movable.push_back(v);
     else
       band.sliding[v].freeze();
@@ -198,10 +221,10 @@ void move_in_unit_frame(Band<M>& band, const AdaptOptions& options) {
 
 // The band's new positions and figures onto the rank's own nodes of half `h`.
 template <class M>
-void take_back(const Band<M>& band, int h, AdaptResult<M>& r, double near_interface) {
+void take_back(const Band<M>& band, std::size_t h, AdaptResult<M>& r, double near_interface) {
   std::vector<char> movable(static_cast<std::size_t>(band.mesh.n_nodes()), 0);
   for (NodeId v : band.movable) movable[v.idx()] = 1;
-  for (const auto& [local, at] : band.ids[static_cast<std::size_t>(h)]) {
+  for (const auto& [local, at] : band.ids[h]) {
     if (!movable[at.idx()]) continue;
     const Vec3 p = band.mesh.point(at);
     r.mesh.set_point(local, p);
@@ -235,81 +258,80 @@ void recount_cells(AdaptResult<M>& r, const AdaptOptions& options) {
   r.failures = worst_failures(std::move(failures), 10);
 }
 
-// The part's faces on one cut, each as its corners' points sorted, in order, as numbers.
-template <class M>
-std::vector<double> faces_on(const SlabMesh<M>& slab, CutSide side) {
-  std::vector<std::vector<std::array<double, 3>>> faces;
-  for (const typename M::FaceNodes& f : slab.cut_faces[side == CutSide::below ? 0 : 1]) {
-    std::vector<std::array<double, 3>> corners;
-    for (NodeId v : f) corners.push_back(key(slab.result.mesh.point(v)));
-    std::sort(corners.begin(), corners.end());
-    faces.push_back(corners);
+// Every rank's groups (the ranks holding some node together, SharedNodes), each once, in
+// rounds in which no rank is in two groups: each group in the first round none of its ranks
+// is busy in, taken by size then ranks. The same on every rank. Every rank calls it.
+std::vector<std::vector<std::vector<int>>> group_rounds(const dist::Communicator& comm,
+                                                        const SharedNodes& shared) {
+  const int me = comm.rank();
+  std::vector<std::int64_t> mine;  // each group as its size, then its ranks
+  for (const std::vector<int>& others : shared.ranks) {
+    if (others.empty()) continue;
+    std::vector<int> g = others;
+    g.insert(std::lower_bound(g.begin(), g.end(), me), me);
+    mine.push_back(static_cast<std::int64_t>(g.size()));
+    mine.insert(mine.end(), g.begin(), g.end());
   }
-  std::sort(faces.begin(), faces.end());
-  std::vector<double> out;
-  for (const auto& f : faces)
-    for (const auto& p : f) out.insert(out.end(), p.begin(), p.end());
-  return out;
+  const std::vector<std::int64_t> all = dist::all_gather_values(comm, mine);
+  std::vector<std::vector<int>> groups;
+  for (std::size_t k = 0; k < all.size(); k += static_cast<std::size_t>(all[k]) + 1)
+    groups.emplace_back(
+        all.begin() + static_cast<std::ptrdiff_t>(k + 1),
+        all.begin() + static_cast<std::ptrdiff_t>(k + 1) + static_cast<std::ptrdiff_t>(all[k]));
+  std::sort(groups.begin(), groups.end(), [](const auto& a, const auto& b) {
+    return a.size() != b.size() ? a.size() < b.size() : a < b;
+  });
+  groups.erase(std::unique(groups.begin(), groups.end()), groups.end());
+  std::vector<std::vector<std::vector<int>>> rounds;
+  std::vector<std::vector<char>> busy;  // per round, per rank
+  for (std::vector<int>& g : groups) {
+    std::size_t k = 0;
+    const auto free_in = [&](std::size_t round) {
+      return std::none_of(g.begin(), g.end(),
+                          [&](int q) { return busy[round][static_cast<std::size_t>(q)] != 0; });
+    };
+    while (k < rounds.size() && !free_in(k)) ++k;
+    if (k == rounds.size()) {
+      rounds.emplace_back();
+      busy.emplace_back(static_cast<std::size_t>(comm.size()), 0);
+    }
+    for (int q : g) busy[k][static_cast<std::size_t>(q)] = 1;
+    rounds[k].push_back(std::move(g));
+  }
+  return rounds;
 }
 
 }  // namespace
 
 template <class M>
-bool cuts_fit(const dist::Communicator& comm, const SlabMesh<M>& slab) {
-  std::vector<int> peers;
-  std::vector<std::vector<double>> faces;
-  if (slab.below) {
-    peers.push_back(comm.rank() - 1);
-    faces.push_back(faces_on(slab, CutSide::below));
-  }
-  if (slab.above) {
-    peers.push_back(comm.rank() + 1);
-    faces.push_back(faces_on(slab, CutSide::above));
-  }
-  std::vector<dist::Buffer> mine;
-  for (const auto& f : faces) {
-    mine.emplace_back();
-    mine.back().put_vector(f);
-  }
-  std::vector<dist::Buffer> theirs = dist::exchange(comm, peers, mine);
-  char fit = 1;
-  for (std::size_t k = 0; k < peers.size(); ++k)
-    fit = fit && theirs[k].get_vector<double>() == faces[k];
-  const std::vector<char> all = dist::all_gather_values(comm, std::vector<char>{fit});
-  return std::find(all.begin(), all.end(), 0) == all.end();
-}
-
-template <class M>
-void resume_across_cuts(const dist::Communicator& comm, const SlabMesh<M>& slab, int rings,
-                        const AdaptOptions& options) {
+void resume_across_cuts(const dist::Communicator& comm, AdaptResult<M>& r,
+                        const SharedNodes& shared, int rings, const AdaptOptions& options) {
   AdaptOptions moves = options;
   moves.boundary.frozen = {};
   moves.progress = nullptr;
-  const int rank = comm.rank();
-  for (int parity = 0; parity < 2; ++parity) {
-    // Cut j lies between ranks j and j + 1; this phase moves the cuts of its parity.
-    const bool lower = slab.above && rank % 2 == parity;
-    const bool upper = slab.below && (rank - 1) % 2 == parity;
-    if (!lower && !upper) continue;
-    const int peer = lower ? rank + 1 : rank - 1;
-    std::vector<dist::Buffer> mine;
-    mine.push_back(half_band(slab, lower, rings));
-    std::vector<dist::Buffer> theirs = dist::exchange(comm, {peer}, mine);
-    std::array<dist::Buffer, 2> halves =
-        lower ? std::array<dist::Buffer, 2>{std::move(mine.front()), std::move(theirs.front())}
-              : std::array<dist::Buffer, 2>{std::move(theirs.front()), std::move(mine.front())};
-    Band<M> band = joined<M>(std::move(halves), options.min_edge, options.boundary);
-    move_in_unit_frame(band, moves);
-    take_back(band, lower ? 0 : 1, slab.result, options.near_interface);
-  }
-  recount_cells(slab.result, options);
+  const int me = comm.rank();
+  for (const auto& round : group_rounds(comm, shared))
+    for (const std::vector<int>& group : round) {
+      const auto at = std::lower_bound(group.begin(), group.end(), me);
+      if (at == group.end() || *at != me) continue;
+      std::vector<int> peers;
+      for (int q : group)
+        if (q != me) peers.push_back(q);
+      dist::Buffer half = half_band(r, shared, group, me, rings);
+      std::vector<dist::Buffer> theirs =
+          dist::exchange(comm, peers, std::vector<dist::Buffer>(peers.size(), half));
+      const auto h = static_cast<std::size_t>(at - group.begin());
+      theirs.insert(theirs.begin() + static_cast<std::ptrdiff_t>(h), std::move(half));
+      Band<M> band = joined<M>(std::move(theirs), options.min_edge, options.boundary);
+      move_in_unit_frame(band, moves);
+      take_back(band, h, r, options.near_interface);
+    }
+  recount_cells(r, options);
 }
 
-template bool cuts_fit<QuadMesh>(const dist::Communicator&, const SlabMesh<QuadMesh>&);
-template bool cuts_fit<HexMesh>(const dist::Communicator&, const SlabMesh<HexMesh>&);
-template void resume_across_cuts<QuadMesh>(const dist::Communicator&, const SlabMesh<QuadMesh>&,
-                                           int, const AdaptOptions&);
-template void resume_across_cuts<HexMesh>(const dist::Communicator&, const SlabMesh<HexMesh>&, int,
-                                          const AdaptOptions&);
+template void resume_across_cuts<QuadMesh>(const dist::Communicator&, AdaptResult<QuadMesh>&,
+                                           const SharedNodes&, int, const AdaptOptions&);
+template void resume_across_cuts<HexMesh>(const dist::Communicator&, AdaptResult<HexMesh>&,
+                                          const SharedNodes&, int, const AdaptOptions&);
 
 }  // namespace hexadapt::cli

@@ -383,10 +383,10 @@ struct HeldPart {
 HeldPart slab_part(cli::RankInput& in, const Args& args) {
   const auto axis = static_cast<std::size_t>(in.shape.dim - 1);
   const int first = in.slab.first_layer;
+  const std::array<int, 2> owned{in.slab.owned_layers[0] - first, in.slab.owned_layers[1] - first};
+  const bool below = in.slab.owned_layers[0] > 0;
+  const bool above = in.slab.owned_layers[1] < in.shape.cells[axis];
   HeldPart s;
-  s.owned = {in.slab.owned_layers[0] - first, in.slab.owned_layers[1] - first};
-  s.below = in.slab.owned_layers[0] > 0;
-  s.above = in.slab.owned_layers[1] < in.shape.cells[axis];
   s.read = io::to_assigned_grid(in.data, args.in.grid(io::MaterialSource::array), args.input);
   s.names = s.read.names();
   s.input.metadata = std::move(in.data.metadata);
@@ -394,29 +394,27 @@ HeldPart slab_part(cli::RankInput& in, const Args& args) {
   const auto n_nodes = static_cast<index_t>(in.data.points.size());
   in.data = io::MeshData();
   const int held = in.slab.held[axis];
-  const index_t cells = n_cells / held;
-  s.plane = n_nodes / (held + 1);
+  const index_t cells = n_cells / held, plane = n_nodes / (held + 1);
   s.first_cell = in.slab.block.owned_cell_first;
   s.own_cells = in.slab.block.owned_cell_end - s.first_cell;
-  s.first_nodes = {s.owned[0] * s.plane, (s.owned[1] + 1) * s.plane};
+  s.first_nodes = {owned[0] * plane, (owned[1] + 1) * plane};
   s.counted_cells.assign(static_cast<std::size_t>(n_cells), 0);
-  for (index_t c = s.owned[0] * cells; c < s.owned[1] * cells; ++c) s.counted_cells[CellId(c)] = 1;
+  for (index_t c = owned[0] * cells; c < owned[1] * cells; ++c) s.counted_cells[CellId(c)] = 1;
   // A cut's nodes are counted by the rank above it.
   s.counted_nodes.assign(static_cast<std::size_t>(n_nodes), 0);
-  const int last = s.above ? s.owned[1] - 1 : s.owned[1];
-  for (index_t v = s.owned[0] * s.plane; v < (last + 1) * s.plane; ++v)
-    s.counted_nodes[NodeId(v)] = 1;
+  const int last = above ? owned[1] - 1 : owned[1];
+  for (index_t v = owned[0] * plane; v < (last + 1) * plane; ++v) s.counted_nodes[NodeId(v)] = 1;
   s.frozen.assign(static_cast<std::size_t>(n_nodes), 0);
-  for (index_t k = 0; k < s.plane; ++k) {
-    if (s.below) s.frozen[NodeId(s.owned[0] * s.plane + k)] = 1;
-    if (s.above) s.frozen[NodeId(s.owned[1] * s.plane + k)] = 1;
+  for (index_t k = 0; k < plane; ++k) {
+    if (below) s.frozen[NodeId(owned[0] * plane + k)] = 1;
+    if (above) s.frozen[NodeId(owned[1] * plane + k)] = 1;
   }
   return s;
 }
 
 // The part of an unstructured mesh cut by PT-Scotch: its own cells (the first ones) and the
-// ghost layers around them. Every rank calls it.
-HeldPart mesh_part(const dist::Communicator& comm, cli::RankInput& in, const Args& args) {
+// ghost layers around them.
+HeldPart mesh_part(cli::RankInput& in, const Args& args) {
   const dist::Block& block = in.slab.block;
   HeldPart s;
   s.read = io::to_assigned_grid(in.data, args.in.grid(io::MaterialSource::array), args.input);
@@ -445,17 +443,38 @@ HeldPart mesh_part(const dist::Communicator& comm, cli::RankInput& in, const Arg
         }
       },
       s.read.mesh);
+  return s;
+}
+
+// The rank owning each cell `in` holds: of a slab, the last rank whose own layers start at
+// the cell's layer or before; of a mesh, itself or, for a ghost, the rank listing it among its
+// own cells. Every rank calls it.
+std::vector<int> cell_owners(const dist::Communicator& comm, const cli::RankInput& in) {
+  const dist::Block& block = in.slab.block;
+  std::vector<int> owner;
+  if (in.structured) {
+    const std::vector<std::int64_t> starts =
+        dist::all_gather_values(comm, std::vector<std::int64_t>{in.slab.owned_layers[0]});
+    const auto axis = static_cast<std::size_t>(in.shape.dim - 1);
+    const index_t per_layer = block.held_cells / in.slab.held[axis];
+    for (index_t c = 0; c < block.held_cells; ++c) {
+      const std::int64_t layer = in.slab.first_layer + c / per_layer;
+      owner.push_back(
+          static_cast<int>(std::upper_bound(starts.begin(), starts.end(), layer) - starts.begin()) -
+          1);
+    }
+    return owner;
+  }
   const auto first_ghost = static_cast<std::ptrdiff_t>(block.owned_cell_end);
   const std::vector<std::int64_t> own(block.cell_ids.begin(), block.cell_ids.begin() + first_ghost),
       ghosts(block.cell_ids.begin() + first_ghost, block.cell_ids.end());
-  const std::vector<std::vector<int>> owners = dist::other_holders(comm, ghosts, own);
-  s.cell_owner.assign(own.size(), comm.rank());
-  for (const std::vector<int>& o : owners) {
+  owner.assign(own.size(), comm.rank());
+  for (const std::vector<int>& o : dist::other_holders(comm, ghosts, own)) {
     if (o.size() != 1)
       throw InternalError("a ghost cell owned by " + std::to_string(o.size()) + " ranks");
-    s.cell_owner.push_back(o.front());
+    owner.push_back(o.front());
   }
-  return s;
+  return owner;
 }
 
 // The frame one process adapts the whole grid in (mesh/unit_frame.h): that of every rank's
@@ -671,13 +690,6 @@ struct RankMesh {
   cli::SharedNodes shared;
   std::vector<int> across;         ///< per face of part.cut_faces, the rank whose part is across it
   IdVector<NodeId, char> counted;  ///< the nodes this rank counts (SharedNodes::counts)
-  // A slab's: the cut each frozen node lies on, by the node layer of the input node it is (a
-  // copy of), and the faces on the cut below and above.
-  IdVector<NodeId, cli::CutSide> cut;
-  std::array<std::vector<typename M::FaceNodes>, 2> cut_faces;
-  cli::SlabMesh<M> slab(const HeldPart& s) {
-    return {part.result, cut, cut_faces, s.below, s.above};
-  }
 };
 using AnyRankMesh = std::variant<RankMesh<QuadMesh>, RankMesh<HexMesh>>;
 
@@ -691,14 +703,9 @@ RankMesh<M> rank_mesh(const dist::Communicator& comm, AdaptResult<M> r, const He
   const AdaptResult<M>& own = m.part.result;
   const auto n = static_cast<std::size_t>(own.mesh.n_nodes());
   const int me = comm.rank();
-  m.cut.assign(n, cli::CutSide::none);
   m.shared.ranks.resize(n);
   m.shared.key.resize(n);
-  const auto owner = [&](CellId c) {  // a slab's cells around its cuts: its own or beside
-    if (!s.cell_owner.empty()) return s.cell_owner[c.idx()];
-    if (c.value() < s.first_cell) return me - 1;
-    return c.value() < s.first_cell + s.own_cells ? me : me + 1;
-  };
+  const auto owner = [&](CellId c) { return s.cell_owner[c.idx()]; };
   for (NodeId v : id_range<NodeId>(own.mesh.n_nodes())) {
     if (v.idx() >= own.sliding.size() || !own.sliding[v].frozen()) continue;
     std::vector<std::int64_t>& key = m.shared.key[v.idx()];
@@ -711,107 +718,16 @@ RankMesh<M> rank_mesh(const dist::Communicator& comm, AdaptResult<M> r, const He
     key.insert(key.begin(), block.global(own.node_origin[v]));
     std::sort(ranks.begin(), ranks.end());
     ranks.erase(std::unique(ranks.begin(), ranks.end()), ranks.end());
-    if (s.cell_owner.empty())
-      m.cut[v] = own.node_origin[v].value() / s.plane == s.owned[0] ? cli::CutSide::below
-                                                                    : cli::CutSide::above;
   }
   for (int q : s.cell_owner)
     if (q != me) m.shared.peers.push_back(q);
-  if (s.below) m.shared.peers.push_back(me - 1);
-  if (s.above) m.shared.peers.push_back(me + 1);
   std::sort(m.shared.peers.begin(), m.shared.peers.end());
   m.shared.peers.erase(std::unique(m.shared.peers.begin(), m.shared.peers.end()),
                        m.shared.peers.end());
   for (CellId c : m.part.cut_across) m.across.push_back(owner(c));
   m.counted.assign(n, 0);
   for (NodeId v : id_range<NodeId>(own.mesh.n_nodes())) m.counted[v] = m.shared.counts(v, me);
-  // Every node of a face on a cut is the cut's node or a copy of one.
-  if (s.cell_owner.empty())
-    for (const auto& f : m.part.cut_faces)
-      m.cut_faces[m.cut[f[0]] == cli::CutSide::below ? 0 : 1].push_back(f);
   return m;
-}
-
-// Sets the points of `nodes` and, for those without a target, their targets (their points).
-template <class M>
-void place(AdaptResult<M>& r, const std::vector<std::pair<NodeId, Vec3>>& nodes) {
-  for (const auto& [v, p] : nodes) {
-    r.mesh.set_point(v, p);
-    if (!r.has_target[v]) r.target[v] = p;
-  }
-}
-
-// The nodes of the cuts the ranks beside them share: the cut's nodes, and the copies both
-// ranks' cells take (a copy that only one rank's cells take stays its own: its cut is set to
-// none). Each rank smoothed the copies among the layers it read, whose cells beyond differ:
-// where the layers of several materials meet at a cut, their points differ a little (up to
-// 1.8e-4 of a grid of 1 on the asteroid at 48^3). The rank above a cut takes the rank below's
-// points when none of its cells then fails a criterion; else the rank below takes the rank
-// above's when none of its cells does. False on every rank when neither can, at some cut.
-// Every rank calls it.
-template <class M>
-bool share_cut_nodes(const dist::Communicator& comm, RankMesh<M>& m, const HeldPart& s,
-                     const AdaptOptions& o) {
-  AdaptResult<M>& r = m.part.result;
-  std::vector<int> peers;
-  std::vector<cli::CutSide> sides;
-  for (const auto& [on, peer, side] : {std::tuple{s.below, comm.rank() - 1, cli::CutSide::below},
-                                       std::tuple{s.above, comm.rank() + 1, cli::CutSide::above}})
-    if (on) {
-      peers.push_back(peer);
-      sides.push_back(side);
-    }
-  std::vector<dist::Buffer> mine;
-  for (cli::CutSide side : sides) {
-    dist::Buffer& b = mine.emplace_back();
-    for (NodeId v : id_range<NodeId>(r.mesh.n_nodes()))
-      if (m.cut[v] == side) {
-        b.put_vector(m.shared.key[v.idx()]);
-        b.put_point(r.mesh.point(v));
-      }
-  }
-  std::vector<dist::Buffer> theirs = dist::exchange(comm, peers, mine);
-  const SizeCriterion size{o.min_edge, r.local_size};
-  const std::size_t failing = failing_cells(r.mesh, o.threshold, size).size();  // bad input's
-  // Per cut: the shared nodes, where the other rank placed them, and whether this rank can take
-  // those points.
-  std::vector<std::vector<std::pair<NodeId, Vec3>>> other(sides.size());
-  std::vector<char> can(sides.size());
-  for (std::size_t k = 0; k < sides.size(); ++k) {
-    std::map<std::vector<std::int64_t>, Vec3> points;
-    for (dist::Buffer& b = theirs[k]; !b.done();) {
-      std::vector<std::int64_t> key = b.get_vector<std::int64_t>();
-      points.emplace(std::move(key), b.get_point());
-    }
-    std::vector<std::pair<NodeId, Vec3>> own;
-    for (NodeId v : id_range<NodeId>(r.mesh.n_nodes())) {
-      if (m.cut[v] != sides[k]) continue;
-      const auto at = points.find(m.shared.key[v.idx()]);
-      if (at == points.end()) {
-        m.cut[v] = cli::CutSide::none;
-        continue;
-      }
-      other[k].emplace_back(v, at->second);
-      own.emplace_back(v, r.mesh.point(v));
-    }
-    place(r, other[k]);
-    can[k] = failing_cells(r.mesh, o.threshold, size).size() <= failing;
-    place(r, own);
-  }
-  std::vector<dist::Buffer> verdicts(sides.size());
-  for (std::size_t k = 0; k < sides.size(); ++k) verdicts[k].put(can[k]);
-  std::vector<dist::Buffer> they_can = dist::exchange(comm, peers, verdicts);
-  char fit = 1;
-  for (std::size_t k = 0; k < sides.size(); ++k) {
-    const bool i_can = can[k] != 0, other_can = they_can[k].get<char>() != 0;
-    const bool upper = sides[k] == cli::CutSide::below;
-    const bool upper_can = upper ? i_can : other_can, lower_can = upper ? other_can : i_can;
-    if (upper_can ? upper : lower_can && !upper) place(r, other[k]);
-    fit = fit && (upper_can || lower_can);
-  }
-  fit = fit && failing_cells(r.mesh, o.threshold, size).size() <= failing;
-  const std::vector<char> all = dist::all_gather_values(comm, std::vector<char>{fit});
-  return std::find(all.begin(), all.end(), 0) == all.end();
 }
 
 // Whether some rank stopped on bad input cells (the guaranteed method does not start from
@@ -850,9 +766,9 @@ bool stopped_on_input(const dist::Communicator& comm, const AnyAdaptResult& resu
 // process pillows them (BoundaryOptions::pillow_frozen); its part of the mesh is the cells
 // that come from its own cells (own_part.h). The ranks beside a cut lay the same layers across
 // it; where they do not (a mending run leaving cells out near it on one side), every rank
-// adapts again with the cells around the cuts left unpillowed. Then, on a slab, the nodes
-// around every cut move on, the two ranks beside it moving the same band (cut_bands.h); a
-// mesh's cuts stay where the first pass left them. Each rank writes its part as one piece.
+// adapts again with the cells around the cuts left unpillowed. Then the nodes around every
+// cut move on, the ranks holding them moving the same band (cut_bands.h); each rank writes its
+// part as one piece.
 int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& common,
                        const dist::Communicator& comm) {
   AdaptOptions options = args.options;
@@ -882,9 +798,9 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
     cli::check_memory(
         "adapting " + std::to_string(cells) + " cells on rank " + std::to_string(comm.rank()),
         static_cast<double>(cells) * cli::adapt_bytes_per_cell, common.memory_limit());
-    if (in.structured) part = slab_part(in, args);
+    part = in.structured ? slab_part(in, args) : mesh_part(in, args);
   });
-  if (!in.structured) part = mesh_part(comm, in, args);
+  part.cell_owner = cell_owners(comm, in);
   cli::on_every_rank(comm, app, [&] { part_targets(comm, part, options); });
   options.boundary.frozen = part.frozen;
   options.progress = comm.rank() == 0 ? cli::terminal_progress(common) : nullptr;
@@ -907,12 +823,9 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
     if (stopped) break;
     pillowed = pillow && std::visit(
                              [&](auto& m) {
-                               if (!in.structured)
-                                 return cli::share_nodes(comm, m.part.result, m.shared, options) &&
-                                        cli::parts_meet(comm, m.part.result.mesh, m.shared,
-                                                        m.part.cut_faces, m.across);
-                               return share_cut_nodes(comm, m, part, options) &&
-                                      cli::cuts_fit(comm, m.slab(part));
+                               return cli::share_nodes(comm, m.part.result, m.shared, options) &&
+                                      cli::parts_meet(comm, m.part.result.mesh, m.shared,
+                                                      m.part.cut_faces, m.across);
                              },
                              mesh);
     if (pillowed || !pillow) break;
@@ -920,10 +833,13 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
   part.read = AssignedGrid();
   const double adapt_seconds = clock.seconds();
   times.emplace_back("adapt", adapt_seconds);
-  if (!stopped && in.structured) {
+  if (!stopped) {
     clock.restart();
-    std::visit([&](auto& m) { cli::resume_across_cuts(comm, m.slab(part), cut_rings, options); },
-               mesh);
+    std::visit(
+        [&](auto& m) {
+          cli::resume_across_cuts(comm, m.part.result, m.shared, cut_rings, options);
+        },
+        mesh);
     times.emplace_back("cuts", clock.seconds());
   }
 
@@ -975,8 +891,6 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
   report["ranks"]["cut_layers"] = !pillowed           ? "unpillowed"
                                   : in.shape.dim == 2 ? "none"
                                                       : "pillowed";
-  // A slab's cuts' nodes moved on in the second pass; a mesh's stay where the first left them.
-  report["ranks"]["cuts_moved"] = in.structured;
   const auto below = combined["cells_below_threshold"].get<std::int64_t>() +
                      combined["cells_below_min_edge"].get<std::int64_t>();
   report["threshold_met"] = below == 0;

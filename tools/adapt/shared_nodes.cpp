@@ -70,40 +70,61 @@ bool share_nodes(const dist::Communicator& comm, AdaptResult<M>& r, const Shared
       [](dist::Buffer& b) { return b.get_point(); });
   const int me = comm.rank();
   bool named = true;  // every holder this rank names holds the node by the same name
-  // The nodes whose points this rank takes: from their lowest holder, from their highest.
-  std::array<std::vector<std::pair<NodeId, Vec3>>, 2> take;
-  std::vector<std::pair<NodeId, Vec3>> own;
+  // Per group of holders (this rank and the others, as SharedNodes names them): the nodes,
+  // with the points this rank takes from their lowest holder (0) or their highest (1).
+  std::map<std::vector<int>, std::array<std::vector<std::pair<NodeId, Vec3>>, 2>> take;
+  std::map<std::vector<int>, std::vector<std::pair<NodeId, Vec3>>> own;
   for (NodeId v : id_range<NodeId>(r.mesh.n_nodes())) {
     const std::vector<int>& ranks = shared.ranks[v.idx()];
     if (ranks.empty()) continue;
-    own.emplace_back(v, r.mesh.point(v));
-    for (const int q : {ranks.front(), ranks.back()}) {
+    std::vector<int> group = ranks;
+    group.insert(std::lower_bound(group.begin(), group.end(), me), me);
+    own[group].emplace_back(v, r.mesh.point(v));
+    auto& mine = take[group];
+    for (const int q : {group.front(), group.back()}) {
+      if (q == me) continue;
       const auto k =
           static_cast<std::size_t>(std::lower_bound(peers.begin(), peers.end(), q) - peers.begin());
       const auto at = points[k].find(shared.key[v.idx()]);
-      if (at == points[k].end()) {
+      if (at == points[k].end())
         named = false;
-        continue;
-      }
-      if (q == ranks.front() && q < me) take[0].emplace_back(v, at->second);
-      if (q == ranks.back() && q > me) take[1].emplace_back(v, at->second);
+      else
+        mine[q == group.front() ? 0 : 1].emplace_back(v, at->second);
     }
   }
   const SizeCriterion size{options.min_edge, r.local_size};
   const std::size_t failing = failing_cells(r.mesh, options.threshold, size).size();  // bad input's
-  std::array<bool, 2> can{};
-  for (std::size_t k = 0; k < 2; ++k) {
-    place(r, take[k]);
-    can[k] = failing_cells(r.mesh, options.threshold, size).size() <= failing;
-    place(r, own);
+  // Whether this rank's cells take each group's choice; every rank's, on every rank.
+  std::vector<std::int64_t> verdicts;  // per group: its size, its ranks, then 2 verdicts
+  for (const auto& [group, choices] : take) {
+    verdicts.push_back(static_cast<std::int64_t>(group.size()));
+    verdicts.insert(verdicts.end(), group.begin(), group.end());
+    for (const auto& nodes : choices) {
+      place(r, nodes);
+      verdicts.push_back(failing_cells(r.mesh, options.threshold, size).size() <= failing);
+      place(r, own[group]);
+    }
   }
   if (!all_true(comm, named)) return false;
-  for (std::size_t k = 0; k < 2; ++k)
-    if (all_true(comm, can[k])) {
-      place(r, take[k]);
-      return true;
-    }
-  return false;
+  // A group takes its lowest holder's points when every rank of it can, else its highest's.
+  std::map<std::vector<int>, std::array<bool, 2>> can;
+  const std::vector<std::int64_t> all = dist::all_gather_values(comm, verdicts);
+  for (std::size_t k = 0; k < all.size();) {
+    const auto n = static_cast<std::ptrdiff_t>(all[k]);
+    const std::vector<int> group(all.begin() + static_cast<std::ptrdiff_t>(k) + 1,
+                                 all.begin() + static_cast<std::ptrdiff_t>(k) + 1 + n);
+    k += static_cast<std::size_t>(n) + 1;
+    auto [at, first] = can.try_emplace(group, std::array<bool, 2>{true, true});
+    for (bool& c : at->second) c = all[k++] != 0 && c;  // every verdict read
+  }
+  bool fit = true;
+  for (const auto& [group, choices] : take) {
+    const std::array<bool, 2>& ok = can.at(group);
+    fit = fit && (ok[0] || ok[1]);
+    place(r, choices[ok[0] ? 0 : 1]);
+  }
+  fit = fit && failing_cells(r.mesh, options.threshold, size).size() <= failing;
+  return all_true(comm, fit);
 }
 
 template <class M>

@@ -35,12 +35,15 @@ struct SharedNodes {
   }
 };
 
-/// Takes every shared node of `r` to one point on every rank holding it: the lowest holder's,
-/// when no rank's cells then fail a criterion more than before; else the highest holder's when
-/// none does. Their points differ a little where the copies were smoothed among ghost cells
-/// that differ from rank to rank. False on every rank (the points left as they were) when
-/// neither choice holds, or when a rank holds a shared node the ranks it names do not: the
-/// parts do not meet. Every rank calls it.
+/// Takes every shared node of `r` to one point on every rank holding it. Each rank smoothed the
+/// copies among the cells it read, whose ghost cells differ from rank to rank: where the
+/// layers of several materials meet at a cut, their points differ a little (up to 1.8e-4 of
+/// a grid of 1 on the asteroid at 48^3). The nodes of each group of holders take their lowest
+/// holder's points when no cell of any rank of the group then fails a criterion more than
+/// before, else their highest holder's when none does. False on every rank when neither choice
+/// holds for some group, when some cell fails once every group took its choice, or when a
+/// rank holds a shared node by a name the ranks it names do not: the parts do not meet.
+/// Every rank calls it.
 template <class M>
 bool share_nodes(const dist::Communicator& comm, AdaptResult<M>& r, const SharedNodes& shared,
                  const AdaptOptions& options);
