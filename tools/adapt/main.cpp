@@ -477,6 +477,79 @@ std::vector<int> cell_owners(const dist::Communicator& comm, const cli::RankInpu
   return owner;
 }
 
+// Replaces each value with its sum over the ranks, added in rank order. Every rank calls it.
+std::function<void(std::vector<double>&)> summed_over_ranks(const dist::Communicator& comm) {
+  return [&comm](std::vector<double>& values) {
+    const std::vector<double> all = dist::all_gather_values(comm, values);
+    std::fill(values.begin(), values.end(), 0.0);
+    for (std::size_t k = 0; k < all.size(); ++k) values[k % values.size()] += all[k];
+  };
+}
+
+// Sends to[k] (global ids of cells) to peers[k]; what the peers send, in this rank's ids.
+std::vector<CellId> received_cells(const dist::Communicator& comm, const std::vector<int>& peers,
+                                   std::vector<std::vector<std::int64_t>> to,
+                                   const dist::Block& block) {
+  std::vector<dist::Buffer> out(peers.size());
+  for (std::size_t k = 0; k < peers.size(); ++k) out[k].put_vector(to[k]);
+  std::vector<CellId> cells;
+  for (dist::Buffer& b : dist::exchange(comm, peers, std::move(out)))
+    for (std::int64_t g : b.get_vector<std::int64_t>()) cells.push_back(block.local_cell(g));
+  return cells;
+}
+
+// The guaranteed method's decisions taken by every rank together (RankDecisions): a cell that
+// the mending run of any rank holding it left failing is left out by all of them (each rank
+// sends its failing ghosts to their owners, which send back every holder's verdicts on their
+// own cells); the shares of the automatic choice are summed. Every rank calls it.
+RankDecisions rank_decisions(const dist::Communicator& comm, const HeldPart& s,
+                             const dist::Block& block) {
+  std::vector<std::int64_t> own, ghosts;
+  for (CellId c : id_range<CellId>(static_cast<index_t>(s.cell_owner.size())))
+    (s.cell_owner[c.idx()] == comm.rank() ? own : ghosts).push_back(block.global(c));
+  std::sort(ghosts.begin(), ghosts.end());  // a slab's are in order already, a list's too
+  const std::vector<std::vector<int>> holders = dist::other_holders(comm, own, ghosts);
+  std::vector<int> peers;
+  for (const std::vector<int>& h : holders) peers.insert(peers.end(), h.begin(), h.end());
+  for (int q : s.cell_owner)
+    if (q != comm.rank()) peers.push_back(q);
+  std::sort(peers.begin(), peers.end());
+  peers.erase(std::unique(peers.begin(), peers.end()), peers.end());
+  const auto slot = [peers](int q) {
+    return static_cast<std::size_t>(std::lower_bound(peers.begin(), peers.end(), q) -
+                                    peers.begin());
+  };
+  RankDecisions d;
+  d.left_out = [&comm, &s, &block, own, holders, peers, slot](std::vector<CellId>& cells) {
+    const bool mine = !cells.empty();
+    std::vector<std::vector<std::int64_t>> to(peers.size());
+    for (CellId c : cells)
+      if (s.cell_owner[c.idx()] != comm.rank())
+        to[slot(s.cell_owner[c.idx()])].push_back(block.global(c));
+    std::vector<CellId> failing = received_cells(comm, peers, std::move(to), block);
+    for (CellId c : cells)
+      if (s.cell_owner[c.idx()] == comm.rank()) failing.push_back(c);
+    std::sort(failing.begin(), failing.end());
+    failing.erase(std::unique(failing.begin(), failing.end()), failing.end());
+    to.assign(peers.size(), {});
+    for (CellId c : failing) {
+      const std::int64_t g = block.global(c);
+      const auto at = std::lower_bound(own.begin(), own.end(), g) - own.begin();
+      for (int q : holders[static_cast<std::size_t>(at)]) to[slot(q)].push_back(g);
+    }
+    for (std::vector<std::int64_t>& ids : to) std::sort(ids.begin(), ids.end());
+    std::vector<CellId> back = received_cells(comm, peers, std::move(to), block);
+    cells.insert(cells.end(), failing.begin(), failing.end());
+    cells.insert(cells.end(), back.begin(), back.end());
+    std::sort(cells.begin(), cells.end());
+    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+    const std::vector<char> all = dist::all_gather_values(comm, std::vector<char>{mine});
+    return std::find(all.begin(), all.end(), 1) != all.end();
+  };
+  d.add_up = summed_over_ranks(comm);
+  return d;
+}
+
 // The frame one process adapts the whole grid in (mesh/unit_frame.h): that of every rank's
 // layers read together.
 template <class M>
@@ -505,11 +578,7 @@ void part_targets(const dist::Communicator& comm, HeldPart& s, const AdaptOption
         VolumeParts parts;
         parts.counted_cells = s.counted_cells;
         parts.counted_nodes = s.counted_nodes;
-        parts.add_up = [&](std::vector<double>& values) {
-          const std::vector<double> all = dist::all_gather_values(comm, values);
-          std::fill(values.begin(), values.end(), 0.0);
-          for (std::size_t k = 0; k < all.size(); ++k) values[k % values.size()] += all[k];
-        };
+        parts.add_up = summed_over_ranks(comm);
         const Targets t = compute_targets(
             m, s.read.fractions, s.read.material,
             boundary_constraints(m, options.boundary.without_frozen()), options.targets, &parts);
@@ -803,11 +872,13 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
   part.cell_owner = cell_owners(comm, in);
   cli::on_every_rank(comm, app, [&] { part_targets(comm, part, options); });
   options.boundary.frozen = part.frozen;
+  options.ranks = rank_decisions(comm, part, in.slab.block);
   options.progress = comm.rank() == 0 ? cli::terminal_progress(common) : nullptr;
   times.emplace_back("read", clock.seconds());
   clock.restart();
-  // The cells around the cuts pillowed, unless the ranks beside a cut laid different layers
-  // across it (a mending run leaving cells out near it on one side): then left unpillowed.
+  // The cells around the cuts pillowed, unless the ranks holding a cut's nodes laid different
+  // layers around them, or placed their copies too far apart to take each other's points:
+  // then left unpillowed.
   AnyRankMesh mesh;
   std::vector<std::int64_t> bad;
   std::vector<CellFailure> worst_input;  // of the ranks that stopped on their input

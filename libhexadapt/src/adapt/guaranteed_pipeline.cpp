@@ -495,7 +495,9 @@ AdaptResult<M> first_layer(const M& grid, const CellMaterials& material, const T
     run_layers(grid, material, targets, size, n_materials, LayerStrategy::first, r,
                run_options(round + 1, 0.5 * (1 + from)), &mend);
     failing.push_back(static_cast<index_t>(mend.cells.size()));
-    if (mend.cells.empty()) return finish(std::move(r));
+    const bool some_failing =
+        options.ranks.left_out ? options.ranks.left_out(mend.cells) : !mend.cells.empty();
+    if (!some_failing) return finish(std::move(r));
     for (std::size_t k = before.steps.size(); k < r.steps.size(); ++k)
       seconds += r.steps[k].seconds;
     places = std::move(mend.places);
@@ -585,7 +587,10 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
     r.bad_input_cells.push_back(f.cell);
   const bool good_input = r.bad_input_cells.empty();
   const auto nn = static_cast<std::size_t>(mesh.n_nodes());
-  if (!good_input && !options.allow_bad_input) {
+  // On ranks, every rank stops when one does: the others' runs would wait for its decisions.
+  std::vector<double> bad_anywhere{static_cast<double>(r.bad_input_cells.size())};
+  if (options.ranks.add_up) options.ranks.add_up(bad_anywhere);
+  if (bad_anywhere[0] > 0 && !options.allow_bad_input) {
     r.stopped_bad_input = true;
     for (CellId c : id_range<CellId>(mesh.n_cells())) r.cell_origin.push_back(c);
     for (NodeId v : id_range<NodeId>(mesh.n_nodes())) r.node_origin.push_back(v);
@@ -625,16 +630,21 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
     // their interface, cavities too, keeping the result that brings more nodes onto it.
     layers.progress = progress_part(options.progress, 0.15, 0.75);
     AdaptResult<M> layered = first_layer(grid, material, targets, size, n_materials, r, layers);
-    if (layered.n_near_interface >= options.enough_share * layered.n_interface_nodes) {
+    std::vector<double> shares{static_cast<double>(layered.n_near_interface),
+                               static_cast<double>(layered.n_interface_nodes)};
+    if (options.ranks.add_up) options.ranks.add_up(shares);
+    if (shares[0] >= options.enough_share * shares[1]) {
       r = std::move(layered);
     } else {
       AdaptResult<M> plain = r;
       layers.progress = progress_part(options.progress, 0.75, 1.0, "cavities: ");
       run_layers(grid, material, targets, size, n_materials, LayerStrategy::cavities, plain,
                  layers);
-      const bool take = layered.n_near_interface > plain.n_near_interface ||
-                        (layered.n_near_interface == plain.n_near_interface &&
-                         layered.surface_dist_final < plain.surface_dist_final);
+      std::vector<double> both{static_cast<double>(layered.n_near_interface),
+                               static_cast<double>(plain.n_near_interface),
+                               layered.surface_dist_final, plain.surface_dist_final};
+      if (options.ranks.add_up) options.ranks.add_up(both);
+      const bool take = both[0] > both[1] || (both[0] == both[1] && both[2] < both[3]);
       AdaptResult<M>& other = take ? plain : layered;
       double seconds = 0;
       for (std::size_t k = r.steps.size(); k < other.steps.size(); ++k)

@@ -188,17 +188,25 @@ for ranks in (2, 3):
     code, err = run("measure", folder, 0, "out.pvtu", "--reference", "../vf.vts")
     check(code == 0, "measure of the %d ranks' pieces exits %d: %s" % (ranks, code, err))
 
-# Where the ranks lay different layers across a cut (a run of the mending leaving cells out
-# near it on one side only: the vortex at 20^3 on 2 ranks), every rank adapts again with the
-# cells around the cuts left unpillowed: the pieces still fit, every cell keeps the threshold.
+# The mending decided by the ranks together (a cell left out by every rank holding it when
+# one's run left it failing; 4 runs on every rank, 3 on one process): the vortex at 20^3 on 2
+# ranks lays the same layers across its cut (before, each rank left out its own failing
+# cells, the layers differed at the cut, and every rank adapted again unpillowed); the pieces
+# fit, every cell keeps the threshold, and nearly as many interface nodes end near their
+# interface as on one process (249 of its 252).
 for tool, args in (("generate", ("vortex", "--dims", "20,20,20", "--time", "1.5", "-o", "vf.vts")),
-                   ("assign", ("vf.vts", "-o", "assigned.vts"))):
+                   ("assign", ("vf.vts", "-o", "assigned.vts")),
+                   ("adapt", ("assigned.vts", "-o", "serial.vtu", "--json", "serial.json"))):
     code, err = run(tool, "vortex", 0, *args)
     check(code == 0, "%s of the vortex exits %d: %s" % (tool, code, err))
 code, err = run("adapt", "vortex", 2, "assigned.vts", "-o", "out.pvtu", "--json", "out.json")
 check(code == 0, "adapt of the vortex on 2 ranks exits %d: %s" % (code, err))
-check(report("vortex")["ranks"]["cut_layers"] == "unpillowed",
-      "the vortex on 2 ranks: the cuts' cells %s" % report("vortex")["ranks"]["cut_layers"])
+vortex, vortex_serial = report("vortex")["result"], report("vortex", "serial.json")["result"]
+check(report("vortex")["ranks"]["cut_layers"] == "pillowed"
+      and vortex["near_interface"] >= 0.98 * vortex_serial["near_interface"],
+      "the vortex on 2 ranks: the cuts' cells %s, %d near (one process: %d)" % (
+          report("vortex")["ranks"]["cut_layers"], vortex["near_interface"],
+          vortex_serial["near_interface"]))
 check_one_mesh("vortex/out.pvtu", "the vortex on 2 ranks")
 
 # 2D (three disks, cut across y): nothing laid across the cuts (the layers are cavities);
@@ -225,9 +233,11 @@ check(code == 0, "measure of the 2D case's gathered mesh exits %d: %s" % (code, 
 # each rank adapts its cells and three ghost layers with the nodes it shares frozen, the nodes
 # held by several ranks take one point, and the bands of every group of ranks move them on.
 # The pieces make one mesh keeping the threshold, with one process's interface nodes, nearly
-# as many near their interface (2 ranks: 429 of one process's 432, the cuts' cells pillowed;
-# 3 ranks: 416, the ranks' layers differ near a cut, so they are left unpillowed), and the
-# gathered file is the same at every run and passes measure against the input.
+# as many near their interface (one process: 432; 2 and 3 ranks: 430 and 429, the cuts'
+# cells pillowed; 4 ranks: 410, the copies of the nodes where four parts meet placed too far
+# apart on two ranks for either to take the other's, so every rank adapts again with the cells
+# around the cuts unpillowed), and the gathered file is the same at every run and passes
+# measure against the input.
 for tool, args in (("generate", ("asteroid", "--dims", ",".join(map(str, N)), "--jitter", "0.2",
                                  "-o", "vf.vtu")),
                    ("assign", ("vf.vtu", "-o", "assigned.vtu")),
@@ -235,7 +245,8 @@ for tool, args in (("generate", ("asteroid", "--dims", ",".join(map(str, N)), "-
     code, err = run(tool, "mesh", 0, *args)
     check(code == 0, "%s of the jittered asteroid exits %d: %s" % (tool, code, err))
 mesh_serial = report("mesh", "serial.json")["result"]
-for ranks, layers in ((2, "pillowed"), (3, "unpillowed")):
+for ranks, layers, share in ((2, "pillowed", 0.98), (3, "pillowed", 0.98),
+                             (4, "unpillowed", 0.94)):
     folder = "mesh/ranks_%d" % ranks
     code, err = run("adapt", folder, ranks, "../assigned.vtu", "-o", "out.pvtu", "--json",
                     "out.json")
@@ -249,7 +260,7 @@ for ranks, layers in ((2, "pillowed"), (3, "unpillowed")):
           % (ranks, res["cells"], res["nodes"], on, len(hexes), len(points)))
     check(r["threshold_met"] and on["cut_layers"] == layers
           and res["interface_nodes"] == mesh_serial["interface_nodes"]
-          and res["near_interface"] >= 0.95 * mesh_serial["near_interface"]
+          and res["near_interface"] >= share * mesh_serial["near_interface"]
           and res["frozen_blocked_nodes"] == 0,
           "the mesh on %d ranks: cut layers %s, %r near of %r, %r frozen (one process: %r of %r)"
           % (ranks, on["cut_layers"], res["near_interface"], res["interface_nodes"],

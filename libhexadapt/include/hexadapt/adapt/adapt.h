@@ -29,6 +29,7 @@
 // MPI job do where they meet).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -71,6 +72,20 @@ std::string to_string(AdaptMethod method);
 /// "automatic" / "cavities" / "first" / "both"; throws OptionError for another name.
 LayerStrategy parse_layer_strategy(const std::string& name);
 std::string to_string(LayerStrategy strategy);
+
+/// On the ranks of an MPI job, each adapting its part of a grid and the ghost layers around it:
+/// how the guaranteed method takes its decisions together on every rank, so that the layers it
+/// lays near the cuts between the parts are the same on every rank holding their cells. Empty
+/// on one process. Every rank calls each at the same point of its run.
+struct RankDecisions {
+  /// Replaces `cells` (input cells, in this rank's ids, that a mending run left failing on
+  /// this rank) with the cells this rank leaves out of the layers next: those of its cells
+  /// that the run of any rank holding them left failing. True when some rank's run left a
+  /// cell failing.
+  std::function<bool(std::vector<CellId>& cells)> left_out;
+  /// Replaces each value with its sum over the ranks.
+  std::function<void(std::vector<double>& values)> add_up;
+};
 
 /// The threshold (S_q, the quality the guaranteed method keeps), pillow, smooth and boundary
 /// settings are StepSettings', held once for every step.
@@ -118,6 +133,10 @@ struct AdaptOptions : StepSettings {
   /// A node within this many local sizes (the mean local_size of its cells) of its interface
   /// surface has reached the interface; one farther is blocked.
   double near_interface = 0.05;
+  /// guaranteed, on the ranks of an MPI job: the mending's left-out cells and the automatic
+  /// layer choice decided by every rank together (their shares summed over the ranks' parts
+  /// read, ghost cells included).
+  RankDecisions ranks;
 };
 
 /// Why a node with a target did not reach it (the `blocked` point array).
