@@ -833,11 +833,11 @@ bool stopped_on_input(const dist::Communicator& comm, const AnyAdaptResult& resu
 // unstructured mesh) and the ghost layers around it, and adapts them with the nodes it shares
 // with other ranks' own cells (the cuts) frozen, the cells around them pillowed as one
 // process pillows them (BoundaryOptions::pillow_frozen); its part of the mesh is the cells
-// that come from its own cells (own_part.h). The ranks beside a cut lay the same layers across
-// it; where they do not (a mending run leaving cells out near it on one side), every rank
-// adapts again with the cells around the cuts left unpillowed. Then the nodes around every
-// cut move on, the ranks holding them moving the same band (cut_bands.h); each rank writes its
-// part as one piece.
+// that come from its own cells (own_part.h). The ranks decide the mending together
+// (rank_decisions), so the ranks holding a cut lay the same layers across it; where the
+// copies of its nodes still do not meet (shared_nodes.h), every rank adapts again with the
+// cells around the cuts left unpillowed. Then the nodes around every cut move on, the ranks
+// holding them moving the same band (cut_bands.h); each rank writes its part as one piece.
 int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& common,
                        const dist::Communicator& comm) {
   AdaptOptions options = args.options;
