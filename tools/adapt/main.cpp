@@ -369,15 +369,20 @@ struct HeldPart {
   /// The cuts' nodes: those of the own cells that other ranks' own cells use too, frozen so
   /// that the parts fit together there.
   IdVector<NodeId, char> frozen;
-  /// A mesh's: the rank owning each cell read. A slab's: none (its cuts are its node layers).
-  std::vector<int> cell_owner;
-  // A slab's:
-  index_t plane = 0;                  ///< nodes per cut
-  std::array<int, 2> owned{};         ///< the own layers among those read, [first, end)
-  bool below = false, above = false;  ///< a cut below, above
+  std::vector<int> cell_owner;  ///< the rank owning each cell read (cell_owners)
   /// Of the nodes read; those of the own cells as one process computes them on the whole input.
   Targets targets;
 };
+
+// The assigned grid of the cells `in` holds, its names and its metadata; `in`'s data released.
+HeldPart held_part(cli::RankInput& in, const Args& args) {
+  HeldPart s;
+  s.read = io::to_assigned_grid(in.data, args.in.grid(io::MaterialSource::array), args.input);
+  s.names = s.read.names();
+  s.input.metadata = std::move(in.data.metadata);
+  in.data = io::MeshData();
+  return s;
+}
 
 // The part of a structured grid's slab: its own layers and the ghost layers around them.
 HeldPart slab_part(cli::RankInput& in, const Args& args) {
@@ -386,13 +391,9 @@ HeldPart slab_part(cli::RankInput& in, const Args& args) {
   const std::array<int, 2> owned{in.slab.owned_layers[0] - first, in.slab.owned_layers[1] - first};
   const bool below = in.slab.owned_layers[0] > 0;
   const bool above = in.slab.owned_layers[1] < in.shape.cells[axis];
-  HeldPart s;
-  s.read = io::to_assigned_grid(in.data, args.in.grid(io::MaterialSource::array), args.input);
-  s.names = s.read.names();
-  s.input.metadata = std::move(in.data.metadata);
   const index_t n_cells = in.data.n_cells();
   const auto n_nodes = static_cast<index_t>(in.data.points.size());
-  in.data = io::MeshData();
+  HeldPart s = held_part(in, args);
   const int held = in.slab.held[axis];
   const index_t cells = n_cells / held, plane = n_nodes / (held + 1);
   s.first_cell = in.slab.block.owned_cell_first;
@@ -416,11 +417,7 @@ HeldPart slab_part(cli::RankInput& in, const Args& args) {
 // ghost layers around them.
 HeldPart mesh_part(cli::RankInput& in, const Args& args) {
   const dist::Block& block = in.slab.block;
-  HeldPart s;
-  s.read = io::to_assigned_grid(in.data, args.in.grid(io::MaterialSource::array), args.input);
-  s.names = s.read.names();
-  s.input.metadata = std::move(in.data.metadata);
-  in.data = io::MeshData();
+  HeldPart s = held_part(in, args);
   s.own_cells = block.owned_cell_end;
   std::visit(
       [&](const auto& mesh) {
