@@ -5,6 +5,7 @@
 #include <map>
 
 #include "hexadapt/adapt/size_criterion.h"
+#include "hexadapt/adapt/smoothing.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/mesh/quad_mesh.h"
 
@@ -54,6 +55,25 @@ void place(AdaptResult<M>& r, const std::vector<std::pair<NodeId, Vec3>>& nodes)
   }
 }
 
+// Smooths the nodes of `r` around its failing cells that no other rank holds and that are not
+// frozen, as the mending's local smoothing does: the cells a taken point left failing may
+// pass again.
+template <class M>
+void repair_around_failing(AdaptResult<M>& r, const SharedNodes& shared,
+                           const AdaptOptions& options) {
+  const SizeCriterion size{options.min_edge, r.local_size};
+  IdVector<NodeId, char> movable(static_cast<std::size_t>(r.mesh.n_nodes()), 0);
+  for (const CellFailure& f : failing_cells(r.mesh, options.threshold, size))
+    for (NodeId v : r.mesh.cell_nodes(f.cell))
+      for (CellId c : r.mesh.node_cells(v))
+        for (NodeId w : r.mesh.cell_nodes(c))
+          movable[w] = shared.ranks[w.idx()].empty() && !r.sliding[w].frozen();
+  SmoothOptions o = options.smooth;
+  o.optimise_below = 1.0;
+  o.floor = options.threshold;
+  smooth(r.mesh, movable, r.sliding, o, nullptr, size);
+}
+
 // A point as a key: the ranks holding a node place it at the same point once shared.
 std::array<double, 3> key(const Vec3& p) {
   return {p.x(), p.y(), p.z()};
@@ -94,37 +114,48 @@ bool share_nodes(const dist::Communicator& comm, AdaptResult<M>& r, const Shared
   }
   const SizeCriterion size{options.min_edge, r.local_size};
   const std::size_t failing = failing_cells(r.mesh, options.threshold, size).size();  // bad input's
-  // Whether this rank's cells take each group's choice; every rank's, on every rank.
-  std::vector<std::int64_t> verdicts;  // per group: its size, its ranks, then 2 verdicts
+  const auto passes = [&] {
+    return failing_cells(r.mesh, options.threshold, size).size() <= failing;
+  };
+  std::vector<Vec3> before;
+  for (NodeId v : id_range<NodeId>(r.mesh.n_nodes())) before.push_back(r.mesh.point(v));
+  // Whether this rank's cells take each group's choices: the lowest holder's points, the
+  // highest's, then each with this rank's free nodes around what then fails smoothed; every
+  // rank's verdicts, on every rank.
+  std::vector<std::int64_t> verdicts;  // per group: its size, its ranks, then 4 verdicts
   for (const auto& [group, choices] : take) {
     verdicts.push_back(static_cast<std::int64_t>(group.size()));
     verdicts.insert(verdicts.end(), group.begin(), group.end());
-    for (const auto& nodes : choices) {
-      place(r, nodes);
-      verdicts.push_back(failing_cells(r.mesh, options.threshold, size).size() <= failing);
+    for (int k = 0; k < 4; ++k) {
+      place(r, choices[k % 2]);
+      if (k >= 2) repair_around_failing(r, shared, options);
+      verdicts.push_back(passes());
+      for (NodeId v : id_range<NodeId>(r.mesh.n_nodes())) r.mesh.set_point(v, before[v.idx()]);
       place(r, own[group]);
     }
   }
   if (!all_true(comm, named)) return false;
-  // A group takes its lowest holder's points when every rank of it can, else its highest's.
-  std::map<std::vector<int>, std::array<bool, 2>> can;
+  // A group takes the first choice every rank of it can take.
+  std::map<std::vector<int>, std::array<bool, 4>> can;
   const std::vector<std::int64_t> all = dist::all_gather_values(comm, verdicts);
   for (std::size_t k = 0; k < all.size();) {
     const auto n = static_cast<std::ptrdiff_t>(all[k]);
     const std::vector<int> group(all.begin() + static_cast<std::ptrdiff_t>(k) + 1,
                                  all.begin() + static_cast<std::ptrdiff_t>(k) + 1 + n);
     k += static_cast<std::size_t>(n) + 1;
-    auto [at, first] = can.try_emplace(group, std::array<bool, 2>{true, true});
+    auto at = can.try_emplace(group, std::array<bool, 4>{true, true, true, true}).first;
     for (bool& c : at->second) c = all[k++] != 0 && c;  // every verdict read
   }
-  bool fit = true;
+  bool fit = true, repair = false;
   for (const auto& [group, choices] : take) {
-    const std::array<bool, 2>& ok = can.at(group);
-    fit = fit && (ok[0] || ok[1]);
-    place(r, choices[ok[0] ? 0 : 1]);
+    const std::array<bool, 4>& ok = can.at(group);
+    const auto k = static_cast<std::size_t>(std::find(ok.begin(), ok.end(), true) - ok.begin());
+    fit = fit && k < ok.size();
+    repair = repair || k >= 2;
+    place(r, choices[k % 2]);
   }
-  fit = fit && failing_cells(r.mesh, options.threshold, size).size() <= failing;
-  return all_true(comm, fit);
+  if (repair) repair_around_failing(r, shared, options);
+  return all_true(comm, fit && passes());
 }
 
 template <class M>

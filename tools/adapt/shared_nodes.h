@@ -38,9 +38,11 @@ struct SharedNodes {
 /// Takes every shared node of `r` to one point on every rank holding it. Each rank smoothed the
 /// copies among the cells it read, whose ghost cells differ from rank to rank: where the
 /// layers of several materials meet at a cut, their points differ a little (up to 1.8e-4 of
-/// a grid of 1 on the asteroid at 48^3). The nodes of each group of holders take their lowest
-/// holder's points when no cell of any rank of the group then fails a criterion more than
-/// before, else their highest holder's when none does. False on every rank when neither choice
+/// a grid of 1 on the asteroid at 48^3; up to a third of a cell where four parts of a mesh
+/// meet). The nodes of each group of holders take the first of these that no cell of any rank
+/// of the group then fails a criterion more than before with: their lowest holder's points,
+/// their highest holder's, then each of them with the taking rank's own free nodes around the
+/// cells that then fail smoothed (nodes no other rank holds). False on every rank when none
 /// holds for some group, when some cell fails once every group took its choice, or when a
 /// rank holds a shared node by a name the ranks it names do not: the parts do not meet.
 /// Every rank calls it.

@@ -233,55 +233,64 @@ check(code == 0, "measure of the 2D case's gathered mesh exits %d: %s" % (code, 
 # each rank adapts its cells and three ghost layers with the nodes it shares frozen, the nodes
 # held by several ranks take one point, and the bands of every group of ranks move them on.
 # The pieces make one mesh keeping the threshold, with one process's interface nodes, nearly
-# as many near their interface (one process: 432; 2 and 3 ranks: 430 and 429, the cuts'
-# cells pillowed; 4 ranks: 410, the copies of the nodes where four parts meet placed too far
-# apart on two ranks for either to take the other's, so every rank adapts again with the cells
-# around the cuts unpillowed), and the gathered file is the same at every run and passes
-# measure against the input.
+# as many near their interface (one process: 432; 2, 3 and 4 ranks: 430, 429 and 429, the
+# cuts' cells pillowed; on 4 ranks two ranks' copies where the parts meet are too far apart
+# for either to take the other's points as they are, and one takes them with its own nodes
+# around smoothed), and the gathered file passes measure against the input (and is the same
+# at every run on 3 ranks). The asteroid's grid as a mesh on 4 ranks: no such smoothing mends a cut where
+# the parts meet, and every rank adapts again with the cells around the cuts unpillowed (401
+# of one process's 422 near).
 for tool, args in (("generate", ("asteroid", "--dims", ",".join(map(str, N)), "--jitter", "0.2",
                                  "-o", "vf.vtu")),
                    ("assign", ("vf.vtu", "-o", "assigned.vtu")),
                    ("adapt", ("assigned.vtu", "-o", "serial.vtu", "--json", "serial.json"))):
     code, err = run(tool, "mesh", 0, *args)
     check(code == 0, "%s of the jittered asteroid exits %d: %s" % (tool, code, err))
-mesh_serial = report("mesh", "serial.json")["result"]
-for ranks, layers, share in ((2, "pillowed", 0.98), (3, "pillowed", 0.98),
-                             (4, "unpillowed", 0.94)):
-    folder = "mesh/ranks_%d" % ranks
+for tool, args in (("assign", ("../vf.vts", "-o", "assigned.vtu")),
+                   ("adapt", ("assigned.vtu", "-o", "serial.vtu", "--json", "serial.json"))):
+    code, err = run(tool, "plain", 0, *args)
+    check(code == 0, "%s of the asteroid as a mesh exits %d: %s" % (tool, code, err))
+for case, reference, ranks, layers, share in (("mesh", "vf.vtu", 2, "pillowed", 0.98),
+                                              ("mesh", "vf.vtu", 3, "pillowed", 0.98),
+                                              ("mesh", "vf.vtu", 4, "pillowed", 0.98),
+                                              ("plain", "../vf.vts", 4, "unpillowed", 0.94)):
+    label = "the %s on %d ranks" % (case, ranks)
+    serial_result = report(case, "serial.json")["result"]
+    folder = "%s/ranks_%d" % (case, ranks)
     code, err = run("adapt", folder, ranks, "../assigned.vtu", "-o", "out.pvtu", "--json",
                     "out.json")
-    check(code == 0, "adapt of the mesh on %d ranks exits %d: %s" % (ranks, code, err))
-    points, hexes = check_one_mesh(folder + "/out.pvtu", "the mesh on %d ranks" % ranks)
+    check(code == 0, "adapt of %s exits %d: %s" % (label, code, err))
+    points, hexes = check_one_mesh(folder + "/out.pvtu", label)
     r = report(folder)
     res, on = r["result"], r["ranks"]
     check(res["cells"] == len(hexes) and res["nodes"] == len(points)
           and sum(on["cells"]) == res["cells"] and len(on["ghost_cells"]) == ranks,
-          "the mesh on %d ranks: the report's %d cells, %d nodes, ranks %r; the pieces' %d, %d"
-          % (ranks, res["cells"], res["nodes"], on, len(hexes), len(points)))
+          "%s: the report's %d cells, %d nodes, ranks %r; the pieces' %d, %d"
+          % (label, res["cells"], res["nodes"], on, len(hexes), len(points)))
     check(r["threshold_met"] and on["cut_layers"] == layers
-          and res["interface_nodes"] == mesh_serial["interface_nodes"]
-          and res["near_interface"] >= share * mesh_serial["near_interface"]
+          and res["interface_nodes"] == serial_result["interface_nodes"]
+          and res["near_interface"] >= share * serial_result["near_interface"]
           and res["frozen_blocked_nodes"] == 0,
-          "the mesh on %d ranks: cut layers %s, %r near of %r, %r frozen (one process: %r of %r)"
-          % (ranks, on["cut_layers"], res["near_interface"], res["interface_nodes"],
-             res["frozen_blocked_nodes"], mesh_serial["near_interface"],
-             mesh_serial["interface_nodes"]))
-    for attempt in ("gather", "again"):
+          "%s: cut layers %s, %r near of %r, %r frozen (one process: %r of %r)"
+          % (label, on["cut_layers"], res["near_interface"], res["interface_nodes"],
+             res["frozen_blocked_nodes"], serial_result["near_interface"],
+             serial_result["interface_nodes"]))
+    twice = case == "mesh" and ranks == 3  # the same bytes at every run: once is enough
+    for attempt in ("gather", "again") if twice else ("gather",):
         code, err = run("adapt", "%s_%s" % (folder, attempt), ranks, "../assigned.vtu", "-o",
                         "out.vtu", "--gather")
-        check(code == 0, "adapt --gather of the mesh on %d ranks exits %d: %s"
-              % (ranks, code, err))
+        check(code == 0, "adapt --gather of %s exits %d: %s" % (label, code, err))
     one = read(folder + "_gather/out.vtu")
     check(one.GetNumberOfPoints() == res["nodes"] == len(merged(one)[0])
           and one.GetNumberOfCells() == res["cells"],
-          "the mesh on %d ranks: the gathered file has %d nodes (%d distinct), %d cells"
-          % (ranks, one.GetNumberOfPoints(), len(merged(one)[0]), one.GetNumberOfCells()))
-    check(filecmp.cmp(path(folder + "_gather", "out.vtu"), path(folder + "_again", "out.vtu"),
-                      shallow=False), "the mesh on %d ranks: two runs gather different bytes"
-          % ranks)
-    code, err = run("measure", folder + "_gather", 0, "out.vtu", "--reference", "../vf.vtu")
-    check(code == 0, "measure of the mesh gathered from %d ranks exits %d: %s"
-          % (ranks, code, err))
+          "%s: the gathered file has %d nodes (%d distinct), %d cells"
+          % (label, one.GetNumberOfPoints(), len(merged(one)[0]), one.GetNumberOfCells()))
+    check(not twice or filecmp.cmp(path(folder + "_gather", "out.vtu"),
+                                   path(folder + "_again", "out.vtu"), shallow=False),
+          "%s: two runs gather different bytes" % label)
+    code, err = run("measure", folder + "_gather", 0, "out.vtu", "--reference",
+                    "../" + reference)
+    check(code == 0, "measure of %s, gathered, exits %d: %s" % (label, code, err))
 
 # The chain on ranks: assign writes .vts pieces, adapt reads its slabs of them.
 code, err = run("assign", "chain", 3, "../vf.vts", "-o", "assigned.pvts")
