@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <set>
 #include <vector>
 
 #include "hexadapt/adapt/size_criterion.h"
@@ -79,14 +80,9 @@ template <class M>
 dist::Buffer half_band(const AdaptResult<M>& r, const SharedNodes& shared,
                        const std::vector<int>& group, int me, int rings) {
   const M& mesh = r.mesh;
-  const auto holders = [&](NodeId v) {
-    std::vector<int> h = shared.ranks[v.idx()];
-    h.insert(std::lower_bound(h.begin(), h.end(), me), me);
-    return h;
-  };
   std::vector<NodeId> seeds;
   for (NodeId v : id_range<NodeId>(mesh.n_nodes()))
-    if (!shared.ranks[v.idx()].empty() && holders(v) == group) seeds.push_back(v);
+    if (!shared.ranks[v.idx()].empty() && shared.holders(v, me) == group) seeds.push_back(v);
   const auto [cells, ring] = band_of(mesh, seeds, rings);
   std::vector<index_t> slot(static_cast<std::size_t>(mesh.n_nodes()), unset);
   std::vector<NodeId> nodes;
@@ -264,11 +260,11 @@ void recount_cells(AdaptResult<M>& r, const AdaptOptions& options) {
 std::vector<std::vector<std::vector<int>>> group_rounds(const dist::Communicator& comm,
                                                         const SharedNodes& shared) {
   const int me = comm.rank();
+  std::set<std::vector<int>> own;  // this rank's groups, each once
+  for (NodeId v : id_range<NodeId>(static_cast<index_t>(shared.ranks.size())))
+    if (!shared.ranks[v.idx()].empty()) own.insert(shared.holders(v, me));
   std::vector<std::int64_t> mine;  // each group as its size, then its ranks
-  for (const std::vector<int>& others : shared.ranks) {
-    if (others.empty()) continue;
-    std::vector<int> g = others;
-    g.insert(std::lower_bound(g.begin(), g.end(), me), me);
+  for (const std::vector<int>& g : own) {
     mine.push_back(static_cast<std::int64_t>(g.size()));
     mine.insert(mine.end(), g.begin(), g.end());
   }

@@ -540,8 +540,7 @@ RankDecisions rank_decisions(const dist::Communicator& comm, const HeldPart& s,
     cells.insert(cells.end(), back.begin(), back.end());
     std::sort(cells.begin(), cells.end());
     cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
-    const std::vector<char> all = dist::all_gather_values(comm, std::vector<char>{mine});
-    return std::find(all.begin(), all.end(), 1) != all.end();
+    return !cli::all_true(comm, !mine);  // some rank's run left a cell failing
   };
   d.add_up = summed_over_ranks(comm);
   return d;
@@ -807,8 +806,7 @@ bool mended(const dist::Communicator& comm, const AdaptResult<M>& r, const Adapt
   const bool ran_out = options.mend_rounds > 0 &&
                        r.mend_failing.size() == static_cast<std::size_t>(options.mend_rounds) &&
                        r.mend_failing.back() > 0;
-  const std::vector<char> all = dist::all_gather_values(comm, std::vector<char>{ran_out});
-  return std::find(all.begin(), all.end(), 1) == all.end();
+  return cli::all_true(comm, !ran_out);
 }
 
 // Whether some rank stopped on bad input cells (the guaranteed method does not start from

@@ -13,12 +13,6 @@ namespace hexadapt::cli {
 
 namespace {
 
-// Every rank's word on every rank: true when all are.
-bool all_true(const dist::Communicator& comm, bool mine) {
-  const std::vector<char> all = dist::all_gather_values(comm, std::vector<char>{mine});
-  return std::find(all.begin(), all.end(), 0) == all.end();
-}
-
 // What the peers send about the nodes they share with this rank (put(b, v) per node v, after
 // its key), by key, per peer. Every rank calls it.
 template <class Put, class Get>
@@ -30,8 +24,7 @@ swapped(const dist::Communicator& comm, const SharedNodes& shared, Put put, Get 
   std::vector<dist::Buffer> mine(peers.size());
   for (std::size_t v = 0; v < shared.ranks.size(); ++v)
     for (int q : shared.ranks[v]) {
-      dist::Buffer& b = mine[static_cast<std::size_t>(
-          std::lower_bound(peers.begin(), peers.end(), q) - peers.begin())];
+      dist::Buffer& b = mine[shared.peer_slot(q)];
       b.put_vector(shared.key[v]);
       put(b, NodeId(static_cast<index_t>(v)));
     }
@@ -81,10 +74,14 @@ std::array<double, 3> key(const Vec3& p) {
 
 }  // namespace
 
+bool all_true(const dist::Communicator& comm, bool mine) {
+  const std::vector<char> all = dist::all_gather_values(comm, std::vector<char>{mine});
+  return std::find(all.begin(), all.end(), 0) == all.end();
+}
+
 template <class M>
 bool share_nodes(const dist::Communicator& comm, AdaptResult<M>& r, const SharedNodes& shared,
                  const AdaptOptions& options) {
-  const std::vector<int>& peers = shared.peers;
   const auto points = swapped(
       comm, shared, [&](dist::Buffer& b, NodeId v) { b.put_point(r.mesh.point(v)); },
       [](dist::Buffer& b) { return b.get_point(); });
@@ -95,16 +92,13 @@ bool share_nodes(const dist::Communicator& comm, AdaptResult<M>& r, const Shared
   std::map<std::vector<int>, std::array<std::vector<std::pair<NodeId, Vec3>>, 2>> take;
   std::map<std::vector<int>, std::vector<std::pair<NodeId, Vec3>>> own;
   for (NodeId v : id_range<NodeId>(r.mesh.n_nodes())) {
-    const std::vector<int>& ranks = shared.ranks[v.idx()];
-    if (ranks.empty()) continue;
-    std::vector<int> group = ranks;
-    group.insert(std::lower_bound(group.begin(), group.end(), me), me);
+    if (shared.ranks[v.idx()].empty()) continue;
+    const std::vector<int> group = shared.holders(v, me);
     own[group].emplace_back(v, r.mesh.point(v));
     auto& mine = take[group];
     for (const int q : {group.front(), group.back()}) {
       if (q == me) continue;
-      const auto k =
-          static_cast<std::size_t>(std::lower_bound(peers.begin(), peers.end(), q) - peers.begin());
+      const std::size_t k = shared.peer_slot(q);
       const auto at = points[k].find(shared.key[v.idx()]);
       if (at == points[k].end())
         named = false;
@@ -203,7 +197,6 @@ std::vector<std::pair<index_t, index_t>> nodes_counted_above(const dist::Communi
     if (shared.counts(NodeId(static_cast<index_t>(v)), me)) kept_id[v] = kept++;
   const std::vector<std::int64_t> counts =
       dist::all_gather_values(comm, std::vector<std::int64_t>{kept});
-  const std::vector<int>& peers = shared.peers;
   const auto ids = swapped(
       comm, shared, [&](dist::Buffer& b, NodeId v) { b.put(kept_id[v.idx()]); },
       [](dist::Buffer& b) { return b.get<index_t>(); });
@@ -211,8 +204,7 @@ std::vector<std::pair<index_t, index_t>> nodes_counted_above(const dist::Communi
   for (std::size_t v = 0; v < shared.ranks.size(); ++v) {
     if (kept_id[v] >= 0) continue;
     const int q = shared.ranks[v].back();
-    const auto k =
-        static_cast<std::size_t>(std::lower_bound(peers.begin(), peers.end(), q) - peers.begin());
+    const std::size_t k = shared.peer_slot(q);
     const auto at = ids[k].find(shared.key[v]);
     if (at == ids[k].end() || at->second < 0)
       throw InternalError("a shared node is not counted by the highest rank holding it");

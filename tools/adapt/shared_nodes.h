@@ -8,6 +8,7 @@
 // mesh once.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -33,7 +34,21 @@ struct SharedNodes {
     const std::vector<int>& r = ranks[v.idx()];
     return r.empty() || r.back() < rank;
   }
+  /// Every rank holding node v, this one (`rank`) included, increasing: its group.
+  std::vector<int> holders(NodeId v, int rank) const {
+    std::vector<int> h = ranks[v.idx()];
+    h.insert(std::lower_bound(h.begin(), h.end(), rank), rank);
+    return h;
+  }
+  /// The index of rank q in `peers`.
+  std::size_t peer_slot(int q) const {
+    return static_cast<std::size_t>(std::lower_bound(peers.begin(), peers.end(), q) -
+                                    peers.begin());
+  }
 };
+
+/// True on every rank when `mine` is true on every rank. Every rank calls it.
+bool all_true(const dist::Communicator& comm, bool mine);
 
 /// Takes every shared node of `r` to one point on every rank holding it. Each rank smoothed the
 /// copies among the cells it read, whose ghost cells differ from rank to rank: where the
