@@ -20,8 +20,8 @@ void check_variable_size(const ExodusFile& f, const std::string& name, std::size
 
 /// Reads integer variable `name` into `values`, which must be its size (check_variable_size)
 /// straight from netCDF: by its name, not through the Exodus library's lookup of a block's
-/// id, whose cache of ids outlives a file (a stale cache sent a block's read to another,
-/// larger variable, past the buffer). Throws InputError.
+/// id (the fuzzer once saw the heap past a connectivity buffer read that way overwritten;
+/// a cache of ids outliving a file is the suspected cause, not confirmed). Throws InputError.
 void read_int_variable(const ExodusFile& f, const std::string& name, std::vector<int>& values);
 
 /// Throws InputError unless every dimension of variable `name` after the first is at most
