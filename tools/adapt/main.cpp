@@ -282,6 +282,14 @@ Json report_start(const CLI::App& app, const Args& args, const cli::CommonOption
   return report;
 }
 
+// The metadata of `data` (its record of how it was read); its cells and arrays released.
+io::MeshData metadata_only(io::MeshData& data) {
+  io::MeshData out;
+  out.metadata = std::move(data.metadata);
+  data = io::MeshData();
+  return out;
+}
+
 int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& common) {
   cli::check_files({{"input", args.input}, {"--model", args.model}},
                    {{"-o", common.output, true, true}, {"--json", common.json}});
@@ -298,6 +306,7 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
                     common.memory_limit());
   const AssignedGrid grid =
       io::to_assigned_grid(in, args.in.grid(io::MaterialSource::array), args.input);
+  const io::MeshData input = metadata_only(in);
   reconstruct::ModelFile model;
   if (!args.model.empty()) model = read_model(args.model, grid.fractions);
   times.emplace_back("read", clock.seconds());
@@ -327,7 +336,7 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
     return refuse_bad_input(common, report, times, bad_input,
                             failures_text(worst, options.threshold), options.threshold);
   for (auto& kv : cli::provenance(app)) out.metadata.push_back(kv);
-  cli::pass_input_record(in, out);
+  cli::pass_input_record(input, out);
   io::write_mesh(out, common.output, common.write_options());
   times.emplace_back("write", clock.seconds());
   report["threshold_met"] = below == 0;
@@ -379,8 +388,7 @@ HeldPart held_part(cli::RankInput& in, const Args& args) {
   HeldPart s;
   s.read = io::to_assigned_grid(in.data, args.in.grid(io::MaterialSource::array), args.input);
   s.names = s.read.names();
-  s.input.metadata = std::move(in.data.metadata);
-  in.data = io::MeshData();
+  s.input = metadata_only(in.data);
   return s;
 }
 

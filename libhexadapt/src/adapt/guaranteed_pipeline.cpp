@@ -30,6 +30,7 @@ namespace {
 template <class M>
 std::vector<Vec3> points_of(const M& mesh) {
   std::vector<Vec3> p;
+  p.reserve(static_cast<std::size_t>(mesh.n_nodes()));
   for (NodeId v : id_range<NodeId>(mesh.n_nodes())) p.push_back(mesh.point(v));
   return p;
 }
@@ -59,6 +60,10 @@ IdVector<Id, Id> composed(const IdVector<Id, Id>& origin, const IdVector<Id, Id>
 // Nodes appended by a pillowing get no target.
 template <class M>
 void extend_targets(const M& mesh, Targets& targets) {
+  const auto n = static_cast<std::size_t>(mesh.n_nodes());
+  targets.has.reserve(n);
+  targets.position.reserve(n);
+  targets.interface.reserve(n);
   for (NodeId v : id_range<NodeId>(mesh.n_nodes())) {
     if (v.idx() < targets.has.size()) continue;
     targets.has.push_back(0);
@@ -580,7 +585,7 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
   if (options.progress) options.progress("check", 0.0);
   AdaptResult<M> r;
   Timer clock;
-  M mesh = grid;
+  const M& mesh = grid;
   SizeCriterion size = size_criterion(grid, options.min_edge);
   r.input_min_quality = min_quality(grid);
   for (const CellFailure& f : failing_cells(grid, options.threshold, size))
@@ -594,7 +599,7 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
     r.stopped_bad_input = true;
     for (CellId c : id_range<CellId>(mesh.n_cells())) r.cell_origin.push_back(c);
     for (NodeId v : id_range<NodeId>(mesh.n_nodes())) r.node_origin.push_back(v);
-    r.mesh = std::move(mesh);
+    r.mesh = grid;
     r.material = material;
     finish_result(r, IdVector<NodeId, Vec3>(nn, Vec3::Zero()), IdVector<NodeId, char>(nn, 0), size,
                   nullptr, options);

@@ -1,5 +1,6 @@
 #include "hexadapt/adapt/node_constraint.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -14,6 +15,18 @@ namespace {
 constexpr double span_tolerance = 0.05;
 }  // namespace
 
+NodeConstraint::NodeConstraint(const NodeConstraint& other)
+    : normals_(other.normals_ ? std::make_unique<Vec3[]>(3) : nullptr),
+      n_(other.n_),
+      frozen_(other.frozen_) {
+  if (normals_) std::copy(other.normals_.get(), other.normals_.get() + n_, normals_.get());
+}
+
+NodeConstraint& NodeConstraint::operator=(const NodeConstraint& other) {
+  if (this != &other) *this = NodeConstraint(other);
+  return *this;
+}
+
 void NodeConstraint::add(const Vec3& direction) {
   if (n_ >= 3) return;
   Vec3 d = direction;
@@ -23,6 +36,7 @@ void NodeConstraint::add(const Vec3& direction) {
   for (int k = 0; k < n_; ++k) d -= d.dot(normal(k)) * normal(k);
   const double len = d.norm();
   if (len < span_tolerance) return;
+  if (!normals_) normals_ = std::make_unique<Vec3[]>(3);
   normals_[static_cast<std::size_t>(n_++)] = d / len;
 }
 

@@ -105,48 +105,68 @@ PillowResult<M> pillow_cells(const M& mesh, const IdVector<CellId, char>& in_set
     }
   }
 
-  std::vector<Vec3> points(mesh.n_nodes());
-  std::vector<typename M::CellNodes> cells(static_cast<std::size_t>(mesh.n_cells()));
-  for (NodeId v : id_range<NodeId>(mesh.n_nodes())) points[v.idx()] = mesh.point(v);
-  for (CellId c : id_range<CellId>(mesh.n_cells())) cells[c.idx()] = mesh.cell_nodes(c);
-  PillowResult<M> out;
-  out.node_origin = IdVector<NodeId, NodeId>(std::vector<NodeId>());
-  for (NodeId v : id_range<NodeId>(mesh.n_nodes())) out.node_origin.push_back(v);
-
   // Fans of the set's cells around every split node, and the inward normal of each fan's
   // pillowed faces: the copy leaves its original across the interface, never along it.
-  const auto nn = static_cast<std::size_t>(mesh.n_nodes());
-  IdVector<NodeId, std::vector<CellId>> around(nn);
-  IdVector<NodeId, std::vector<int>> fan(nn);
-  IdVector<NodeId, std::vector<Vec3>> inward(nn);
+  // Kept for the split nodes only, in node order (`place`), so that a grid with a thin
+  // interface pays a few bytes per node.
+  struct Fans {
+    std::vector<CellId> around;
+    std::vector<int> fan;
+    std::vector<Vec3> inward;
+  };
+  std::vector<Fans> fans;
+  std::vector<NodeId> split_nodes;
+  IdVector<NodeId, index_t> place(split.size(), -1);
+  std::size_t n_copies = 0;
   for (NodeId n : id_range<NodeId>(mesh.n_nodes())) {
     if (!split[n]) continue;
+    place[n] = static_cast<index_t>(split_nodes.size());
+    split_nodes.push_back(n);
+    Fans& f = fans.emplace_back();
     for (CellId c : mesh.node_cells(n))
-      if (in_set[c]) around[n].push_back(c);
-    fan[n] = fans_around(mesh, n, around[n]);
+      if (in_set[c]) f.around.push_back(c);
+    f.fan = fans_around(mesh, n, f.around);
     int n_fans = 0;
-    for (int f : fan[n]) n_fans = std::max(n_fans, f + 1);
-    inward[n].assign(static_cast<std::size_t>(n_fans), Vec3::Zero());
+    for (int k : f.fan) n_fans = std::max(n_fans, k + 1);
+    f.inward.assign(static_cast<std::size_t>(n_fans), Vec3::Zero());
+    n_copies += f.inward.size();
   }
   for (const auto& [c, lf] : faces) {
     const Vec3 normal = face_normal(mesh, c, lf);
     for (NodeId v : mesh.face_nodes(c, lf)) {
-      const auto k = static_cast<std::size_t>(std::find(around[v].begin(), around[v].end(), c) -
-                                              around[v].begin());
-      inward[v][static_cast<std::size_t>(fan[v][k])] -= normal;
+      Fans& f = fans[static_cast<std::size_t>(place[v])];
+      const auto k = static_cast<std::size_t>(std::find(f.around.begin(), f.around.end(), c) -
+                                              f.around.begin());
+      f.inward[static_cast<std::size_t>(f.fan[k])] -= normal;
     }
   }
-  for (NodeId n : id_range<NodeId>(mesh.n_nodes())) {
-    if (!split[n]) continue;
+
+  // Every array at its final size from the start: a grid-sized array grown by doubling
+  // would hold up to three times its size while it grows.
+  const auto nn = static_cast<std::size_t>(mesh.n_nodes());
+  const auto nc = static_cast<std::size_t>(mesh.n_cells());
+  std::vector<Vec3> points;
+  points.reserve(nn + n_copies);
+  for (NodeId v : id_range<NodeId>(mesh.n_nodes())) points.push_back(mesh.point(v));
+  std::vector<typename M::CellNodes> cells;
+  cells.reserve(nc + faces.size());
+  for (CellId c : id_range<CellId>(mesh.n_cells())) cells.push_back(mesh.cell_nodes(c));
+  PillowResult<M> out;
+  std::vector<NodeId> node_origin;
+  node_origin.reserve(nn + n_copies);
+  for (NodeId v : id_range<NodeId>(mesh.n_nodes())) node_origin.push_back(v);
+  for (std::size_t s = 0; s < split_nodes.size(); ++s) {
+    const NodeId n = split_nodes[s];
+    const Fans& fs = fans[s];
     const Vec3 p = mesh.point(n);
-    for (std::size_t f = 0; f < inward[n].size(); ++f) {
+    for (std::size_t f = 0; f < fs.inward.size(); ++f) {
       const NodeId copy(static_cast<index_t>(points.size()));
       Vec3 centre = Vec3::Zero();
       double reach = 0, floor = 0;
       int count = 0;
-      for (std::size_t k = 0; k < around[n].size(); ++k) {
-        if (static_cast<std::size_t>(fan[n][k]) != f) continue;
-        const CellId c = around[n][k];
+      for (std::size_t k = 0; k < fs.around.size(); ++k) {
+        if (static_cast<std::size_t>(fs.fan[k]) != f) continue;
+        const CellId c = fs.around[k];
         const Vec3 x = cell_centroid(mesh, c);
         centre += x;
         reach += (x - p).norm();
@@ -156,14 +176,16 @@ PillowResult<M> pillow_cells(const M& mesh, const IdVector<CellId, char>& in_set
       }
       centre /= count;
       reach /= count;
-      const Vec3 d = copy_offset(boundary[n], inward[n][f], centre - p, reach);
+      const Vec3 d = copy_offset(boundary[n], fs.inward[f], centre - p, reach);
       points.push_back(p + copy_fraction(options, d.norm(), floor / count) * d);
-      out.node_origin.push_back(n);
+      node_origin.push_back(n);
     }
   }
+  out.node_origin = IdVector<NodeId, NodeId>(std::move(node_origin));
 
-  std::vector<CellId> origin(static_cast<std::size_t>(mesh.n_cells()));
-  for (CellId c : id_range<CellId>(mesh.n_cells())) origin[c.idx()] = c;
+  std::vector<CellId> origin;
+  origin.reserve(nc + faces.size());
+  for (CellId c : id_range<CellId>(mesh.n_cells())) origin.push_back(c);
   for (const auto& [c, lf] : faces) {
     const auto f = mesh.face_nodes(c, lf);
     auto g = f;

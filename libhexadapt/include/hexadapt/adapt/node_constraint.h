@@ -9,15 +9,25 @@
 // (paper sec. 5, DESIGN 4.3: "domain-boundary nodes stay on the boundary").
 #pragma once
 
-#include <array>
+#include <cstdint>
+#include <memory>
 
 #include "hexadapt/core/ids.h"
 #include "hexadapt/mesh/cell_complex.h"
 
 namespace hexadapt {
 
+/// Sixteen bytes for a free node: the normals live apart, allocated with the first one (most
+/// nodes of a grid are free, and a pipeline holds several constraints per node).
 class NodeConstraint {
  public:
+  NodeConstraint() = default;
+  NodeConstraint(const NodeConstraint& other);
+  NodeConstraint& operator=(const NodeConstraint& other);
+  NodeConstraint(NodeConstraint&&) noexcept = default;
+  NodeConstraint& operator=(NodeConstraint&&) noexcept = default;
+  ~NodeConstraint() = default;
+
   int n_normals() const { return n_; }
   const Vec3& normal(int k) const { return normals_[static_cast<std::size_t>(k)]; }
   /// True when every displacement is forbidden in a `dim`-dimensional mesh.
@@ -39,8 +49,8 @@ class NodeConstraint {
   Vec3 project(const Vec3& displacement) const;
 
  private:
-  std::array<Vec3, 3> normals_;
-  int n_ = 0;
+  std::unique_ptr<Vec3[]> normals_;  // three places once a normal is added
+  std::int8_t n_ = 0;
   bool frozen_ = false;
 };
 
