@@ -3,13 +3,17 @@
 // material per cell refuse a grid without one.
 #include <gtest/gtest.h>
 
+#include <string>
+#include <utility>
 #include <variant>
+#include <vector>
 
 #include "hexadapt/adapt/adapt.h"
 #include "hexadapt/assign/assign.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/generate/generate.h"
 #include "hexadapt/io/assigned_grid_file.h"
+#include "hexadapt/mesh/unit_frame.h"
 #include "hexadapt/reconstruct/reconstruct.h"
 
 namespace hexadapt {
@@ -69,6 +73,37 @@ void check_stages(AssignedGrid grid) {
 TEST(StagesOnAnAssignedGrid, GiveWhatTheTypedCallsGive) {
   check_stages(generated_grid("venn", {16, 16}));
   check_stages(generated_grid("sphere", {8, 8, 8}));
+}
+
+// A grid given up to adapt (its points moved into the pipeline's frame in place) gives what
+// the same grid lent gives, on grids whose frame is not the identity.
+TEST(StagesOnAnAssignedGrid, AGridGivenUpAdaptsAsALentOne) {
+  for (const auto& [name, dims] :
+       {std::pair<std::string, std::vector<int>>{"venn", {16, 16}}, {"sphere", {8, 8, 8}}}) {
+    AssignedGrid grid = generated_grid(name, dims);
+    grid.material = assign::assign_materials(grid, {}).correction.labels;
+    std::visit(
+        [](auto& m) {  // in millimetres, far from the origin
+          for (NodeId v : id_range<NodeId>(m.n_nodes()))
+            m.set_point(v, 1e-3 * m.point(v) + Vec3(5, -3, 0));
+          EXPECT_FALSE(unit_frame(m).is_identity());
+        },
+        grid.mesh);
+    const AnyAdaptResult lent = adapt(grid);
+    AssignedGrid copy = grid;
+    const AnyAdaptResult given = adapt(std::move(copy));
+    std::visit(
+        [&](const auto& a) {
+          using R = std::decay_t<decltype(a)>;
+          ASSERT_TRUE(std::holds_alternative<R>(given));
+          const R& b = std::get<R>(given);
+          expect_same_mesh(a.mesh, b.mesh);
+          EXPECT_EQ(a.material.raw(), b.material.raw());
+          EXPECT_EQ(a.n_near_interface, b.n_near_interface);
+          EXPECT_EQ(a.target.raw(), b.target.raw());
+        },
+        lent);
+  }
 }
 
 TEST(StagesOnAnAssignedGrid, ThoseThatNeedAMaterialRefuseAGridWithoutOne) {

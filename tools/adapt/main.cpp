@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <memory>
 #include <string>
 #include <tuple>
 #include <variant>
@@ -304,7 +305,7 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   cli::check_memory("adapting " + std::to_string(in.n_cells()) + " cells",
                     static_cast<double>(in.n_cells()) * cli::adapt_bytes_per_cell,
                     common.memory_limit());
-  const AssignedGrid grid =
+  AssignedGrid grid =
       io::to_assigned_grid(in, args.in.grid(io::MaterialSource::array), args.input);
   const io::MeshData input = metadata_only(in);
   reconstruct::ModelFile model;
@@ -312,7 +313,9 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
   times.emplace_back("read", clock.seconds());
   clock.restart();
 
-  Json report = report_start(app, args, common, options, grid.names());
+  const std::vector<std::string> names = grid.names();
+  const index_t n_cells = grid.fractions.n_cells();
+  Json report = report_start(app, args, common, options, names);
   io::MeshData out;
   index_t below = 0;
   std::vector<std::int64_t> bad_input;
@@ -324,13 +327,13 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
         worst = r.failures;
         stopped = r.stopped_bad_input;
         for (const auto& s : r.steps) times.emplace_back(s.name, s.seconds);
-        report["result"] = result_json(r, grid.fractions.n_cells(), options.threshold);
+        report["result"] = result_json(r, n_cells, options.threshold);
         below = r.n_below_threshold + r.n_below_min_edge;
         log_steps(r, options.near_interface);
         if (!r.stopped_bad_input) warn_blocked(r, options.near_interface);
-        out = adapt_mesh_data(r, grid.names());
+        out = adapt_mesh_data(r, names);
       },
-      adapt(grid, options, args.model.empty() ? nullptr : &model.model));
+      adapt(std::move(grid), options, args.model.empty() ? nullptr : &model.model));
   clock.restart();
   if (stopped)
     return refuse_bad_input(common, report, times, bad_input,
@@ -509,41 +512,50 @@ std::vector<CellId> received_cells(const dist::Communicator& comm, const std::ve
 // own cells); the shares of the automatic choice are summed. Every rank calls it.
 RankDecisions rank_decisions(const dist::Communicator& comm, const HeldPart& s,
                              const dist::Block& block) {
-  std::vector<std::int64_t> own, ghosts;
-  for (CellId c : id_range<CellId>(static_cast<index_t>(s.cell_owner.size())))
-    (s.cell_owner[c.idx()] == comm.rank() ? own : ghosts).push_back(block.global(c));
-  std::sort(ghosts.begin(), ghosts.end());  // a slab's are in order already, a list's too
-  const std::vector<std::vector<int>> holders = dist::other_holders(comm, own, ghosts);
-  std::vector<int> peers;
-  for (const std::vector<int>& h : holders) peers.insert(peers.end(), h.begin(), h.end());
-  for (int q : s.cell_owner)
-    if (q != comm.rank()) peers.push_back(q);
-  std::sort(peers.begin(), peers.end());
-  peers.erase(std::unique(peers.begin(), peers.end()), peers.end());
-  const auto slot = [peers](int q) {
-    return static_cast<std::size_t>(std::lower_bound(peers.begin(), peers.end(), q) -
-                                    peers.begin());
+  // Shared by the copies of the options the pipeline makes: the rank's own cells (global
+  // ids, increasing), the other ranks holding each, and every rank it exchanges cells with.
+  struct Holders {
+    std::vector<std::int64_t> own;
+    std::vector<std::vector<int>> of_own;
+    std::vector<int> peers;
+    std::size_t slot(int q) const {
+      return static_cast<std::size_t>(std::lower_bound(peers.begin(), peers.end(), q) -
+                                      peers.begin());
+    }
   };
+  const auto held = std::make_shared<Holders>();
+  std::vector<std::int64_t> ghosts;
+  for (CellId c : id_range<CellId>(static_cast<index_t>(s.cell_owner.size())))
+    (s.cell_owner[c.idx()] == comm.rank() ? held->own : ghosts).push_back(block.global(c));
+  std::sort(ghosts.begin(), ghosts.end());  // a slab's are in order already, a list's too
+  held->of_own = dist::other_holders(comm, held->own, ghosts);
+  for (const std::vector<int>& q : held->of_own)
+    held->peers.insert(held->peers.end(), q.begin(), q.end());
+  for (int q : s.cell_owner)
+    if (q != comm.rank()) held->peers.push_back(q);
+  std::sort(held->peers.begin(), held->peers.end());
+  held->peers.erase(std::unique(held->peers.begin(), held->peers.end()), held->peers.end());
   RankDecisions d;
-  d.left_out = [&comm, &s, &block, own, holders, peers, slot](std::vector<CellId>& cells) {
+  d.left_out = [&comm, &s, &block, held](std::vector<CellId>& cells) {
+    const Holders& h = *held;
     const bool mine = !cells.empty();
-    std::vector<std::vector<std::int64_t>> to(peers.size());
+    std::vector<std::vector<std::int64_t>> to(h.peers.size());
     for (CellId c : cells)
       if (s.cell_owner[c.idx()] != comm.rank())
-        to[slot(s.cell_owner[c.idx()])].push_back(block.global(c));
-    std::vector<CellId> failing = received_cells(comm, peers, std::move(to), block);
+        to[h.slot(s.cell_owner[c.idx()])].push_back(block.global(c));
+    std::vector<CellId> failing = received_cells(comm, h.peers, std::move(to), block);
     for (CellId c : cells)
       if (s.cell_owner[c.idx()] == comm.rank()) failing.push_back(c);
     std::sort(failing.begin(), failing.end());
     failing.erase(std::unique(failing.begin(), failing.end()), failing.end());
-    to.assign(peers.size(), {});
+    to.assign(h.peers.size(), {});
     for (CellId c : failing) {
       const std::int64_t g = block.global(c);
-      const auto at = std::lower_bound(own.begin(), own.end(), g) - own.begin();
-      for (int q : holders[static_cast<std::size_t>(at)]) to[slot(q)].push_back(g);
+      const auto at = std::lower_bound(h.own.begin(), h.own.end(), g) - h.own.begin();
+      for (int q : h.of_own[static_cast<std::size_t>(at)]) to[h.slot(q)].push_back(g);
     }
     for (std::vector<std::int64_t>& ids : to) std::sort(ids.begin(), ids.end());
-    std::vector<CellId> back = received_cells(comm, peers, std::move(to), block);
+    std::vector<CellId> back = received_cells(comm, h.peers, std::move(to), block);
     cells.insert(cells.end(), failing.begin(), failing.end());
     cells.insert(cells.end(), back.begin(), back.end());
     std::sort(cells.begin(), cells.end());

@@ -124,31 +124,32 @@ void result_to_world(AdaptResult<M>& r, const UnitFrame& f) {
 template <class M>
 AdaptResult<M> run_pipeline(const M& grid, const Fractions& fractions,
                             const CellMaterials& material, const AdaptOptions& options,
-                            const reconstruct::InterfaceModel* model, const Targets* targets) {
+                            const reconstruct::InterfaceModel* model,
+                            std::optional<Targets> targets) {
   switch (options.method) {
     case AdaptMethod::base:
       return detail::run_base_pipeline(grid, fractions, material, options);
     case AdaptMethod::guaranteed:
-      return detail::run_guaranteed_pipeline(grid, fractions, material, options, model, targets);
+      return detail::run_guaranteed_pipeline(grid, fractions, material, options, model,
+                                             std::move(targets));
   }
   throw InternalError("unhandled adaptation method");
 }
 
-}  // namespace
-
+// adapt() on `local`, the grid in `frame` (mesh/unit_frame.h): the pipeline runs there, its
+// result goes back to the grid's frame.
 template <class M>
-AdaptResult<M> adapt(const M& grid, const Fractions& fractions, const CellMaterials& material,
-                     const AdaptOptions& options, const reconstruct::InterfaceModel* model,
-                     const Targets* targets) {
+AdaptResult<M> adapt_in_frame(const M& local, const UnitFrame& frame, const Fractions& fractions,
+                              const CellMaterials& material, const AdaptOptions& options,
+                              const reconstruct::InterfaceModel* model, const Targets* targets) {
   check_options(options);
   check_model(model, M::dim, fractions.n_materials());
   const std::size_t frozen = options.boundary.frozen.size();
-  if (frozen != 0 && frozen != static_cast<std::size_t>(grid.n_nodes()))
+  if (frozen != 0 && frozen != static_cast<std::size_t>(local.n_nodes()))
     throw OptionError("the frozen-node mask (BoundaryOptions::frozen) has " +
                       std::to_string(frozen) + " flags for a grid of " +
-                      std::to_string(grid.n_nodes()) + " nodes");
-  check_targets(targets, grid.n_nodes(), options.method);
-  const UnitFrame frame = unit_frame(grid);
+                      std::to_string(local.n_nodes()) + " nodes");
+  check_targets(targets, local.n_nodes(), options.method);
   std::optional<reconstruct::InterfaceModel> local_model;
   if (model) {
     local_model = *model;
@@ -160,11 +161,22 @@ AdaptResult<M> adapt(const M& grid, const Fractions& fractions, const CellMateri
     for (Vec3& p : local_targets->position.raw()) p = frame.to_local(p);
     for (InterfaceFace& f : local_targets->faces) f.point = frame.to_local(f.point);
   }
-  AdaptResult<M> r = run_pipeline(to_local(grid, frame), fractions, material, options,
-                                  local_model ? &*local_model : nullptr,
-                                  local_targets ? &*local_targets : nullptr);
+  AdaptResult<M> r = run_pipeline(local, fractions, material, options,
+                                  local_model ? &*local_model : nullptr, std::move(local_targets));
   result_to_world(r, frame);
   return r;
+}
+
+}  // namespace
+
+template <class M>
+AdaptResult<M> adapt(const M& grid, const Fractions& fractions, const CellMaterials& material,
+                     const AdaptOptions& options, const reconstruct::InterfaceModel* model,
+                     const Targets* targets) {
+  const UnitFrame frame = unit_frame(grid);
+  if (frame.is_identity())
+    return adapt_in_frame(grid, frame, fractions, material, options, model, targets);
+  return adapt_in_frame(to_local(grid, frame), frame, fractions, material, options, model, targets);
 }
 
 template AdaptResult<QuadMesh> adapt<QuadMesh>(const QuadMesh&, const Fractions&,
@@ -180,6 +192,18 @@ AnyAdaptResult adapt(const AssignedGrid& grid, const AdaptOptions& options,
   return std::visit(
       [&](const auto& m) -> AnyAdaptResult {
         return adapt(m, grid.fractions, grid.material, options, model, targets);
+      },
+      grid.mesh);
+}
+
+AnyAdaptResult adapt(AssignedGrid&& grid, const AdaptOptions& options,
+                     const reconstruct::InterfaceModel* model, const Targets* targets) {
+  grid.require_assigned("adapt");
+  return std::visit(
+      [&](auto& m) -> AnyAdaptResult {
+        const UnitFrame frame = unit_frame(m);
+        for (NodeId v : id_range<NodeId>(m.n_nodes())) m.set_point(v, frame.to_local(m.point(v)));
+        return adapt_in_frame(m, frame, grid.fractions, grid.material, options, model, targets);
       },
       grid.mesh);
 }

@@ -250,19 +250,18 @@ template <class M>
 FirstMove<M> first_move(const M& mesh, const CellMaterials& material, const Targets& targets,
                         const SizeCriterion& size, bool pillow_first, int n_materials,
                         const AdaptOptions& options, const std::vector<CellId>* mend) {
-  FirstMove<M> f{mesh, material, targets, size, {}, {}, {}, {}, options.boundary, 0, 0, 0, 0};
+  // The input is pillowed as it is: a copy of it would be held beside the pillowed mesh.
+  FirstMove<M> f{M(), {}, targets, size, {}, {}, {}, {}, options.boundary, 0, 0, 0, 0};
   if (options.progress) options.progress("pillow", 0.0);
-  for (CellId c : id_range<CellId>(mesh.n_cells())) f.cell_origin.push_back(c);
-  for (NodeId v : id_range<NodeId>(mesh.n_nodes())) f.node_origin.push_back(v);
   Timer clock;
   if (pillow_first && options.interface_pillow.rounds > 0) {
     InterfacePillowOptions io = options.interface_pillow;
     io.keep_failing = mend != nullptr;
     InterfacePillowResult<M> p =
-        pillow_interfaces(f.mesh, f.material, n_materials, f.targets.has, f.size, io, options,
+        pillow_interfaces(mesh, material, n_materials, targets.has, size, io, options,
                           mend ? *mend : std::vector<CellId>{});
     f.pillows = std::move(p.attempts);
-    f.layer_cells = p.mesh.n_cells() - f.mesh.n_cells();
+    f.layer_cells = p.mesh.n_cells() - mesh.n_cells();
     f.size = f.size.remapped(p.cell_origin.raw());
     f.cell_origin = std::move(p.cell_origin);
     f.node_origin = std::move(p.node_origin);
@@ -270,6 +269,11 @@ FirstMove<M> first_move(const M& mesh, const CellMaterials& material, const Targ
     f.material = std::move(p.material);
     extend_targets(f.mesh, f.targets);
     f.boundary = options.boundary.on_copies(f.node_origin);
+  } else {
+    f.mesh = mesh;
+    f.material = material;
+    for (CellId c : id_range<CellId>(mesh.n_cells())) f.cell_origin.push_back(c);
+    for (NodeId v : id_range<NodeId>(mesh.n_nodes())) f.node_origin.push_back(v);
   }
   f.pillow_seconds = clock.seconds();
   if (options.progress) options.progress("move", 0.2);
@@ -516,35 +520,50 @@ AdaptResult<M> first_layer(const M& grid, const CellMaterials& material, const T
   return finish(std::move(r));
 }
 
-// The targets computed without the freeze (frozen nodes counted at them in each material's
-// volume), and the same with every frozen node on itself, so that no step moves it: where
-// the frozen nodes would go, or none when nothing is frozen.
+// The frozen interface nodes' targets as computed without the freeze (frozen nodes counted
+// at them in each material's volume), in node order.
+struct FrozenAims {
+  std::vector<NodeId> nodes;
+  std::vector<Vec3> position;
+  std::vector<NodeConstraint> interface;
+};
+
+// Puts every frozen node's target on the node itself, so that no step moves it; returns
+// where the frozen interface nodes would go, or none when nothing is frozen.
 template <class M>
-std::optional<Targets> hold_frozen(const M& grid, Targets& targets, const AdaptOptions& options) {
+std::optional<FrozenAims> hold_frozen(const M& grid, Targets& targets,
+                                      const AdaptOptions& options) {
   if (options.boundary.frozen.empty()) return std::nullopt;
-  std::optional<Targets> aims = targets;
-  for (NodeId v : id_range<NodeId>(grid.n_nodes()))
-    if (options.boundary.is_frozen(v)) targets.position[v] = grid.point(v);
+  FrozenAims aims;
+  for (NodeId v : id_range<NodeId>(grid.n_nodes())) {
+    if (!options.boundary.is_frozen(v)) continue;
+    if (targets.has[v]) {
+      aims.nodes.push_back(v);
+      aims.position.push_back(targets.position[v]);
+      aims.interface.push_back(targets.interface[v]);
+    }
+    targets.position[v] = grid.point(v);
+  }
   return aims;
 }
 
 // Counts the frozen nodes against their aims: a frozen interface node off its interface is
 // blocked (BlockReason::frozen) and its distances are the ones it would have had to go.
 template <class M>
-void account_frozen(AdaptResult<M>& r, const M& grid, const Targets& aims,
+void account_frozen(AdaptResult<M>& r, const M& grid, const FrozenAims& aims,
                     const AdaptOptions& options) {
   const auto free_boundary = boundary_constraints(grid, options.boundary.without_frozen());
   SizeCriterion size;
   size.local_size = std::move(r.local_size);
-  for (NodeId v : id_range<NodeId>(grid.n_nodes())) {
-    if (!options.boundary.is_frozen(v) || !aims.has[v]) continue;
+  for (std::size_t k = 0; k < aims.nodes.size(); ++k) {
     // A grid node no step moved: its target in the run was its own position.
+    const NodeId v = aims.nodes[k];
     const Vec3 p = r.mesh.point(v);
     NodeConstraint surface = free_boundary[v];
-    surface.add(aims.interface[v]);
-    const double d = (p - aims.position[v]).norm();
-    const double sd = surface_distance(p, aims.position[v], surface);
-    r.target[v] = aims.position[v];
+    surface.add(aims.interface[k]);
+    const double d = (p - aims.position[k]).norm();
+    const double sd = surface_distance(p, aims.position[k], surface);
+    r.target[v] = aims.position[k];
     r.distance[v] = d;
     r.surface_distance[v] = sd;
     r.dist_init += d;
@@ -580,7 +599,7 @@ template <class M>
 AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions,
                                        const CellMaterials& material, const AdaptOptions& given,
                                        const reconstruct::InterfaceModel* model,
-                                       const Targets* given_targets) {
+                                       std::optional<Targets> given_targets) {
   const AdaptOptions options = with_shared_settings(given);
   if (options.progress) options.progress("check", 0.0);
   AdaptResult<M> r;
@@ -611,7 +630,7 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
   const auto grid_boundary = boundary_constraints(mesh, options.boundary);
   Targets targets =
       given_targets
-          ? *given_targets
+          ? std::move(*given_targets)
           : compute_targets(mesh, fractions, material,
                             options.boundary.frozen.empty()
                                 ? grid_boundary
@@ -620,7 +639,7 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
   if (given_targets)
     targets.n_interface_nodes =
         static_cast<index_t>(std::count(targets.has.begin(), targets.has.end(), 1));
-  const std::optional<Targets> aims = hold_frozen(mesh, targets, options);
+  const std::optional<FrozenAims> aims = hold_frozen(mesh, targets, options);
   r.n_interface_nodes = targets.n_interface_nodes;
   record_step(r, mesh, "targets", clock, options.progress, 0.1, "layers");
   correct(mesh, material, grid_boundary, targets, model, r, clock, options);
@@ -680,12 +699,12 @@ template AdaptResult<QuadMesh> run_guaranteed_pipeline<QuadMesh>(const QuadMesh&
                                                                  const IdVector<CellId, int>&,
                                                                  const AdaptOptions&,
                                                                  const reconstruct::InterfaceModel*,
-                                                                 const Targets*);
+                                                                 std::optional<Targets>);
 template AdaptResult<HexMesh> run_guaranteed_pipeline<HexMesh>(const HexMesh&, const Fractions&,
                                                                const IdVector<CellId, int>&,
                                                                const AdaptOptions&,
                                                                const reconstruct::InterfaceModel*,
-                                                               const Targets*);
+                                                               std::optional<Targets>);
 
 }  // namespace hexadapt::detail
 

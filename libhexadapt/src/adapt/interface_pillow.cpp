@@ -216,7 +216,10 @@ InterfacePillowResult<M> pillow_interfaces(const M& mesh, const CellMaterials& m
   if (material.size() != static_cast<std::size_t>(mesh.n_cells()) ||
       fixed.size() != static_cast<std::size_t>(mesh.n_nodes()))
     throw InternalError("interface pillow: materials or fixed flags do not match the mesh");
-  InterfacePillowResult<M> r{mesh, material, {}, {}, 0, {}};
+  // r.mesh holds the last layer kept; the input stands for it until then (a copy of it would
+  // be held beside the first layer's mesh).
+  InterfacePillowResult<M> r{M(), material, {}, {}, 0, {}};
+  bool any_kept = false;
   for (CellId c : id_range<CellId>(mesh.n_cells())) r.cell_origin.push_back(c);
   for (NodeId v : id_range<NodeId>(mesh.n_nodes())) r.node_origin.push_back(v);
   IdVector<NodeId, char> still(fixed);
@@ -226,8 +229,9 @@ InterfacePillowResult<M> pillow_interfaces(const M& mesh, const CellMaterials& m
   for (int m = 0; m < n_materials; ++m) {
     InterfacePillowAttempt log;
     log.material = m;
-    IdVector<CellId, char> set(static_cast<std::size_t>(r.mesh.n_cells()), 0);
-    for (CellId c : id_range<CellId>(r.mesh.n_cells())) set[c] = r.material[c] == m;
+    const M& before = any_kept ? r.mesh : mesh;
+    IdVector<CellId, char> set(static_cast<std::size_t>(before.n_cells()), 0);
+    for (CellId c : id_range<CellId>(before.n_cells())) set[c] = r.material[c] == m;
     std::vector<CellId> around;  // the region's own cells: another's layer is not its own
     for (CellId c : left_out_around)
       if (material[c] == m) around.push_back(c);
@@ -239,16 +243,16 @@ InterfacePillowResult<M> pillow_interfaces(const M& mesh, const CellMaterials& m
         ++log.sheet_cells;
       }
     if (!shared.boundary.pillow_frozen)
-      log.left_out += leave_out_frozen(r.mesh, shared.boundary, set);
+      log.left_out += leave_out_frozen(before, shared.boundary, set);
     while (log.rounds < options.rounds && std::find(set.begin(), set.end(), 1) != set.end()) {
       ++log.rounds;
       std::optional<Attempt<M>> tried;
       try {
-        tried.emplace(try_pillow(r.mesh, set, still, current, shared, r.node_origin));
+        tried.emplace(try_pillow(before, set, still, current, shared, r.node_origin));
       } catch (const MeshError&) {
         // The set touches itself along an edge where no layer can follow it: those places
         // are carved out, and the layer tried again.
-        const index_t removed = carve(r.mesh, edge_touching(r.mesh, set), options.carve, set);
+        const index_t removed = carve(before, edge_touching(before, set), options.carve, set);
         if (removed == 0) break;
         log.left_out += removed;
         continue;
@@ -260,25 +264,27 @@ InterfacePillowResult<M> pillow_interfaces(const M& mesh, const CellMaterials& m
         log.layer_cells = a.p.n_new_cells;
         log.failing = a.failing_cells;
         for (CellId c : id_range<CellId>(a.p.mesh.n_cells()))
-          if (c.value() >= r.mesh.n_cells()) {
+          if (c.value() >= before.n_cells()) {
             r.cell_origin.push_back(r.cell_origin[a.p.cell_origin[c]]);
             r.material.push_back(m);
           }
         for (NodeId v : id_range<NodeId>(a.p.mesh.n_nodes()))
-          if (v.value() >= r.mesh.n_nodes())
+          if (v.value() >= before.n_nodes())
             r.node_origin.push_back(r.node_origin[a.p.node_origin[v]]);
         r.n_new_nodes += a.p.n_new_nodes;
         still.resize(static_cast<std::size_t>(a.p.mesh.n_nodes()), 0);
         current = std::move(a.size);
         r.mesh = std::move(a.p.mesh);
+        any_kept = true;
         break;
       }
-      const index_t removed = carve(r.mesh, a.failing_origins, options.carve, set);
+      const index_t removed = carve(before, a.failing_origins, options.carve, set);
       if (removed == 0) break;  // the failures are not the layer's: it cannot help
       log.left_out += removed;
     }
     r.attempts.push_back(log);
   }
+  if (!any_kept) r.mesh = mesh;
   return r;
 }
 

@@ -255,6 +255,11 @@ using AnyAdaptResult = std::variant<AdaptResult<QuadMesh>, AdaptResult<HexMesh>>
 AnyAdaptResult adapt(const AssignedGrid& grid, const AdaptOptions& options = {},
                      const reconstruct::InterfaceModel* model = nullptr,
                      const Targets* targets = nullptr);
+/// The same on a grid given up: its points are moved into the frame the pipeline runs in
+/// instead of copied there (a grid's worth of memory less); the grid is left unspecified.
+AnyAdaptResult adapt(AssignedGrid&& grid, const AdaptOptions& options = {},
+                     const reconstruct::InterfaceModel* model = nullptr,
+                     const Targets* targets = nullptr);
 
 /// What resume_moves did.
 struct ResumeResult {

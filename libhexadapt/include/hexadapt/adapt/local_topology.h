@@ -50,6 +50,7 @@ class NeighbourCache {
   const std::vector<NodeId>& of(const M& mesh, NodeId n) {
     if (!known_[n]) {
       lists_[n] = edge_neighbours(mesh, n);
+      lists_[n].shrink_to_fit();  // a list is built with room for every corner's neighbours
       known_[n] = 1;
     }
     return lists_[n];
