@@ -14,7 +14,9 @@ namespace hexadapt::cli {
 /// Peak bytes per input cell of each stage, measured.
 inline constexpr double generate_bytes_per_cell = 200;
 inline constexpr double assign_bytes_per_cell = 400;
-inline constexpr double adapt_bytes_per_cell = 1500;
+/// adapt: 623 bytes per cell on the sphere 128^3, up to 910 on smaller grids (venn 48^3;
+/// vortex 64^3: 836) and per cell held on ranks (the sphere 128^3 on 8 ranks: 870).
+inline constexpr double adapt_bytes_per_cell = 1000;
 inline constexpr double measure_bytes_per_cell = 500;  ///< per cell of mesh and reference
 /// Reconstruct's bytes per input cell besides the pixel estimate (the grid as read, its
 /// mesh, the fractions): what a rank's layers weigh beside their pixels when the grid is cut
