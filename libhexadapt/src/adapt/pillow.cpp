@@ -1,6 +1,7 @@
 #include "hexadapt/adapt/pillow.h"
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 #include "hexadapt/adapt/local_topology.h"
@@ -60,6 +61,51 @@ std::vector<int> fans_around(const M& mesh, NodeId n, const std::vector<CellId>&
   return label;
 }
 
+// The set's cells around a split node, labelled by fan, and the inward normal of each fan's
+// pillowed faces: the copy leaves its original across the interface, never along it.
+struct Fans {
+  std::vector<CellId> around;
+  std::vector<int> fan;
+  std::vector<Vec3> inward;
+};
+
+// The fans of the split nodes only, in node order, so that a grid with a thin interface pays
+// a few bytes per node.
+struct SplitFans {
+  std::vector<NodeId> nodes;
+  std::vector<Fans> of;  ///< of nodes[k]
+};
+
+template <class M>
+SplitFans split_fans(const M& mesh, const IdVector<CellId, char>& in_set,
+                     const IdVector<NodeId, char>& split,
+                     const std::vector<std::pair<CellId, int>>& faces) {
+  SplitFans out;
+  IdVector<NodeId, index_t> place(split.size(), -1);
+  for (NodeId n : id_range<NodeId>(mesh.n_nodes())) {
+    if (!split[n]) continue;
+    place[n] = static_cast<index_t>(out.nodes.size());
+    out.nodes.push_back(n);
+    Fans& f = out.of.emplace_back();
+    for (CellId c : mesh.node_cells(n))
+      if (in_set[c]) f.around.push_back(c);
+    f.fan = fans_around(mesh, n, f.around);
+    int n_fans = 0;
+    for (int k : f.fan) n_fans = std::max(n_fans, k + 1);
+    f.inward.assign(static_cast<std::size_t>(n_fans), Vec3::Zero());
+  }
+  for (const auto& [c, lf] : faces) {
+    const Vec3 normal = face_normal(mesh, c, lf);
+    for (NodeId v : mesh.face_nodes(c, lf)) {
+      Fans& f = out.of[static_cast<std::size_t>(place[v])];
+      const auto k = static_cast<std::size_t>(std::find(f.around.begin(), f.around.end(), c) -
+                                              f.around.begin());
+      f.inward[static_cast<std::size_t>(f.fan[k])] -= normal;
+    }
+  }
+  return out;
+}
+
 // Where a copy goes, before scaling by the offset option: along the fan's inward normal
 // (kept on the boundary), as far as the fan's cells' centres are from the node on average
 // (not as deep as their mean centre: around a concave corner that lies at the node itself).
@@ -105,41 +151,9 @@ PillowResult<M> pillow_cells(const M& mesh, const IdVector<CellId, char>& in_set
     }
   }
 
-  // Fans of the set's cells around every split node, and the inward normal of each fan's
-  // pillowed faces: the copy leaves its original across the interface, never along it.
-  // Kept for the split nodes only, in node order (`place`), so that a grid with a thin
-  // interface pays a few bytes per node.
-  struct Fans {
-    std::vector<CellId> around;
-    std::vector<int> fan;
-    std::vector<Vec3> inward;
-  };
-  std::vector<Fans> fans;
-  std::vector<NodeId> split_nodes;
-  IdVector<NodeId, index_t> place(split.size(), -1);
+  const SplitFans fans = split_fans(mesh, in_set, split, faces);
   std::size_t n_copies = 0;
-  for (NodeId n : id_range<NodeId>(mesh.n_nodes())) {
-    if (!split[n]) continue;
-    place[n] = static_cast<index_t>(split_nodes.size());
-    split_nodes.push_back(n);
-    Fans& f = fans.emplace_back();
-    for (CellId c : mesh.node_cells(n))
-      if (in_set[c]) f.around.push_back(c);
-    f.fan = fans_around(mesh, n, f.around);
-    int n_fans = 0;
-    for (int k : f.fan) n_fans = std::max(n_fans, k + 1);
-    f.inward.assign(static_cast<std::size_t>(n_fans), Vec3::Zero());
-    n_copies += f.inward.size();
-  }
-  for (const auto& [c, lf] : faces) {
-    const Vec3 normal = face_normal(mesh, c, lf);
-    for (NodeId v : mesh.face_nodes(c, lf)) {
-      Fans& f = fans[static_cast<std::size_t>(place[v])];
-      const auto k = static_cast<std::size_t>(std::find(f.around.begin(), f.around.end(), c) -
-                                              f.around.begin());
-      f.inward[static_cast<std::size_t>(f.fan[k])] -= normal;
-    }
-  }
+  for (const Fans& f : fans.of) n_copies += f.inward.size();
 
   // Every array at its final size from the start: a grid-sized array grown by doubling
   // would hold up to three times its size while it grows.
@@ -155,9 +169,9 @@ PillowResult<M> pillow_cells(const M& mesh, const IdVector<CellId, char>& in_set
   std::vector<NodeId> node_origin;
   node_origin.reserve(nn + n_copies);
   for (NodeId v : id_range<NodeId>(mesh.n_nodes())) node_origin.push_back(v);
-  for (std::size_t s = 0; s < split_nodes.size(); ++s) {
-    const NodeId n = split_nodes[s];
-    const Fans& fs = fans[s];
+  for (std::size_t s = 0; s < fans.nodes.size(); ++s) {
+    const NodeId n = fans.nodes[s];
+    const Fans& fs = fans.of[s];
     const Vec3 p = mesh.point(n);
     for (std::size_t f = 0; f < fs.inward.size(); ++f) {
       const NodeId copy(static_cast<index_t>(points.size()));
