@@ -1,10 +1,11 @@
 // NodeConstraint keeps its normals apart from the node (allocated with the first): a copy
 // must own its normals, and a free node's constraint must stay free whatever is copied.
+#include "hexadapt/adapt/node_constraint.h"
+
 #include <gtest/gtest.h>
 
+#include <utility>
 #include <vector>
-
-#include "hexadapt/adapt/node_constraint.h"
 
 namespace hexadapt {
 namespace {
@@ -55,6 +56,22 @@ TEST(NodeConstraint, ACopyOwnsItsNormals) {
 
   c = NodeConstraint();  // a free one assigned over held normals
   EXPECT_EQ(c.n_normals(), 0);
+  EXPECT_EQ(c.project(Vec3(1, 1, 1)), Vec3(1, 1, 1));
+}
+
+TEST(NodeConstraint, OneMovedFromIsFree) {
+  NodeConstraint a;
+  a.add(Vec3(1, 0, 0));
+  a.freeze();
+  const NodeConstraint b = std::move(a);
+  EXPECT_EQ(b.n_normals(), 1);
+  EXPECT_TRUE(b.frozen());
+  EXPECT_EQ(a.n_normals(), 0);  // NOLINT(bugprone-use-after-move): what is checked
+  EXPECT_FALSE(a.frozen());
+  EXPECT_EQ(a.project(Vec3(1, 1, 1)), Vec3(1, 1, 1));
+  NodeConstraint c;
+  c.add(Vec3(0, 1, 0));
+  c = std::move(a);
   EXPECT_EQ(c.project(Vec3(1, 1, 1)), Vec3(1, 1, 1));
 }
 

@@ -604,20 +604,19 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
   if (options.progress) options.progress("check", 0.0);
   AdaptResult<M> r;
   Timer clock;
-  const M& mesh = grid;
   SizeCriterion size = size_criterion(grid, options.min_edge);
   r.input_min_quality = min_quality(grid);
   for (const CellFailure& f : failing_cells(grid, options.threshold, size))
     r.bad_input_cells.push_back(f.cell);
   const bool good_input = r.bad_input_cells.empty();
-  const auto nn = static_cast<std::size_t>(mesh.n_nodes());
+  const auto nn = static_cast<std::size_t>(grid.n_nodes());
   // On ranks, every rank stops when one does: the others' runs would wait for its decisions.
   std::vector<double> bad_anywhere{static_cast<double>(r.bad_input_cells.size())};
   if (options.ranks.add_up) options.ranks.add_up(bad_anywhere);
   if (bad_anywhere[0] > 0 && !options.allow_bad_input) {
     r.stopped_bad_input = true;
-    for (CellId c : id_range<CellId>(mesh.n_cells())) r.cell_origin.push_back(c);
-    for (NodeId v : id_range<NodeId>(mesh.n_nodes())) r.node_origin.push_back(v);
+    for (CellId c : id_range<CellId>(grid.n_cells())) r.cell_origin.push_back(c);
+    for (NodeId v : id_range<NodeId>(grid.n_nodes())) r.node_origin.push_back(v);
     r.mesh = grid;
     r.material = material;
     finish_result(r, IdVector<NodeId, Vec3>(nn, Vec3::Zero()), IdVector<NodeId, char>(nn, 0), size,
@@ -625,25 +624,25 @@ AdaptResult<M> run_guaranteed_pipeline(const M& grid, const Fractions& fractions
     r.blocked.assign(nn, 0);
     return r;
   }
-  record_step(r, mesh, "check", clock, options.progress, 0.05, "targets");
+  record_step(r, grid, "check", clock, options.progress, 0.05, "targets");
 
-  const auto grid_boundary = boundary_constraints(mesh, options.boundary);
+  const auto grid_boundary = boundary_constraints(grid, options.boundary);
   Targets targets =
       given_targets
           ? std::move(*given_targets)
-          : compute_targets(mesh, fractions, material,
+          : compute_targets(grid, fractions, material,
                             options.boundary.frozen.empty()
                                 ? grid_boundary
-                                : boundary_constraints(mesh, options.boundary.without_frozen()),
+                                : boundary_constraints(grid, options.boundary.without_frozen()),
                             options.targets);
   if (given_targets)
     targets.n_interface_nodes =
         static_cast<index_t>(std::count(targets.has.begin(), targets.has.end(), 1));
-  const std::optional<FrozenAims> aims = hold_frozen(mesh, targets, options);
+  const std::optional<FrozenAims> aims = hold_frozen(grid, targets, options);
   r.n_interface_nodes = targets.n_interface_nodes;
-  record_step(r, mesh, "targets", clock, options.progress, 0.1, "layers");
-  correct(mesh, material, grid_boundary, targets, model, r, clock, options);
-  r.spacing = space_targets(mesh, material, size, sliding_constraints(grid_boundary, targets),
+  record_step(r, grid, "targets", clock, options.progress, 0.1, "layers");
+  correct(grid, material, grid_boundary, targets, model, r, clock, options);
+  r.spacing = space_targets(grid, material, size, sliding_constraints(grid_boundary, targets),
                             targets, options.spacing);
 
   const int n_materials = fractions.n_materials();

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <utility>
 
 #include "hexadapt/core/ids.h"
 #include "hexadapt/mesh/cell_complex.h"
@@ -24,8 +25,17 @@ class NodeConstraint {
   NodeConstraint() = default;
   NodeConstraint(const NodeConstraint& other);
   NodeConstraint& operator=(const NodeConstraint& other);
-  NodeConstraint(NodeConstraint&&) noexcept = default;
-  NodeConstraint& operator=(NodeConstraint&&) noexcept = default;
+  /// A constraint moved from is free.
+  NodeConstraint(NodeConstraint&& other) noexcept
+      : normals_(std::move(other.normals_)),
+        n_(std::exchange(other.n_, 0)),
+        frozen_(std::exchange(other.frozen_, false)) {}
+  NodeConstraint& operator=(NodeConstraint&& other) noexcept {
+    normals_ = std::move(other.normals_);
+    n_ = std::exchange(other.n_, 0);
+    frozen_ = std::exchange(other.frozen_, false);
+    return *this;
+  }
   ~NodeConstraint() = default;
 
   int n_normals() const { return n_; }
