@@ -300,7 +300,7 @@ int run_assign_on_ranks(const CLI::App& app, Options& o, const dist::Communicato
     cli::check_files(
         {{"input", o.input}},
         {{"-o", o.common.output, true}, {"--partial", o.partial, true}, {"--json", o.common.json}});
-    const bool structured = !cli::unstructured_file(o.input);
+    const bool structured = !io::holds_unstructured_mesh(o.input);
     cli::check_rank_output("-o", o.common.output, o.gather, structured);
     cli::check_rank_output("--partial", o.partial, o.gather, structured);
   });

@@ -11,6 +11,7 @@
 
 #include "hexadapt/core/error.h"
 #include "hexadapt/core/parallel.h"
+#include "hexadapt/dist/on_every_rank.h"
 #include "hexadapt/io/atomic_file.h"
 #include "hexadapt/io/fractions_reader.h"
 #include "hexadapt/io/temp_files.h"
@@ -203,6 +204,8 @@ std::pair<int, std::string> describe(const CLI::App& app, const std::exception_p
     std::rethrow_exception(error);
   } catch (const RankError& e) {
     return {e.code(), e.what()};
+  } catch (const dist::CommonError& e) {
+    return describe(app, e.original());
   } catch (const OptionError& e) {
     return {usage, tool + ": error: " + with_flags(app, e.what())};
   } catch (const InputError& e) {
@@ -261,6 +264,10 @@ int run_body(CLI::App& app, int argc, char** argv, CommonOptions& options, const
   } catch (const RankError& e) {
     if (comm.rank() == 0) std::cerr << e.what() << '\n';
     return e.code();
+  } catch (const dist::CommonError& e) {
+    const auto [code, line] = describe(app, e.original());
+    if (comm.rank() == 0) std::cerr << line << '\n';
+    return code;
   } catch (...) {
     const auto [code, line] = describe(app, std::current_exception());
     if (comm.size() > 1) {

@@ -283,18 +283,12 @@ std::vector<std::int64_t> integer_weights(const dist::Communicator& comm,
 
 }  // namespace
 
-bool unstructured_file(const std::string& path) {
-  for (const char* ext : {".pvtu", ".vtu", ".exo", ".e", ".g"})
-    if (ends_with(path, ext)) return true;
-  return false;
-}
-
 RankInput read_on_ranks(const dist::Communicator& comm, const CLI::App& app,
                         const std::string& path, io::ReadOptions options, int ghost_layers,
                         const std::vector<double>& layer_weights) {
   RankInput in;
   on_every_rank(comm, app, [&] {
-    if (unstructured_file(path))
+    if (io::holds_unstructured_mesh(path))
       throw OptionError(path +
                         ": on several ranks this stage reads structured grids only (.vti .vtr "
                         ".vts, their parallel forms, a structured .vtk): run it on one process");
@@ -317,10 +311,10 @@ io::RankPieces read_pieces_on_ranks(const dist::Communicator& comm, const CLI::A
                                     const std::string& path, const io::ReadOptions& options) {
   io::RankPieces pieces;
   on_every_rank(comm, app, [&] {
-    if (!unstructured_file(path))
+    if (!io::holds_unstructured_mesh(path))
       throw OptionError(path +
                         ": on several ranks this stage reads unstructured meshes only (.pvtu, "
-                        ".vtu, .exo): run it on one process");
+                        ".vtu, .exo, an unstructured .vtk, .vtm, .pvd): run it on one process");
     if (ends_with(path, ".pvtu")) {
       pieces = io::read_rank_pieces(path, options, comm.rank(), comm.size());
     } else if (comm.rank() == 0) {
@@ -336,7 +330,7 @@ RankInput read_mesh_on_ranks(const dist::Communicator& comm, const CLI::App& app
                              const std::string& path, const io::ReadOptions& options,
                              int ghost_layers, const std::vector<double>& layer_weights,
                              const CellWeights& cell_weights) {
-  if (!unstructured_file(path))
+  if (!io::holds_unstructured_mesh(path))
     return read_on_ranks(comm, app, path, options, ghost_layers, layer_weights);
   io::RankPieces pieces = read_pieces_on_ranks(comm, app, path, options);
   // Each collective step whole inside on_every_rank: a rank that fails alone must not leave

@@ -28,10 +28,6 @@ struct RankInput {
   std::int64_t whole_cells = 0;  ///< of the whole grid or mesh
 };
 
-/// Whether `path` names an unstructured mesh's file by its extension (.pvtu .vtu .exo .e .g;
-/// a .vtk, which may hold either, counts as a structured grid's).
-bool unstructured_file(const std::string& path);
-
 /// Every rank's slab of the structured grid in `path`, holding `ghost_layers` layers of
 /// cells beyond the ones it owns; cut by layer counts, or by `layer_weights` (one per layer
 /// across the cut axis: dist::weighted_slab) when given. A parallel file's pieces outside a

@@ -304,7 +304,7 @@ int run_reconstruct_on_ranks(const CLI::App& app, Options& o, cli::CommonOptions
       set_options(o, common, part.data.dim);
       return cell_bytes(o, part);
     };
-  if (o.cut == "memory" && !cli::unstructured_file(o.input)) {
+  if (o.cut == "memory" && !io::holds_unstructured_mesh(o.input)) {
     const cli::RankInput probe = cli::read_on_ranks(comm, app, o.input, o.in.read_options(), 1);
     prepare(probe);
     weights = layer_bytes(app, o, comm, probe);

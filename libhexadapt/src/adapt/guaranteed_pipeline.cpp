@@ -299,7 +299,9 @@ void correct(const M& mesh, const CellMaterials& material,
     r.correction.skipped = "no model given";
   } else {
     if (options.progress) options.progress("correct", 0.1);
-    r.correction = correct_targets(mesh, material, boundary, *model, targets, options.correction);
+    TargetCorrectionOptions correction = options.correction;
+    correction.poor_below = options.threshold;
+    r.correction = correct_targets(mesh, material, boundary, *model, targets, correction);
     if (r.correction.ran) record_step(r, mesh, "correct", clock, options.progress, 0.15, "layers");
   }
 }

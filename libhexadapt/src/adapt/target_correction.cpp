@@ -151,12 +151,13 @@ std::optional<Vec3> smoothed(const TargetSurface& s, const IdVector<NodeId, Vec3
   return sum / area;
 }
 
-double min_quality_all(const TargetSurface& s, const IdVector<NodeId, Vec3>& t, index_t* n_poor) {
+double min_quality_all(const TargetSurface& s, const IdVector<NodeId, Vec3>& t, double poor,
+                       index_t* n_poor) {
   double q = 1;
   for (std::size_t f = 0; f < s.faces.size(); ++f) {
     const double qf = surface_quad_quality(face_points(s, t, f));
     q = std::min(q, qf);
-    *n_poor += qf < 0.3;
+    *n_poor += qf < poor;
   }
   return q;
 }
@@ -302,15 +303,15 @@ TargetCorrectionResult correct_targets(const HexMesh& mesh, const CellMaterials&
   r.ran = true;
   classify_nodes(mesh, boundary, s);
   Corrector c(s, model, boundary, targets, o);
-  r.min_quality_before = min_quality_all(s, targets.position, &r.n_poor_before);
+  r.min_quality_before = min_quality_all(s, targets.position, o.poor_below, &r.n_poor_before);
   r.n_unprojected = c.project_all();
   index_t ignored = 0;
-  r.min_quality_projected = min_quality_all(s, targets.position, &ignored);
+  r.min_quality_projected = min_quality_all(s, targets.position, o.poor_below, &ignored);
   while (r.sweeps < o.iterations) {
     ++r.sweeps;
     if (c.sweep() == 0) break;
   }
-  r.min_quality_after = min_quality_all(s, targets.position, &r.n_poor_after);
+  r.min_quality_after = min_quality_all(s, targets.position, o.poor_below, &r.n_poor_after);
   c.statistics(r);
   return r;
 }

@@ -1,5 +1,6 @@
 #include "hexadapt/dist/communicator.h"
 
+#include <algorithm>
 #include <cstdlib>
 
 #include "hexadapt/core/error.h"
@@ -61,6 +62,11 @@ std::vector<Buffer> gather(const Communicator& comm, const Buffer& mine, int roo
   std::vector<Buffer> out;
   for (auto& bytes : comm.gather(mine.bytes(), root)) out.emplace_back(std::move(bytes));
   return out;
+}
+
+bool all_true(const Communicator& comm, bool mine) {
+  const std::vector<char> all = all_gather_values(comm, std::vector<char>{mine});
+  return std::find(all.begin(), all.end(), 0) == all.end();
 }
 
 }  // namespace hexadapt::dist

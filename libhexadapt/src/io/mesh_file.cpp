@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/exodus.h"
@@ -64,7 +65,42 @@ bool is_exodus(const std::string& ext) {
   return ext == ".exo" || ext == ".e" || ext == ".g";
 }
 
+// The dataset type a legacy .vtk names (the token after DATASET, upper case), or "" when its
+// first lines hold none: the version line, the title line, ASCII or BINARY, then DATASET.
+std::string legacy_dataset(const std::string& path) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) return "";
+  char buffer[4096];
+  const std::size_t n = std::fread(buffer, 1, sizeof buffer, f);
+  std::fclose(f);
+  const std::string head(buffer, n);
+  std::size_t at = 0;
+  for (int line = 0; line < 2 && at != std::string::npos; ++line) {
+    at = head.find('\n', at);
+    if (at != std::string::npos) ++at;
+  }
+  if (at == std::string::npos) return "";
+  std::vector<std::string> tokens;
+  std::string token;
+  for (std::size_t k = at; k < head.size() && tokens.size() < 3; ++k) {
+    const char c = head[k];
+    if (c == ' ' || c == '\t' || c == '\r' || c == '\n') {
+      if (!token.empty()) tokens.push_back(token);
+      token.clear();
+    } else {
+      token += static_cast<char>(c >= 'a' && c <= 'z' ? c - 'a' + 'A' : c);
+    }
+  }
+  return tokens.size() == 3 && tokens[1] == "DATASET" ? tokens[2] : "";
+}
+
 }  // namespace
+
+bool holds_unstructured_mesh(const std::string& path) {
+  const std::string ext = extension_of(path);
+  if (ext == ".vtk") return legacy_dataset(path) == "UNSTRUCTURED_GRID";
+  return ext == ".vtu" || ext == ".pvtu" || ext == ".vtm" || ext == ".pvd" || is_exodus(ext);
+}
 
 ExodusSets parse_exodus_sets(const std::string& text) {
   if (text == "none") return ExodusSets::none;

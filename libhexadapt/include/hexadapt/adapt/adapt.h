@@ -92,7 +92,7 @@ struct RankDecisions {
 struct AdaptOptions : StepSettings {
   AdaptMethod method = AdaptMethod::guaranteed;  ///< which pipeline runs
   /// Shortest edge / local input size every cell keeps (guaranteed); 0 = no size criterion.
-  double min_edge = 0.1;
+  double min_edge = default_min_edge;
   /// guaranteed: the controlled move (its steps, drag and rounds).
   MoveOptions move;
   TargetOptions targets;               ///< target computation

@@ -28,6 +28,7 @@
 #include "hexadapt/adapt/targets.h"
 #include "hexadapt/mesh/fractions.h"
 #include "hexadapt/mesh/hex_mesh.h"
+#include "hexadapt/quality/scaled_jacobian.h"
 #include "hexadapt/reconstruct/model.h"
 
 namespace hexadapt {
@@ -47,6 +48,9 @@ struct TargetCorrectionOptions {
   /// The first projection onto the model is refused where it would put a target quad below
   /// this (and below its quality before); such nodes reach the model in the guarded sweeps.
   double min_projected_quality = 0.1;
+  /// The quality below which a target quad counts as poor in the result (n_poor_*); the
+  /// pipeline sets its threshold.
+  double poor_below = default_threshold;
 };
 
 struct TargetCorrectionResult {
@@ -59,7 +63,7 @@ struct TargetCorrectionResult {
   double min_quality_before = 1;     ///< worst target-surface quad, computed targets
   double min_quality_projected = 1;  ///< after the first projection onto the model
   double min_quality_after = 1;      ///< after the correction
-  index_t n_poor_before = 0, n_poor_after = 0;  ///< quads below 0.3 before / after
+  index_t n_poor_before = 0, n_poor_after = 0;  ///< quads below poor_below before / after
   double mean_displacement = 0;  ///< mean |corrected - computed| over the interface nodes
   double max_displacement = 0;
   int sweeps = 0;  ///< sweeps run (stops early when no node moves)

@@ -177,4 +177,7 @@ T sum_in_rank_order(const Communicator& comm, T mine) {
   return sum;
 }
 
+/// True on every rank when `mine` is true on every rank. Every rank calls it.
+bool all_true(const Communicator& comm, bool mine);
+
 }  // namespace hexadapt::dist

@@ -75,6 +75,13 @@ void check_mesh_output(const std::string& path, bool structured = true);
 /// Throws IoError, or OptionError for an unknown extension.
 void write_mesh(const MeshData& data, const std::string& path, const WriteOptions& options = {});
 
+/// Whether `path` holds an unstructured mesh rather than a structured grid, as far as its name
+/// and, for a legacy .vtk, its DATASET line tell: .vtu .pvtu .exo .e .g, and the collections
+/// that cannot be read a window of layers at a time (.vtm .pvd), do; a .vtk does when its
+/// DATASET is UNSTRUCTURED_GRID. Another file, or a .vtk whose header cannot be read, does not
+/// (reading it as a grid then says what is wrong).
+bool holds_unstructured_mesh(const std::string& path);
+
 /// The shape of the structured grid in `path`: a .pvti/.pvtr/.pvts is read to its header
 /// only, another file whole. Throws InputError when the file holds no structured grid.
 StructuredShape structured_shape(const std::string& path, const ReadOptions& options = {});

@@ -37,7 +37,7 @@ struct GhostedPart;
 struct SizeReportOptions {
   /// A cell breaks the size criterion when its shortest edge < min_edge x its local size;
   /// 0: not checked.
-  double min_edge = 0.1;
+  double min_edge = default_min_edge;
   int max_listed = 10;  ///< how many cells breaking the criterion are listed
   std::string local_size_array = "local_size";  ///< cell array of the local input sizes
   /// Called with phase "size" and the fraction done, ending at 1; nullptr: silent.

@@ -21,6 +21,10 @@ namespace hexadapt {
 /// S_q, the smallest scaled Jacobian a cell may have unless told otherwise: what adapt
 /// keeps, what measure checks and what render marks on its colour bar.
 inline constexpr double default_threshold = 0.3;
+/// The shortest edge a cell may have unless told otherwise, relative to its local input size
+/// (the mean edge length of the input cell it comes from): what adapt keeps and measure checks
+/// (no sliver cuts an explicit solver's time step).
+inline constexpr double default_min_edge = 0.1;
 
 double hex_scaled_jacobian(const std::array<Vec3, 8>& p);
 /// Signed volume of the trilinear hex (exact: 2x2x2 Gauss quadrature of det J).

@@ -17,7 +17,7 @@
 #include "hexadapt/dist/communicator.h"
 #include "shared_nodes.h"
 
-namespace hexadapt::cli {
+namespace hexadapt {
 
 /// Moves the nodes within `rings` cells of every cut on, on every rank holding them; the
 /// result's figures of the moved nodes follow (target, distances, near, blocked, sliding) and
@@ -27,4 +27,4 @@ template <class M>
 void resume_across_cuts(const dist::Communicator& comm, AdaptResult<M>& r,
                         const SharedNodes& shared, int rings, const AdaptOptions& options);
 
-}  // namespace hexadapt::cli
+}  // namespace hexadapt

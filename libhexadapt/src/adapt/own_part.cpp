@@ -4,7 +4,7 @@
 #include <utility>
 #include <vector>
 
-namespace hexadapt::cli {
+namespace hexadapt {
 
 namespace {
 
@@ -89,4 +89,4 @@ template OwnPart<QuadMesh> own_part<QuadMesh>(AdaptResult<QuadMesh>, std::array<
 template OwnPart<HexMesh> own_part<HexMesh>(AdaptResult<HexMesh>, std::array<index_t, 2>,
                                             std::array<index_t, 2>);
 
-}  // namespace hexadapt::cli
+}  // namespace hexadapt

@@ -11,7 +11,7 @@
 #include "hexadapt/mesh/quad_mesh.h"
 #include "hexadapt/mesh/unit_frame.h"
 
-namespace hexadapt::cli {
+namespace hexadapt {
 
 namespace {
 
@@ -330,4 +330,4 @@ template void resume_across_cuts<QuadMesh>(const dist::Communicator&, AdaptResul
 template void resume_across_cuts<HexMesh>(const dist::Communicator&, AdaptResult<HexMesh>&,
                                           const SharedNodes&, int, const AdaptOptions&);
 
-}  // namespace hexadapt::cli
+}  // namespace hexadapt

@@ -16,7 +16,7 @@
 #include "hexadapt/adapt/adapt.h"
 #include "hexadapt/dist/communicator.h"
 
-namespace hexadapt::cli {
+namespace hexadapt {
 
 /// The nodes of a rank's part that other ranks' parts hold too.
 struct SharedNodes {
@@ -47,9 +47,6 @@ struct SharedNodes {
   }
 };
 
-/// True on every rank when `mine` is true on every rank. Every rank calls it.
-bool all_true(const dist::Communicator& comm, bool mine);
-
 /// Takes every shared node of `r` to one point on every rank holding it. Each rank smoothed the
 /// copies among the cells it read, whose ghost cells differ from rank to rank: where the
 /// layers of several materials meet at a cut, their points differ a little (up to 1.8e-4 of
@@ -78,4 +75,4 @@ bool parts_meet(const dist::Communicator& comm, const M& mesh, const SharedNodes
 std::vector<std::pair<index_t, index_t>> nodes_counted_above(const dist::Communicator& comm,
                                                              const SharedNodes& shared);
 
-}  // namespace hexadapt::cli
+}  // namespace hexadapt

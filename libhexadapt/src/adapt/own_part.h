@@ -10,7 +10,7 @@
 
 #include "hexadapt/adapt/adapt.h"
 
-namespace hexadapt::cli {
+namespace hexadapt {
 
 /// A rank's part, and its faces toward the cells of the ranks beside it (the cuts' faces).
 template <class M>
@@ -30,4 +30,4 @@ struct OwnPart {
 template <class M>
 OwnPart<M> own_part(AdaptResult<M> r, std::array<index_t, 2> cells, std::array<index_t, 2> nodes);
 
-}  // namespace hexadapt::cli
+}  // namespace hexadapt

@@ -9,7 +9,7 @@
 #include "hexadapt/core/error.h"
 #include "hexadapt/mesh/quad_mesh.h"
 
-namespace hexadapt::cli {
+namespace hexadapt {
 
 namespace {
 
@@ -74,11 +74,6 @@ std::array<double, 3> key(const Vec3& p) {
 
 }  // namespace
 
-bool all_true(const dist::Communicator& comm, bool mine) {
-  const std::vector<char> all = dist::all_gather_values(comm, std::vector<char>{mine});
-  return std::find(all.begin(), all.end(), 0) == all.end();
-}
-
 template <class M>
 bool share_nodes(const dist::Communicator& comm, AdaptResult<M>& r, const SharedNodes& shared,
                  const AdaptOptions& options) {
@@ -128,7 +123,7 @@ bool share_nodes(const dist::Communicator& comm, AdaptResult<M>& r, const Shared
       place(r, own[group]);
     }
   }
-  if (!all_true(comm, named)) return false;
+  if (!dist::all_true(comm, named)) return false;
   // A group takes the first choice every rank of it can take.
   std::map<std::vector<int>, std::array<bool, 4>> can;
   const std::vector<std::int64_t> all = dist::all_gather_values(comm, verdicts);
@@ -149,7 +144,7 @@ bool share_nodes(const dist::Communicator& comm, AdaptResult<M>& r, const Shared
     place(r, choices[k % 2]);
   }
   if (repair) repair_around_failing(r, shared, options);
-  return all_true(comm, fit && passes());
+  return dist::all_true(comm, fit && passes());
 }
 
 template <class M>
@@ -185,7 +180,7 @@ bool parts_meet(const dist::Communicator& comm, const M& mesh, const SharedNodes
   std::vector<dist::Buffer> theirs = dist::exchange(comm, peers, std::move(mine));
   for (std::size_t k = 0; k < peers.size(); ++k)
     fit = fit && theirs[k].get_vector<double>() == sent[k];
-  return all_true(comm, fit);
+  return dist::all_true(comm, fit);
 }
 
 std::vector<std::pair<index_t, index_t>> nodes_counted_above(const dist::Communicator& comm,
@@ -226,4 +221,4 @@ template bool parts_meet<QuadMesh>(const dist::Communicator&, const QuadMesh&, c
 template bool parts_meet<HexMesh>(const dist::Communicator&, const HexMesh&, const SharedNodes&,
                                   const std::vector<HexMesh::FaceNodes>&, const std::vector<int>&);
 
-}  // namespace hexadapt::cli
+}  // namespace hexadapt
