@@ -10,6 +10,7 @@
 #include "hexadapt/core/error.h"
 #include "hexadapt/mesh/quad_mesh.h"
 #include "hexadapt/mesh/unit_frame.h"
+#include "pipeline_steps.h"
 
 namespace hexadapt {
 
@@ -238,22 +239,6 @@ void take_back(const Band<M>& band, std::size_t h, AdaptResult<M>& r, double nea
   }
 }
 
-// The figures of the rank's cells after the moves: least quality, shortest edge, failing cells.
-template <class M>
-void recount_cells(AdaptResult<M>& r, const AdaptOptions& options) {
-  SizeCriterion size{options.min_edge, r.local_size};
-  r.min_quality = min_quality(r.mesh);
-  r.min_edge_ratio = min_edge_ratio(r.mesh, size);
-  std::vector<CellFailure> failures = failing_cells(r.mesh, options.threshold, size);
-  r.n_below_threshold = r.n_below_min_edge = r.n_inverted = 0;
-  for (const CellFailure& f : failures) {
-    r.n_below_threshold += f.shape_failed(options.threshold);
-    r.n_below_min_edge += f.size_failed();
-    r.n_inverted += f.scaled_jacobian <= 0;
-  }
-  r.failures = worst_failures(std::move(failures), 10);
-}
-
 // Every rank's groups (the ranks holding some node together, SharedNodes), each once, in
 // rounds in which no rank is in two groups: each group in the first round none of its ranks
 // is busy in, taken by size then ranks. The same on every rank. Every rank calls it.
@@ -322,7 +307,7 @@ void resume_across_cuts(const dist::Communicator& comm, AdaptResult<M>& r,
       move_in_unit_frame(band, moves);
       take_back(band, h, r, options.near_interface);
     }
-  recount_cells(r, options);
+  detail::count_cells(r, SizeCriterion{options.min_edge, r.local_size}, options.threshold);
 }
 
 template void resume_across_cuts<QuadMesh>(const dist::Communicator&, AdaptResult<QuadMesh>&,

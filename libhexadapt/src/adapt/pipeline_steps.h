@@ -31,6 +31,22 @@ double surface_distance_sum(const M& mesh, const Targets& targets,
   return s;
 }
 
+// The figures of the cells of r.mesh: least quality, shortest edge, the cells failing a
+// criterion (counted, the worst ten kept) and the inverted ones.
+template <class M>
+void count_cells(AdaptResult<M>& r, const SizeCriterion& size, double threshold) {
+  r.min_quality = min_quality(r.mesh);
+  r.min_edge_ratio = min_edge_ratio(r.mesh, size);
+  r.n_below_threshold = r.n_below_min_edge = r.n_inverted = 0;
+  for (CellId c : id_range<CellId>(r.mesh.n_cells())) r.n_inverted += r.mesh.cell_quality(c) <= 0;
+  std::vector<CellFailure> failures = failing_cells(r.mesh, threshold, size);
+  for (const CellFailure& f : failures) {
+    r.n_below_threshold += f.shape_failed(threshold);
+    r.n_below_min_edge += f.size_failed();
+  }
+  r.failures = worst_failures(std::move(failures), 10);
+}
+
 // Fills the distances, quality and size figures of the output r.mesh; `size`: the size
 // criterion on its cells; `surface`: each node's interface surface (nullptr: the target
 // point itself).
@@ -69,16 +85,7 @@ void finish_result(AdaptResult<M>& r, const IdVector<NodeId, Vec3>& target,
     r.n_reached += r.distance[v] == 0;
     r.n_near_interface += r.near_interface[v];
   }
-  r.min_quality = min_quality(mesh);
-  r.min_edge_ratio = min_edge_ratio(mesh, size);
-  for (CellId c : id_range<CellId>(mesh.n_cells())) {
-    const double q = mesh.cell_quality(c);
-    r.n_below_threshold += q < options.threshold;
-    r.n_inverted += q <= 0;
-  }
-  std::vector<CellFailure> failures = failing_cells(mesh, options.threshold, size);
-  for (const CellFailure& f : failures) r.n_below_min_edge += f.size_failed();
-  r.failures = worst_failures(std::move(failures), 10);
+  count_cells(r, size, options.threshold);
   r.local_size = size.local_size;
 }
 

@@ -172,6 +172,14 @@ for case in ("mesh", "flat"):
     check(code == 0 and pieces == serial,
           "%s on 3 ranks, pieces: exit %d (%s), VTK reads %d cells (%d serial) or other "
           "materials" % (case, code, err, len(pieces), len(serial)))
+# The same mesh as one unstructured legacy .vtk: rank 0 reads it and the ranks cut it as they
+# cut a .vtu; the gathered file is the serial one's bytes.
+legacy = vtk.vtkUnstructuredGridWriter()
+legacy.SetFileName(path("mesh.vtk"))
+legacy.SetInputData(unstructured(grid((13, 11, 17))))
+legacy.SetFileTypeToBinary()
+legacy.Write()
+RUNS.as_serial("assign", "legacy", "mesh.vtk")
 islands = RUNS.as_serial("assign", "mesh_islands", "mesh.pvtu",
                         "--min-island", "8")["assign"]["islands"]
 check(islands["reassigned"] > 3, "--min-island, unstructured: the serial run reassigns %r" % islands)
