@@ -8,6 +8,7 @@
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <functional>
 
@@ -28,8 +29,10 @@ namespace detail {
 void run_on_threads(int threads, const std::function<void(int)>& body);
 }  // namespace detail
 
-/// Calls f(i) for i in [0, n) on the library's threads, each thread a contiguous block of
-/// items. f must only write state owned by item i.
+/// Calls f(i) for i in [0, n) on the library's threads. The items go in consecutive chunks,
+/// each thread taking the next chunk when done with one, so a thread slowed down (a core
+/// shared with another process) takes fewer. f must only write state owned by item i: which
+/// thread runs an item never changes the result.
 template <class F>
 void parallel_for(std::int64_t n, F&& f) {
   const auto threads = static_cast<int>(std::min<std::int64_t>(n_threads(), n));
@@ -37,9 +40,13 @@ void parallel_for(std::int64_t n, F&& f) {
     for (std::int64_t i = 0; i < n; ++i) f(i);
     return;
   }
-  detail::run_on_threads(threads, [&](int k) {
-    const std::int64_t end = n * (k + 1) / threads;
-    for (std::int64_t i = n * k / threads; i < end; ++i) f(i);
+  const std::int64_t chunks = std::min<std::int64_t>(n, std::int64_t{8} * threads);
+  std::atomic<std::int64_t> next{0};
+  detail::run_on_threads(threads, [&](int) {
+    for (std::int64_t k = next++; k < chunks; k = next++) {
+      const std::int64_t end = n * (k + 1) / chunks;
+      for (std::int64_t i = n * k / chunks; i < end; ++i) f(i);
+    }
   });
 }
 
