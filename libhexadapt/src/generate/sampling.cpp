@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <vector>
 
 #include "cells.h"
 #include "hexadapt/core/error.h"
@@ -92,7 +93,9 @@ class Sampler {
         s_(o.samples),
         time_(o.time),
         steps_(steps),
-        shortcut_(o.shortcut) {}
+        shortcut_(o.shortcut) {
+    if (shortcut_ && scene_.flow && time_ != 0) traced_ = traced_points();
+  }
 
   CellCounts run(CellId c, Fractions& out) const {
     const auto p = binary_corners<M::dim>(mesh_, c);
@@ -106,6 +109,14 @@ class Sampler {
       const int m = scene_.layout.material_at(centre);
       for (int k = 0; k < n_; ++k) out(c, k) = k == m ? 1.0 : 0.0;
       return {true, false};
+    }
+    if (moves && !traced_.empty()) {
+      const Vec3 origin = trace_back(*scene_.flow, centre, time_, steps_);
+      if (scene_.layout.clearance(origin) > image_radius(c, origin)) {
+        const int m = scene_.layout.material_at(origin);
+        for (int k = 0; k < n_; ++k) out(c, k) = k == m ? 1.0 : 0.0;
+        return {true, false};
+      }
     }
     Weights w{};
     const int n_samples = ipow(s_, M::dim);
@@ -160,6 +171,27 @@ class Sampler {
       w[static_cast<std::size_t>(scene_.layout.material_at(x))] += det;
     }
   }
+  /// Every mesh point traced back to time 0 (each shared by the cells around it).
+  std::vector<Vec3> traced_points() const {
+    std::vector<Vec3> traced(mesh_.points.size());
+    parallel_for(static_cast<std::int64_t>(traced.size()), [&](std::int64_t i) {
+      const auto k = static_cast<std::size_t>(i);
+      traced[k] = trace_back(*scene_.flow, mesh_.points[k], time_, steps_);
+    });
+    return traced;
+  }
+  /// A radius around `origin` (the cell's centre traced back) that holds the cell's image at
+  /// time 0: twice the farthest traced corner. The flows are smooth at the scale of a cell,
+  /// whose image is close to the hull of its traced corners; the factor 2 covers its
+  /// curved edges many times over, so a cell taken as pure by it has all its samples in one
+  /// material.
+  double image_radius(CellId c, const Vec3& origin) const {
+    double r = 0;
+    const auto first = c.idx() * static_cast<std::size_t>(M::nodes_per_cell);
+    for (std::size_t v = 0; v < static_cast<std::size_t>(M::nodes_per_cell); ++v)
+      r = std::max(r, (traced_[mesh_.cells[first + v].idx()] - origin).norm());
+    return 2 * r * (1 + 1e-9) + 1e-12;
+  }
   static int ipow(int b, int e) {
     int r = 1;
     for (int i = 0; i < e; ++i) r *= b;
@@ -175,6 +207,7 @@ class Sampler {
   double time_;
   int steps_;
   bool shortcut_;
+  std::vector<Vec3> traced_;  ///< the points traced back (a moving scene with the shortcut)
 };
 
 template <class M>

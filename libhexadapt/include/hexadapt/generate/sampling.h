@@ -6,7 +6,10 @@
 // Each sample is traced back through the flow to time 0 (RK4) and classified by the layout.
 // Cells whose bounding ball lies farther than the layout's clearance from every interface
 // and outside the flow's support are classified by their centre: the result is exactly what
-// sampling them would give, only faster. Fractions are multiples of 2^-40 with the largest
+// sampling them would give, only faster. Inside a flow, the mesh points are traced back once
+// (each serves the cells around it), and a cell whose image at time 0 (a ball around its
+// traced centre, twice as wide as its traced corners reach) is clear of every interface is
+// classified by its traced centre: one trace for the cell instead of s^d. Fractions are multiples of 2^-40 with the largest
 // one taken as 1 minus the others, so they sum to exactly 1 in any order; a cell whose
 // samples all fall in one material is exactly pure. Parallel over cells, each cell on its
 // own: the output does not depend on the thread count.
