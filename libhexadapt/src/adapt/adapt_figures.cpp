@@ -48,6 +48,7 @@ AdaptFigures adapt_figures(const AdaptResult<M>& r, const IdVector<NodeId, char>
                            index_t cells_in, double seconds) {
   AdaptFigures f = common_figures(r, cells_in);
   f.seconds = seconds;
+  const SizeCriterion sizes{0, r.local_size};
   for (NodeId v : id_range<NodeId>(r.mesh.n_nodes())) {
     if (!counted[v]) continue;
     f.nodes += 1;
@@ -59,12 +60,9 @@ AdaptFigures adapt_figures(const AdaptResult<M>& r, const IdVector<NodeId, char>
     f.frozen_blocked += r.blocked[v] == static_cast<char>(BlockReason::frozen);
     f.dist_final += r.distance[v];
     f.surface_dist_final += r.surface_distance[v];
-    if (r.blocked[v] != 0 && (!f.farthest.valid || r.surface_distance[v] > f.farthest.distance)) {
-      double size = 0;
-      for (CellId c : r.mesh.node_cells(v)) size += r.local_size[c];
-      const auto n = static_cast<double>(r.mesh.node_cells(v).size());
-      f.farthest = {true, -1, r.surface_distance[v], n > 0 ? size / n : 0.0, r.mesh.point(v)};
-    }
+    if (r.blocked[v] != 0 && (!f.farthest.valid || r.surface_distance[v] > f.farthest.distance))
+      f.farthest = {true, -1, r.surface_distance[v], node_local_size(r.mesh, v, sizes),
+                    r.mesh.point(v)};
   }
   return f;
 }
