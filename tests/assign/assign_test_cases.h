@@ -58,8 +58,9 @@ Fractions ball_fractions(const M& mesh, const std::vector<std::pair<Vec3, double
   return f;
 }
 
-/// Structured points of an nx x ny (x nz) grid, moved by up to `amount` in each direction.
-inline std::vector<Vec3> jittered_points(int nx, int ny, int nz, double amount, unsigned seed) {
+/// Structured points of an nx x ny (x nz) grid, each (the boundary too) moved by up to
+/// `amount` in each direction.
+inline std::vector<Vec3> all_points_jittered(int nx, int ny, int nz, double amount, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> j(-amount, amount);
   std::vector<Vec3> p;

@@ -147,9 +147,9 @@ TEST(Correction, RandomHexGrids) {
 }
 
 TEST(Correction, JitteredGrids) {
-  const QuadMesh quads = make_quad_grid(10, 10, test::jittered_points(10, 10, 0, 0.25, 3));
+  const QuadMesh quads = make_quad_grid(10, 10, test::all_points_jittered(10, 10, 0, 0.25, 3));
   assign_and_check(quads, test::random_fractions(quads.n_cells(), 4, 3, 7));
-  const HexMesh hexes = make_hex_grid(5, 5, 5, test::jittered_points(5, 5, 5, 0.2, 4));
+  const HexMesh hexes = make_hex_grid(5, 5, 5, test::all_points_jittered(5, 5, 5, 0.2, 4));
   assign_and_check(hexes, test::random_fractions(hexes.n_cells(), 3, 3, 8));
 }
 
@@ -198,7 +198,7 @@ TEST(Correction, SameResultWhateverTheThreadCount) {
 // Renumbering nodes and cells must not change which material each cell gets.
 TEST(Correction, SameResultWhateverTheStorageOrder) {
   const int nx = 7, ny = 6, nz = 5;
-  const auto points = test::jittered_points(nx, ny, nz, 0.15, 9);
+  const auto points = test::all_points_jittered(nx, ny, nz, 0.15, 9);
   const auto cells = structured_hexes(nx, ny, nz);
   const HexMesh mesh(points, cells);
   const Fractions f = test::random_fractions(mesh.n_cells(), 3, 2, 43);

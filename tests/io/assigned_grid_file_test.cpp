@@ -10,7 +10,7 @@
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/mesh_file.h"
 #include "hexadapt/mesh/structured.h"
-#include "io/vtk_xml_test_util.h"
+#include "io/io_test_util.h"
 
 namespace hexadapt::io {
 namespace {

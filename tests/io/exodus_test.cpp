@@ -15,13 +15,10 @@
 #include "hexadapt/io/assigned_grid_file.h"
 #include "hexadapt/io/mesh_file.h"
 #include "hexadapt/mesh/structured.h"
+#include "io/io_test_util.h"
 
 namespace hexadapt::io {
 namespace {
-
-std::string temp_path(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("hexadapt_exodus_" + name)).string();
-}
 
 std::string bytes_of(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -32,12 +29,6 @@ std::string bytes_of(const std::string& path) {
 
 void write_bytes(const std::string& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary) << bytes;
-}
-
-std::vector<int> ids(const MeshData& d) {
-  std::vector<int> out;
-  for (NodeId n : d.cells) out.push_back(n.value());
-  return out;
 }
 
 // Two materials on a grid, the material index alternating by column, with fractions.
@@ -65,7 +56,7 @@ MeshData two_materials(MeshData d, int nx) {
 void expect_round_trip(const MeshData& d, const MeshData& r) {
   EXPECT_EQ(r.dim, d.dim);
   EXPECT_EQ(r.points, d.points);
-  EXPECT_EQ(ids(r), ids(d));
+  EXPECT_EQ(test::cell_ids(r), test::cell_ids(d));
   for (const char* name : {"material", "vf_steel", "vf_air"}) {
     ASSERT_NE(r.find_cell_array(name), nullptr) << name;
     EXPECT_EQ(r.find_cell_array(name)->values, d.find_cell_array(name)->values) << name;
@@ -80,7 +71,7 @@ void expect_round_trip(const MeshData& d, const MeshData& r) {
 
 TEST(Exodus, QuadsRoundTripInCellOrder) {
   const MeshData d = two_materials(from_mesh(make_quad_grid(4, 3)), 4);
-  const std::string path = temp_path("quads.exo");
+  const std::string path = test::temp_path("quads.exo");
   write_mesh(d, path);
   expect_round_trip(d, read_mesh(path));
   std::filesystem::remove(path);
@@ -89,7 +80,7 @@ TEST(Exodus, QuadsRoundTripInCellOrder) {
 TEST(Exodus, HexesRoundTripInCellOrder) {
   const MeshData d = two_materials(from_mesh(make_hex_grid(4, 2, 3)), 4);
   for (const char* ext : {".e", ".g"}) {
-    const std::string path = temp_path(std::string("hexes") + ext);
+    const std::string path = test::temp_path(std::string("hexes") + ext);
     write_mesh(d, path);
     expect_round_trip(d, read_mesh(path));
     std::filesystem::remove(path);
@@ -108,7 +99,7 @@ TEST(Exodus, MetadataComesBackFromTheInfoRecords) {
                 {"+lead", ""},
                 {"hexadapt_command", std::string(80, 'x')},
                 {"hexadapt_materials", join_material_names({"steel", "Body, Nose"})}};
-  const std::string path = temp_path("info.exo");
+  const std::string path = test::temp_path("info.exo");
   write_mesh(d, path);
   const MeshData r = read_mesh(path);
   std::filesystem::remove(path);
@@ -128,7 +119,7 @@ TEST(Exodus, RandomMetadataComesBackWhole) {
   d.metadata.clear();
   for (int k = 0; k < 60; ++k) d.metadata.emplace_back("k" + text(20), text(250));
   d.metadata.emplace_back("hexadapt_materials", "steel,air");
-  const std::string path = temp_path("random_info.exo");
+  const std::string path = test::temp_path("random_info.exo");
   write_mesh(d, path);
   const MeshData r = read_mesh(path);
   std::filesystem::remove(path);
@@ -142,7 +133,7 @@ TEST(Exodus, LongNamesAreKept) {
   MeshData d = two_materials(from_mesh(make_quad_grid(2, 1)), 2);
   const std::string name(60, 'n');
   d.metadata = {{"hexadapt_materials", "short," + name}};
-  const std::string path = temp_path("long.exo");
+  const std::string path = test::temp_path("long.exo");
   write_mesh(d, path);
   const MeshData r = read_mesh(path);
   std::string names;
@@ -154,7 +145,7 @@ TEST(Exodus, LongNamesAreKept) {
 
 TEST(Exodus, WithoutMaterialsOneBlock) {
   const MeshData d = from_mesh(make_quad_grid(2, 2));
-  const std::string path = temp_path("plain.exo");
+  const std::string path = test::temp_path("plain.exo");
   write_mesh(d, path);
   const MeshData r = read_mesh(path);
   ASSERT_NE(r.find_cell_array("material"), nullptr);
@@ -164,7 +155,7 @@ TEST(Exodus, WithoutMaterialsOneBlock) {
 
 TEST(Exodus, SameMeshSameBytes) {
   const MeshData d = two_materials(from_mesh(make_hex_grid(3, 3, 2)), 3);
-  const std::string a = temp_path("det_a.exo"), b = temp_path("det_b.exo");
+  const std::string a = test::temp_path("det_a.exo"), b = test::temp_path("det_b.exo");
   write_mesh(d, a);
   write_mesh(d, b);
   EXPECT_EQ(bytes_of(a), bytes_of(b));
@@ -176,7 +167,7 @@ TEST(Exodus, SetsOptionChangesTheFile) {
   const MeshData d = two_materials(from_mesh(make_quad_grid(4, 2)), 4);
   WriteOptions none;
   none.exodus_sets = ExodusSets::none;
-  const std::string a = temp_path("sets_none.exo"), b = temp_path("sets_all.exo");
+  const std::string a = test::temp_path("sets_none.exo"), b = test::temp_path("sets_all.exo");
   write_mesh(d, a, none);
   write_mesh(d, b);
   EXPECT_LT(bytes_of(a).size(), bytes_of(b).size());
@@ -192,7 +183,7 @@ TEST(Exodus, ParsesSetChoices) {
 }
 
 TEST(Exodus, AFailedWriteLeavesTheOldFile) {
-  const std::string path = temp_path("keep.exo");
+  const std::string path = test::temp_path("keep.exo");
   write_bytes(path, "old");
   MeshData bad = from_mesh(make_quad_grid(2, 1));
   bad.set_cell_array({"material", 1, ScalarType::int32, {0, -1}});
@@ -205,7 +196,7 @@ TEST(Exodus, AFailedWriteLeavesTheOldFile) {
 // A time series made with the Exodus API: fractions as element variables on 2 x 1 quads,
 // the form Sculpt reads, at times 0, 0.5 and 1.
 std::string time_series(const std::string& name, int stored_float_size = 8) {
-  const std::string path = temp_path(name);
+  const std::string path = test::temp_path(name);
   int cpu = 8, io = stored_float_size;
   const int id = ex_create(path.c_str(), EX_CLOBBER, &cpu, &io);
   EXPECT_GE(id, 0);
@@ -284,10 +275,10 @@ TEST(Exodus, VariablesKeepTheStoredPrecision) {
 
 TEST(Exodus, BadFilesAreInputErrors) {
   const MeshData d = two_materials(from_mesh(make_hex_grid(3, 2, 2)), 3);
-  const std::string good = temp_path("good.exo");
+  const std::string good = test::temp_path("good.exo");
   write_mesh(d, good);
   const std::string bytes = bytes_of(good);
-  const std::string bad = temp_path("bad.exo");
+  const std::string bad = test::temp_path("bad.exo");
   for (std::size_t keep : {std::size_t(0), std::size_t(3), std::size_t(40), bytes.size() / 4,
                            bytes.size() / 2, bytes.size() - 8}) {
     write_bytes(bad, bytes.substr(0, keep));
@@ -297,7 +288,7 @@ TEST(Exodus, BadFilesAreInputErrors) {
   EXPECT_THROW(read_mesh(bad), InputError);
   write_bytes(bad, "# vtk DataFile Version 4.2\n");
   EXPECT_THROW(read_mesh(bad), InputError);
-  EXPECT_THROW(read_mesh(temp_path("missing.exo")), IoError);
+  EXPECT_THROW(read_mesh(test::temp_path("missing.exo")), IoError);
   std::filesystem::remove(good);
   std::filesystem::remove(bad);
 }
@@ -305,7 +296,7 @@ TEST(Exodus, BadFilesAreInputErrors) {
 // Every cut of a valid file is refused (the netCDF library alone reads a cut tail as zeros).
 TEST(Exodus, EveryTruncationIsAnInputError) {
   const MeshData d = two_materials(from_mesh(make_quad_grid(3, 2)), 3);
-  const std::string good = temp_path("cut_good.exo"), bad = temp_path("cut.exo");
+  const std::string good = test::temp_path("cut_good.exo"), bad = test::temp_path("cut.exo");
   write_mesh(d, good);
   const std::string bytes = bytes_of(good);
   for (std::size_t keep = 0; keep < bytes.size(); keep += 1 + bytes.size() / 97) {
@@ -332,7 +323,7 @@ std::string with_dimension(std::string bytes, const std::string& name, std::uint
 
 TEST(Exodus, LyingSizesAreInputErrors) {
   const MeshData d = two_materials(from_mesh(make_hex_grid(2, 2, 1)), 2);
-  const std::string good = temp_path("lie_good.exo"), bad = temp_path("lie.exo");
+  const std::string good = test::temp_path("lie_good.exo"), bad = test::temp_path("lie.exo");
   write_mesh(d, good);
   const std::string bytes = bytes_of(good);
   for (const auto& [name, value] :
@@ -354,7 +345,7 @@ TEST(Exodus, LyingSizesAreInputErrors) {
 // its info records.
 std::string one_block(const std::string& name, int dim, const char* type, int per_element,
                       const std::vector<int>& conn, std::vector<std::string> info = {}) {
-  const std::string path = temp_path(name);
+  const std::string path = test::temp_path(name);
   int cpu = 8, io = 8;
   const int id = ex_create(path.c_str(), EX_CLOBBER, &cpu, &io);
   const int n_nodes = 8;
@@ -387,7 +378,7 @@ TEST(Exodus, InfoRecordsOfOtherWritersAreNotMetadata) {
 // A file of another tool: blocks 20 and 10 (in that order), one named, no `material`
 // variable and no element map: the blocks become the materials, in file order.
 TEST(Exodus, BlocksOfAnotherToolAreTheMaterials) {
-  const std::string path = temp_path("foreign.exo");
+  const std::string path = test::temp_path("foreign.exo");
   int cpu = 8, io = 8;
   const int id = ex_create(path.c_str(), EX_CLOBBER, &cpu, &io);
   ex_put_init(id, "foreign", 2, 6, 2, 2, 0, 0);
@@ -403,7 +394,7 @@ TEST(Exodus, BlocksOfAnotherToolAreTheMaterials) {
   ex_put_coord(id, x, y, nullptr);
   ex_close(id);
   const MeshData r = read_mesh(path);
-  EXPECT_EQ(ids(r), (std::vector<int>{1, 2, 5, 4, 0, 1, 4, 3}));
+  EXPECT_EQ(test::cell_ids(r), (std::vector<int>{1, 2, 5, 4, 0, 1, 4, 3}));
   EXPECT_EQ(r.find_cell_array("material")->values, (std::vector<double>{0, 1}));
   bool named = false;
   for (const auto& [k, v] : r.metadata)

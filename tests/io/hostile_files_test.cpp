@@ -11,11 +11,10 @@
 #include "hexadapt/io/text_case.h"
 #include "hexadapt/io/vtk_legacy.h"
 #include "hexadapt/io/vtk_xml.h"
+#include "io/io_test_util.h"
 
 namespace hexadapt::io {
 namespace {
-
-const std::string kHead = "# vtk DataFile Version 3.0\nhostile\nASCII\n";
 
 // The message of the InputError that reading `content` as `file` throws ("" if none).
 template <class Read>
@@ -94,14 +93,14 @@ TEST(HostileFiles, NanAndInfiniteCoordinatesAreRefusedWithThePointNumber) {
       "DATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n0 0 0 1 0 0 1 X 0 0 1 0\n"
       "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n9\n";
   for (const char* bad : {"nan", "inf", "-inf"}) {
-    std::string file = kHead + quad;
+    std::string file = test::kLegacyHead + quad;
     file.replace(file.find('X'), 1, bad);
     const std::string m = legacy_error(file, "nan.vtk");
     EXPECT_NE(m.find("nan.vtk"), std::string::npos) << bad << ": " << m;
     EXPECT_NE(m.find("point 2"), std::string::npos) << bad << ": " << m;
     EXPECT_NE(m.find("finite"), std::string::npos) << bad << ": " << m;
   }
-  const std::string sp = kHead +
+  const std::string sp = test::kLegacyHead +
                          "DATASET STRUCTURED_POINTS\nDIMENSIONS 3 2 1\nSPACING 1 1 1\n"
                          "ORIGIN 0 nan 0\n";
   const std::string m = legacy_error(sp, "sp.vtk");
@@ -126,7 +125,7 @@ TEST(HostileFiles, NanAndInfiniteCoordinatesAreRefusedWithThePointNumber) {
 }
 
 TEST(HostileFiles, LegacyReaderRefusesTwoArraysWithOneName) {
-  const std::string file = kHead +
+  const std::string file = test::kLegacyHead +
                            "DATASET STRUCTURED_POINTS\nDIMENSIONS 3 2 1\nSPACING 1 1 1\n"
                            "ORIGIN 0 0 0\nCELL_DATA 2\nSCALARS vf_a double 1\nLOOKUP_TABLE "
                            "default\n0.25 1\nSCALARS vf_a double 1\nLOOKUP_TABLE default\n0 0\n";
@@ -134,7 +133,7 @@ TEST(HostileFiles, LegacyReaderRefusesTwoArraysWithOneName) {
   EXPECT_NE(m.find("twice.vtk"), std::string::npos) << m;
   EXPECT_NE(m.find("two CELL_DATA arrays named 'vf_a'"), std::string::npos) << m;
   // The same name in point data and in cell data is two different arrays.
-  const std::string both = kHead +
+  const std::string both = test::kLegacyHead +
                            "DATASET STRUCTURED_POINTS\nDIMENSIONS 3 2 1\nSPACING 1 1 1\n"
                            "ORIGIN 0 0 0\nCELL_DATA 2\nSCALARS t double 1\nLOOKUP_TABLE "
                            "default\n0.25 1\nPOINT_DATA 6\nSCALARS t double 1\nLOOKUP_TABLE "

@@ -14,21 +14,14 @@
 #include <string>
 
 #include "hexadapt/core/error.h"
+#include "io/io_test_util.h"
 
 namespace hexadapt::io {
 namespace {
 
-std::vector<int> ids(const MeshData& d) {
-  std::vector<int> out;
-  for (NodeId n : d.cells) out.push_back(n.value());
-  return out;
-}
-
-const std::string kHead = "# vtk DataFile Version 3.0\ntest case\nASCII\n";
-
 TEST(VtkLegacy, StructuredPoints2DWithNamedLookupTable) {
   const MeshData d =
-      read_vtk_legacy(kHead +
+      read_vtk_legacy(test::kLegacyHead +
                           "DATASET STRUCTURED_POINTS\n"
                           "DIMENSIONS 3 2 1\nSPACING 0.5 2 1\nORIGIN 1 0 0\n"
                           "CELL_DATA 2\nSCALARS vf_a double 1\nLOOKUP_TABLE mine\n"
@@ -39,7 +32,7 @@ TEST(VtkLegacy, StructuredPoints2DWithNamedLookupTable) {
   EXPECT_EQ(d.n_cells(), 2);
   EXPECT_EQ(d.structured_cells, (std::array<int, 3>{2, 1, 0}));
   EXPECT_EQ(d.points[5], Vec3(2, 2, 0));
-  EXPECT_EQ(ids(d), (std::vector<int>{0, 1, 4, 3, 1, 2, 5, 4}));
+  EXPECT_EQ(test::cell_ids(d), (std::vector<int>{0, 1, 4, 3, 1, 2, 5, 4}));
   const DataArray* a = d.find_cell_array("vf_a");
   ASSERT_NE(a, nullptr);
   EXPECT_EQ(a->type, ScalarType::float64);
@@ -53,14 +46,14 @@ TEST(VtkLegacy, StructuredPoints2DWithNamedLookupTable) {
 
 TEST(VtkLegacy, StructuredPoints3DAndFlatAxisMappedToXY) {
   const MeshData d3 = read_vtk_legacy(
-      kHead + "DATASET STRUCTURED_POINTS\nDIMENSIONS 2 3 4\nORIGIN 0 0 0\nSPACING 1 1 1\n",
+      test::kLegacyHead + "DATASET STRUCTURED_POINTS\nDIMENSIONS 2 3 4\nORIGIN 0 0 0\nSPACING 1 1 1\n",
       "3d.vtk");
   EXPECT_EQ(d3.dim, 3);
   EXPECT_EQ(d3.n_cells(), 6);
   EXPECT_EQ(d3.structured_cells, (std::array<int, 3>{1, 2, 3}));
   // Flat along x: the (y, z) plane becomes (x, y).
   const MeshData d2 = read_vtk_legacy(
-      kHead + "DATASET STRUCTURED_POINTS\nDIMENSIONS 1 3 2\nORIGIN 7 0 0\nSPACING 1 1 1\n",
+      test::kLegacyHead + "DATASET STRUCTURED_POINTS\nDIMENSIONS 1 3 2\nORIGIN 7 0 0\nSPACING 1 1 1\n",
       "yz.vtk");
   EXPECT_EQ(d2.dim, 2);
   EXPECT_EQ(d2.n_cells(), 2);
@@ -69,7 +62,7 @@ TEST(VtkLegacy, StructuredPoints3DAndFlatAxisMappedToXY) {
 
 TEST(VtkLegacy, RectilinearGridKeepsCoordinatesAndCellOrder) {
   const MeshData d =
-      read_vtk_legacy(kHead +
+      read_vtk_legacy(test::kLegacyHead +
                           "DATASET RECTILINEAR_GRID\nDIMENSIONS 3 2 1\n"
                           "X_COORDINATES 3 float\n0 1 3\nY_COORDINATES 2 double\n"
                           "0 0.5\nZ_COORDINATES 1 int\n0\n"
@@ -86,7 +79,7 @@ TEST(VtkLegacy, RectilinearGridKeepsCoordinatesAndCellOrder) {
 
 TEST(VtkLegacy, AsciiNumbersInEveryNotation) {
   const MeshData d =
-      read_vtk_legacy(kHead +
+      read_vtk_legacy(test::kLegacyHead +
                           "DATASET RECTILINEAR_GRID\nDIMENSIONS 2 2 1\n"
                           "X_COORDINATES 2 double\n+0 1e+00\nY_COORDINATES 2 double\n"
                           "-1.5E-1 .5\nZ_COORDINATES 1 double\n0\n"
@@ -102,7 +95,7 @@ TEST(VtkLegacy, AsciiNumbersInEveryNotation) {
 
 TEST(VtkLegacy, StructuredGridWithVectorsAndMetadata) {
   const MeshData d = read_vtk_legacy(
-      kHead +
+      test::kLegacyHead +
           "DATASET STRUCTURED_GRID\nDIMENSIONS 2 2 1\nPOINTS 4 float\n0 0 0 1 0 0 0 1 0 1 1.5 0\n"
           "METADATA\nINFORMATION 1\nNAME L2_NORM_RANGE LOCATION vtkDataArray\nDATA 2 0 1.8\n\n"
           "POINT_DATA 4\nVECTORS v double\n1 2 3 4 5 6 7 8 9 10 11 12\n"
@@ -120,7 +113,7 @@ const std::string kTwoQuads =
 
 TEST(VtkLegacy, UnstructuredClassicQuadsPixelsAndFields) {
   const MeshData d = read_vtk_legacy(
-      kHead + kTwoQuads +
+      test::kLegacyHead + kTwoQuads +
           "CELLS 2 10\n4 0 1 4 3\n4 1 2 4 5\nCELL_TYPES 2\n9 8\n"
           "CELL_DATA 2\nSCALARS two float 2\nLOOKUP_TABLE default\n1 2 3 4\n"
           "FIELD FieldData 2\nf%20x 3 2 short\n1 2 3 4 5 6\nMETADATA\nINFORMATION 0\n\n"
@@ -128,7 +121,7 @@ TEST(VtkLegacy, UnstructuredClassicQuadsPixelsAndFields) {
       "ug.vtk");
   ASSERT_EQ(d.dim, 2);
   // The pixel (1 2 4 5) becomes the counter-clockwise quad 1 2 5 4.
-  EXPECT_EQ(ids(d), (std::vector<int>{0, 1, 4, 3, 1, 2, 5, 4}));
+  EXPECT_EQ(test::cell_ids(d), (std::vector<int>{0, 1, 4, 3, 1, 2, 5, 4}));
   EXPECT_EQ(d.find_cell_array("two")->n_components, 2);
   const DataArray* f = d.find_cell_array("f x");
   ASSERT_NE(f, nullptr);
@@ -149,7 +142,7 @@ TEST(VtkLegacy, UnstructuredVersion51HexahedronToBinaryOrder) {
           "CELL_TYPES 1\n12\n",
       "hex.vtk");
   ASSERT_EQ(d.dim, 3);
-  EXPECT_EQ(ids(d), (std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7}));
+  EXPECT_EQ(test::cell_ids(d), (std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7}));
   const auto note = std::find_if(d.metadata.begin(), d.metadata.end(),
                                  [](const auto& kv) { return kv.first == "note"; });
   ASSERT_NE(note, d.metadata.end());
@@ -190,7 +183,7 @@ TEST(VtkLegacy, BinaryBothCellLayouts) {
   for (bool layout : {false, true}) {
     const MeshData d = read_vtk_legacy(binary_voxel_file(layout), "bin.vtk");
     ASSERT_EQ(d.dim, 3) << layout;
-    EXPECT_EQ(ids(d), (std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7}));
+    EXPECT_EQ(test::cell_ids(d), (std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7}));
     EXPECT_EQ(d.points[6], Vec3(0, 1, 1));
     EXPECT_EQ(d.find_cell_array("s")->values, std::vector<double>{513});
     EXPECT_EQ(d.find_cell_array("s")->type, ScalarType::uint16);
@@ -198,10 +191,6 @@ TEST(VtkLegacy, BinaryBothCellLayouts) {
     EXPECT_EQ(d.find_point_array("c")->values[7], -7);
     EXPECT_EQ(d.find_point_array("c")->type, ScalarType::int8);
   }
-}
-
-std::string temp_path(const std::string& name) {
-  return (::testing::TempDir() + "/hexadapt_" + name);
 }
 
 TEST(VtkLegacy, WriterRoundTripKeepsTypesAndHexOrder) {
@@ -212,14 +201,14 @@ TEST(VtkLegacy, WriterRoundTripKeepsTypesAndHexOrder) {
   big.values = {-(1LL << 40)};
   d.set_cell_array(big);
   d.metadata = {{"tool", "hexadapt-test"}, {"options", std::string(400, 'x')}};
-  const std::string path = temp_path("roundtrip.vtk");
+  const std::string path = test::temp_path("roundtrip.vtk");
   write_vtk_legacy(d, path);
   std::ifstream in(path, std::ios::binary);
   std::ostringstream buffer;
   buffer << in.rdbuf();
   const std::string content = buffer.str();
   const MeshData r = read_vtk_legacy(content, path);
-  EXPECT_EQ(ids(r), ids(d));
+  EXPECT_EQ(test::cell_ids(r), test::cell_ids(d));
   EXPECT_EQ(r.points, d.points);
   ASSERT_EQ(r.cell_data.size(), 3u);
   for (const DataArray& a : d.cell_data) {
@@ -244,7 +233,7 @@ TEST(VtkLegacy, WriterRoundTripKeepsTypesAndHexOrder) {
 }
 
 std::string written_legacy(const MeshData& d, const std::string& name) {
-  const std::string path = temp_path(name);
+  const std::string path = test::temp_path(name);
   write_vtk_legacy(d, path);
   std::ifstream in(path, std::ios::binary);
   std::ostringstream buffer;
@@ -282,10 +271,10 @@ TEST(VtkLegacy, TitleHasWholePairsThisFilesFirstAndTheCommandIsKeptExactly) {
             "hexadapt_tool=hexadapt-generate; hexadapt_version=0.1.0; "
             "hexadapt_command=hexadapt-generate triple-point -o in.vtu; ... 1 more");
   // The command whole, in the data set's field data, then every entry; read back as they were.
-  EXPECT_NE(content.find("\nFIELD FieldData 2\nhexadapt_command 1 " +
-                         std::to_string(command.size()) + " char\n" + command +
-                         "\nhexadapt_metadata 1 "),
-            std::string::npos);
+  EXPECT_NE(
+      content.find("\nFIELD FieldData 2\nhexadapt_command 1 " + std::to_string(command.size()) +
+                   " char\n" + command + "\nhexadapt_metadata 1 "),
+      std::string::npos);
   const MeshData r = read_vtk_legacy(content, "provenance.vtk");
   EXPECT_EQ(r.metadata, d.metadata);
   EXPECT_EQ(r.points, d.points);
@@ -318,13 +307,13 @@ struct Malformed {
 const std::string kHexCells = "CELLS 1 9\n8 0 1 3 2 4 5 7 6\nCELL_TYPES 1\n12\n";
 
 std::vector<Malformed> malformed_cases() {
-  const std::string ug = kHead + "DATASET UNSTRUCTURED_GRID\n";
+  const std::string ug = test::kLegacyHead + "DATASET UNSTRUCTURED_GRID\n";
   const std::string bin = "# vtk DataFile Version 4.2\nt\nBINARY\nDATASET UNSTRUCTURED_GRID\n";
   return {
       {"not vtk", "hello\n", {"line 1", "not a legacy VTK file"}},
       {"no mode", "# vtk DataFile Version 3.0\nt\nTEXT\n", {"line 3", "ASCII or BINARY"}},
-      {"no dataset", kHead + "POINTS 1 float\n", {"expected DATASET"}},
-      {"polydata", kHead + "DATASET POLYDATA\n", {"unsupported data set type 'POLYDATA'"}},
+      {"no dataset", test::kLegacyHead + "POINTS 1 float\n", {"expected DATASET"}},
+      {"polydata", test::kLegacyHead + "DATASET POLYDATA\n", {"unsupported data set type 'POLYDATA'"}},
       {"truncated points",
        ug + "POINTS 4 float\n0 0 0 1 0 0\n",
        {"line 5", "ends before the 12 point coordinates"}},
@@ -381,22 +370,22 @@ std::vector<Malformed> malformed_cases() {
        ug + kCubePoints + kHexCells + "CELL_DATA 1\nSCALARS s float\nLOOKUP_TABLE default\n",
        {"end of file", "array values"}},
       {"rectilinear count",
-       kHead + "DATASET RECTILINEAR_GRID\nDIMENSIONS 2 2 1\nX_COORDINATES 3 float\n0 1 2\n",
+       test::kLegacyHead + "DATASET RECTILINEAR_GRID\nDIMENSIONS 2 2 1\nX_COORDINATES 3 float\n0 1 2\n",
        {"line 6", "expected 2 coordinates"}},
       {"rectilinear missing axis",
-       kHead + "DATASET RECTILINEAR_GRID\nDIMENSIONS 2 2 1\nX_COORDINATES 2 float\n0 1\n",
+       test::kLegacyHead + "DATASET RECTILINEAR_GRID\nDIMENSIONS 2 2 1\nX_COORDINATES 2 float\n0 1\n",
        {"needs X_COORDINATES, Y_COORDINATES and Z_COORDINATES"}},
       {"structured points count",
-       kHead + "DATASET STRUCTURED_GRID\nDIMENSIONS 2 2 1\nPOINTS 5 float\n",
+       test::kLegacyHead + "DATASET STRUCTURED_GRID\nDIMENSIONS 2 2 1\nPOINTS 5 float\n",
        {"POINTS 5 does not match DIMENSIONS (4 points)"}},
-      {"zero dimension", kHead + "DATASET STRUCTURED_POINTS\nDIMENSIONS 2 0 1\n", {"out of range"}},
+      {"zero dimension", test::kLegacyHead + "DATASET STRUCTURED_POINTS\nDIMENSIONS 2 0 1\n", {"out of range"}},
       {"huge dimensions",
-       kHead + "DATASET STRUCTURED_POINTS\nDIMENSIONS 100000 100000 100000\n",
+       test::kLegacyHead + "DATASET STRUCTURED_POINTS\nDIMENSIONS 100000 100000 100000\n",
        {"32-bit ids"}},
       {"lattice without data",
-       kHead + "DATASET STRUCTURED_POINTS\nDIMENSIONS 2000 2000 2\n",
+       test::kLegacyHead + "DATASET STRUCTURED_POINTS\nDIMENSIONS 2000 2000 2\n",
        {"announce 8000000 points but only"}},
-      {"line of points", kHead + "DATASET STRUCTURED_POINTS\nDIMENSIONS 5 1 1\n", {"single row"}},
+      {"line of points", test::kLegacyHead + "DATASET STRUCTURED_POINTS\nDIMENSIONS 5 1 1\n", {"single row"}},
       {"binary lying size",
        bin + "POINTS 100000000 float\n" + std::string(24, '\0'),
        {"byte 85", "300000000 point coordinates", "24 bytes left"}},
@@ -441,7 +430,7 @@ TEST(VtkLegacy, LargeAsciiFileParsesQuickly) {
   // 100 x 100 x 50 = 500 k hexes as an ASCII rectilinear grid with one cell array. Guards
   // against quadratic steps (the limit is loose for sanitizer builds); the time is recorded.
   const int nx = 100, ny = 100, nz = 50;
-  std::string f = kHead + "DATASET RECTILINEAR_GRID\nDIMENSIONS 101 101 51\n";
+  std::string f = test::kLegacyHead + "DATASET RECTILINEAR_GRID\nDIMENSIONS 101 101 51\n";
   auto axis = [&](const char* name, int n) {
     f += std::string(name) + " " + std::to_string(n + 1) + " double\n";
     for (int i = 0; i <= n; ++i) f += std::to_string(0.01 * i) + " ";

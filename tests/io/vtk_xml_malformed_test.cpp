@@ -6,7 +6,7 @@
 
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/vtk_xml.h"
-#include "io/vtk_xml_test_util.h"
+#include "io/io_test_util.h"
 
 namespace hexadapt::io {
 namespace {
@@ -55,18 +55,14 @@ std::string written(bool compress) {
 }
 
 // Byte position of the first array's header (offset 0) in appended data.
-std::size_t appended_start(const std::string& s) {
-  return s.find('_', s.find("<AppendedData")) + 1;
-}
-
 std::string set_word(std::string s, std::size_t word, std::uint64_t value) {
-  std::memcpy(&s[appended_start(s) + 8 * word], &value, 8);
+  std::memcpy(&s[test::appended_start(s) + 8 * word], &value, 8);
   return s;
 }
 
 std::uint64_t get_word(const std::string& s, std::size_t word) {
   std::uint64_t v;
-  std::memcpy(&v, &s[appended_start(s) + 8 * word], 8);
+  std::memcpy(&v, &s[test::appended_start(s) + 8 * word], 8);
   return v;
 }
 
@@ -86,7 +82,7 @@ std::vector<Case> cases() {
   const std::string raw = written(false), zlib = written(true);
   const std::uint64_t n_blocks = get_word(zlib, 0);
   std::string corrupt = zlib;
-  corrupt[appended_start(zlib) + 8 * (3 + n_blocks) + 2] ^= 0x55;
+  corrupt[test::appended_start(zlib) + 8 * (3 + n_blocks) + 2] ^= 0x55;
   return {
       {"not XML", "hello", "malformed XML"},
       {"truncated XML", ascii_quad.substr(0, 300), "malformed XML"},
@@ -168,7 +164,7 @@ std::vector<Case> cases() {
                "<Piece Extent=\"0 2 0 2 0 2\"><CellData><DataArray type=\"Int8\" Name=\"m\" "
                "format=\"ascii\">1 2 3</DataArray></CellData>"),
        "expected 8 values"},
-      {"appended truncated", raw.substr(0, appended_start(raw) + 40), "truncated"},
+      {"appended truncated", raw.substr(0, test::appended_start(raw) + 40), "truncated"},
       {"appended cut at end", raw.substr(0, raw.size() - 200), "truncated"},
       {"no underscore", replace(raw, "\"raw\">_", "\"raw\">x"), "expected '_'"},
       {"offset beyond end", replace(raw, "offset=\"0\"", "offset=\"99999999\""), "beyond the end"},

@@ -9,30 +9,10 @@
 #include "hexadapt/core/parallel.h"
 #include "hexadapt/io/assigned_grid_file.h"
 #include "hexadapt/io/vtk_xml.h"
-#include "io/vtk_xml_test_util.h"
+#include "io/io_test_util.h"
 
 namespace hexadapt::io {
 namespace {
-
-void expect_same(const MeshData& a, const MeshData& b) {
-  ASSERT_EQ(a.dim, b.dim);
-  ASSERT_EQ(a.points.size(), b.points.size());
-  for (std::size_t k = 0; k < a.points.size(); ++k) EXPECT_EQ(a.points[k], b.points[k]) << k;
-  EXPECT_EQ(a.cells, b.cells);
-  ASSERT_EQ(a.cell_data.size(), b.cell_data.size());
-  for (std::size_t k = 0; k < a.cell_data.size(); ++k) {
-    EXPECT_EQ(a.cell_data[k].name, b.cell_data[k].name);
-    EXPECT_EQ(a.cell_data[k].type, b.cell_data[k].type) << a.cell_data[k].name;
-    EXPECT_EQ(a.cell_data[k].values, b.cell_data[k].values) << a.cell_data[k].name;
-  }
-  ASSERT_EQ(a.point_data.size(), b.point_data.size());
-  for (std::size_t k = 0; k < a.point_data.size(); ++k) {
-    EXPECT_EQ(a.point_data[k].name, b.point_data[k].name);
-    EXPECT_EQ(a.point_data[k].n_components, b.point_data[k].n_components);
-    EXPECT_EQ(a.point_data[k].values, b.point_data[k].values);
-  }
-  EXPECT_EQ(a.metadata, b.metadata);
-}
 
 MeshData write_and_read(const MeshData& d, bool vts, const WriteOptions& options) {
   const std::string path = test::temp_path(vts ? "w.vts" : "w.vtu");
@@ -212,7 +192,7 @@ TEST(VtkXmlWriter, VtuRoundTripsHexesAndQuadsCompressedOrNot) {
       o.compress_above = 100;
       MeshData back = write_and_read(d, false, o);
       back.structured_cells = d.structured_cells;  // a .vtu is unstructured
-      expect_same(d, back);
+      test::expect_same(d, back);
     }
 }
 
@@ -220,7 +200,7 @@ TEST(VtkXmlWriter, VtsRoundTripsStructuredData) {
   for (bool hexes : {true, false}) {
     const MeshData d = test::sample_mesh(4, hexes);
     const MeshData back = write_and_read(d, true, {});
-    expect_same(d, back);
+    test::expect_same(d, back);
     EXPECT_EQ(back.structured_cells, d.structured_cells);
   }
 }
@@ -244,7 +224,7 @@ TEST(VtkXmlWriter, CompressionIsDeclaredOnlyWhenSomeArrayIsLarge) {
   write_vtu(d, path, o);
   const std::string compressed = test::read_text(path);
   EXPECT_NE(compressed.find("compressor=\"vtkZLibDataCompressor\""), std::string::npos);
-  expect_same(d, read_vtk_xml(compressed, path));
+  test::expect_same(d, read_vtk_xml(compressed, path));
   std::filesystem::remove(path);
 }
 
@@ -258,7 +238,7 @@ TEST(VtkXmlWriter, BytesDoNotDependOnTheThreadCount) {
     const std::string bytes = test::read_text(path);
     if (first.empty()) first = bytes;
     EXPECT_EQ(bytes, first) << threads << " threads";
-    expect_same(d, read_vtk_xml(bytes, path));
+    test::expect_same(d, read_vtk_xml(bytes, path));
   }
   set_threads(0);
   std::filesystem::remove(path);

@@ -39,7 +39,7 @@ TEST(RenderTicks, DataRangeStartingAboveItsRoundValues) {
 
 // The step between ticks is 1, 2 or 5 times a power of ten (to the rounding of doubles of the
 // range's magnitude: a part in 1e6 of a step 1e-8 of the values).
-bool round_step(double step) {
+bool is_round_step(double step) {
   const double unit = std::pow(10.0, std::floor(std::log10(step) + 1e-9));
   for (double m : {1.0, 2.0, 5.0, 10.0})
     if (std::abs(step - m * unit) <= 1e-6 * step) return true;
@@ -88,7 +88,7 @@ TEST(RenderTicks, AnyRangeGivesRoundDistinctReadableTicksInside) {
       const double gap = t[k].value - t[k - 1].value;
       EXPECT_GT(gap, 0);
       EXPECT_NEAR(gap, step, 1e-6 * step);
-      EXPECT_TRUE(round_step(gap)) << gap;
+      EXPECT_TRUE(is_round_step(gap)) << gap;
     }
   }
 }

@@ -10,7 +10,6 @@ namespace hexadapt::generate {
 namespace {
 
 constexpr double inf = std::numeric_limits<double>::infinity();
-constexpr double pi = 3.141592653589793;
 
 /// A point of the case's plane (2D: z = 0) or space.
 Vec3 at(int dim, double x, double y, double z) {

@@ -9,7 +9,6 @@
 namespace hexadapt::generate {
 
 namespace {
-constexpr double pi = 3.141592653589793;
 
 double square(double x) {
   return x * x;

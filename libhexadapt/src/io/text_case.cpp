@@ -15,8 +15,6 @@ namespace hexadapt::io {
 
 namespace {
 
-constexpr std::int64_t kMaxIds = std::numeric_limits<index_t>::max();
-
 // Number of tokens on the first non-blank line after the current position (not consumed).
 std::size_t tokens_on_next_line(LegacyScanner& s) {
   LegacyScanner look = s;
@@ -42,10 +40,10 @@ void read_structured_mesh(LegacyScanner& s, int dim, MeshData& data, CellNumberi
   std::array<std::int64_t, 3> dims{2, 2, 1};
   std::int64_t n_points = 1;
   for (int a = 0; a < dim; ++a) {
-    const auto n = s.integer("a number of cells per axis", 1, kMaxIds - 1);
+    const auto n = s.integer("a number of cells per axis", 1, max_legacy_id - 1);
     dims[static_cast<std::size_t>(a)] = n + 1;
     n_points *= n + 1;
-    if (n_points > kMaxIds) s.fail("too many cells for 32-bit ids");
+    if (n_points > max_legacy_id) s.fail("too many cells for 32-bit ids");
   }
   // Refuse millions of cells announced in a file too small to list fractions for them,
   // before allocating the lattice.
@@ -64,15 +62,15 @@ void read_structured_mesh(LegacyScanner& s, int dim, MeshData& data, CellNumberi
 }
 
 void read_unstructured_mesh(LegacyScanner& s, MeshData& data, CellNumbering& numbering) {
-  const auto n_nodes = s.integer("a number of nodes", 0, kMaxIds);
+  const auto n_nodes = s.integer("a number of nodes", 0, max_legacy_id);
   static constexpr LegacyType kDouble{"double", ScalarType::float64, 8, true};
   const auto xyz = s.reals(kDouble, 3 * static_cast<std::size_t>(n_nodes), "node coordinates");
   for (std::size_t p = 0; p < static_cast<std::size_t>(n_nodes); ++p)
     data.points.emplace_back(xyz[3 * p], xyz[3 * p + 1], xyz[3 * p + 2]);
-  const auto n_cells = s.integer("a number of cells", 0, kMaxIds);
+  const auto n_cells = s.integer("a number of cells", 0, max_legacy_id);
   for (std::int64_t c = 0; c < n_cells; ++c) {
     const std::size_t at = s.mark();
-    const auto n = s.integer("a number of cell nodes", 0, kMaxIds);
+    const auto n = s.integer("a number of cell nodes", 0, max_legacy_id);
     if (n != 4)
       s.fail_at(at, "cell " + std::to_string(c) + " has " + std::to_string(n) +
                         " nodes, expected 4 (quads)");
@@ -102,7 +100,7 @@ struct BlockMaterials {
 void read_material(LegacyScanner& s, const CellNumbering& numbering, BlockMaterials& block,
                    Listed& listed) {
   const std::size_t at = s.mark();
-  const auto index = s.integer("a material index", 0, kMaxIds);
+  const auto index = s.integer("a material index", 0, max_legacy_id);
   if (std::find(block.indices.begin(), block.indices.end(), index) != block.indices.end())
     s.fail_at(at, "material index " + std::to_string(index) + " listed twice");
   block.indices.push_back(index);

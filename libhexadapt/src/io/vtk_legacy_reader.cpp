@@ -16,7 +16,6 @@ namespace {
 
 enum class Kind { points, rectilinear, structured, unstructured };
 
-constexpr std::int64_t kMaxIds = std::numeric_limits<index_t>::max();
 
 struct Geometry {
   Kind kind = Kind::unstructured;
@@ -35,13 +34,13 @@ std::int64_t n_structured_points(const LegacyScanner& s, const Geometry& g) {
   std::int64_t n = 1;
   for (std::int64_t d : g.dims) {
     n *= d;
-    if (n > kMaxIds) s.fail("DIMENSIONS give more points than 32-bit ids can number");
+    if (n > max_legacy_id) s.fail("DIMENSIONS give more points than 32-bit ids can number");
   }
   return n;
 }
 
 void read_dimensions(LegacyScanner& s, Geometry& g) {
-  for (auto& d : g.dims) d = s.integer("a dimension", 1, kMaxIds);
+  for (auto& d : g.dims) d = s.integer("a dimension", 1, max_legacy_id);
   g.have_dims = true;
   n_structured_points(s, g);
 }
@@ -54,7 +53,7 @@ Vec3 read_vec3(LegacyScanner& s, const char* what) {
 
 void read_points(LegacyScanner& s, Geometry& g) {
   const std::size_t at = s.mark();
-  const auto n = s.integer("a number of points", 0, kMaxIds);
+  const auto n = s.integer("a number of points", 0, max_legacy_id);
   if (g.kind == Kind::structured && g.have_dims && n != n_structured_points(s, g))
     s.fail_at(at, "POINTS " + std::to_string(n) + " does not match DIMENSIONS (" +
                       std::to_string(n_structured_points(s, g)) + " points)");
@@ -68,7 +67,7 @@ void read_points(LegacyScanner& s, Geometry& g) {
 
 void read_coordinates(LegacyScanner& s, Geometry& g, int axis) {
   const std::size_t at = s.mark();
-  const auto n = s.integer("a number of coordinates", 1, kMaxIds);
+  const auto n = s.integer("a number of coordinates", 1, max_legacy_id);
   if (!g.have_dims) s.fail_at(at, "coordinates before DIMENSIONS");
   if (n != g.dims[static_cast<std::size_t>(axis)])
     s.fail_at(at, "expected " + std::to_string(g.dims[static_cast<std::size_t>(axis)]) +
@@ -120,7 +119,7 @@ void read_offset_cells(LegacyScanner& s, Geometry& g, std::int64_t n_off, std::i
 }
 
 void read_cells(LegacyScanner& s, Geometry& g) {
-  const auto n = s.integer("a number of cells", 0, kMaxIds);
+  const auto n = s.integer("a number of cells", 0, max_legacy_id);
   const auto size = s.integer("a cell list size", 0, INT64_MAX);
   // The 5.x layout is recognised by its OFFSETS line rather than by the version number.
   if (keyword_is(s.peek_token(), "OFFSETS"))
@@ -133,7 +132,7 @@ void read_cells(LegacyScanner& s, Geometry& g) {
 void read_cell_types(LegacyScanner& s, Geometry& g) {
   static constexpr LegacyType kInt{"int", ScalarType::int32, 4, false};
   const std::size_t at = s.mark();
-  const auto n = s.integer("a number of cell types", 0, kMaxIds);
+  const auto n = s.integer("a number of cell types", 0, max_legacy_id);
   if (!g.have_cells) s.fail_at(at, "CELL_TYPES before CELLS");
   const auto n_cells = static_cast<std::int64_t>(g.offsets.size()) - 1;
   if (n != n_cells)

@@ -13,7 +13,7 @@ Json vec(const Vec3& p) {
   return Json::array({p.x(), p.y(), p.z()});
 }
 
-Json stats(const QualityStats& s) {
+Json stats_json(const QualityStats& s) {
   return {{"min", s.min}, {"mean", s.mean}, {"max", s.max}};
 }
 
@@ -90,8 +90,8 @@ std::string quality_report_json(const QualityReport& r) {
   Json q;
   q["passed"] = r.quality_ok();
   q["threshold"] = r.threshold;
-  q["scaled_jacobian"] = stats(r.scaled_jacobian);
-  q["shape"] = stats(r.shape);
+  q["scaled_jacobian"] = stats_json(r.scaled_jacobian);
+  q["shape"] = stats_json(r.shape);
   q["histogram"] = {{"lo", r.histogram.lo},
                     {"hi", r.histogram.hi},
                     {"bins", r.histogram.counts.size()},

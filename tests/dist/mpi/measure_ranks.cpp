@@ -18,10 +18,10 @@
 namespace hexadapt {
 namespace {
 
-constexpr int nx = 6, ny = 5, nz = 4;  // cells per axis of the grid
+constexpr int gx = 6, gy = 5, gz = 4;  // cells per axis of the grid
 
 index_t grid_node(int i, int j, int k) {
-  return static_cast<index_t>(i + (nx + 1) * (j + (ny + 1) * k));
+  return static_cast<index_t>(i + (gx + 1) * (j + (gy + 1) * k));
 }
 
 // A hex given by its nodes in the kernels' order (x fastest, then y, then z).
@@ -34,11 +34,11 @@ index_t add_point(io::MeshData& d, const Vec3& p) {
   return static_cast<index_t>(d.points.size() - 1);
 }
 
-// Four half-size cubes on the top face of grid cell (2, 2, nz - 1): the five nodes inside
+// Four half-size cubes on the top face of grid cell (2, 2, gz - 1): the five nodes inside
 // that face (edge middles, centre) hang on it.
 void add_hanging_block(io::MeshData& d) {
-  const std::array<index_t, 4> c = {grid_node(2, 2, nz), grid_node(3, 2, nz), grid_node(3, 3, nz),
-                                    grid_node(2, 3, nz)};
+  const std::array<index_t, 4> c = {grid_node(2, 2, gz), grid_node(3, 2, gz), grid_node(3, 3, gz),
+                                    grid_node(2, 3, gz)};
   const auto at = [&](double u, double v) {  // the bilinear face at (u, v)
     const auto& p = d.points;
     return (1 - u) * (1 - v) * p[c[0]] + u * (1 - v) * p[c[1]] + u * v * p[c[2]] +
@@ -62,11 +62,11 @@ void add_hanging_block(io::MeshData& d) {
 io::MeshData defective_mesh(double scale) {
   io::MeshData d;
   d.dim = 3;
-  for (int k = 0; k <= nz; ++k)
-    for (int j = 0; j <= ny; ++j)
-      for (int i = 0; i <= nx; ++i) {
+  for (int k = 0; k <= gz; ++k)
+    for (int j = 0; j <= gy; ++j)
+      for (int i = 0; i <= gx; ++i) {
         const double g = grid_node(i, j, k);
-        const bool inside = i > 0 && i < nx && j > 0 && j < ny && k > 0 && k < nz;
+        const bool inside = i > 0 && i < gx && j > 0 && j < gy && k > 0 && k < gz;
         const Vec3 jitter =
             inside
                 ? Vec3(0.2 * Vec3(std::sin(1.3 * g), std::sin(2.1 * g + 1), std::sin(0.7 * g + 2)))
@@ -74,7 +74,7 @@ io::MeshData defective_mesh(double scale) {
         d.points.push_back(Vec3(i, j, k) + jitter);
       }
   std::vector<NodeId> cells;
-  append_structured_cells(nx, ny, nz, cells);
+  append_structured_cells(gx, gy, gz, cells);
   d.cells = cells;
   // An inverted cell: bottom and top swapped.
   std::swap_ranges(d.cells.begin() + 8 * 17, d.cells.begin() + 8 * 17 + 4,
@@ -83,7 +83,7 @@ io::MeshData defective_mesh(double scale) {
   d.cells[8 * 40] = NodeId(add_point(d, d.points[d.cells[8 * 40].idx()]));
   add_hanging_block(d);
   // A bow-tie: a cube touching the grid at its far corner only.
-  const index_t corner = grid_node(nx, ny, nz);
+  const index_t corner = grid_node(gx, gy, gz);
   std::array<index_t, 8> cube{};
   for (int v = 0; v < 8; ++v)
     cube[static_cast<std::size_t>(v)] =

@@ -13,11 +13,11 @@
 namespace hexadapt {
 namespace {
 
-constexpr int n = 12;  // cells per axis
+constexpr int side = 12;  // cells per axis
 
 std::vector<std::int64_t> grid_cells() {
   std::vector<NodeId> cells;
-  append_structured_cells(n, n, n, cells);
+  append_structured_cells(side, side, side, cells);
   std::vector<std::int64_t> out;
   for (const NodeId c : cells) out.push_back(c.value());
   return out;
@@ -25,8 +25,8 @@ std::vector<std::int64_t> grid_cells() {
 
 // Grid node g's point (i, j, k), and the point array's value there.
 Vec3 grid_point(std::int64_t g) {
-  return {static_cast<double>(g % (n + 1)), static_cast<double>(g / (n + 1) % (n + 1)),
-          static_cast<double>(g / ((n + 1) * (n + 1)))};
+  return {static_cast<double>(g % (side + 1)), static_cast<double>(g / (side + 1) % (side + 1)),
+          static_cast<double>(g / ((side + 1) * (side + 1)))};
 }
 
 double point_sum(const Vec3& p) {
@@ -37,12 +37,12 @@ double point_sum(const Vec3& p) {
 // the first ranks one more), with the nodes they use and arrays of known values.
 io::MeshPart grid_part() {
   const int rank = test::world().rank(), size = test::world().size();
-  const std::int64_t total = n * n * n;
+  const std::int64_t total = side * side * side;
   const std::int64_t first = total * rank / size, end = total * (rank + 1) / size;
   const std::vector<std::int64_t> all = grid_cells();
   io::MeshPart part;
   part.n_cells = total;
-  part.n_nodes = (n + 1) * (n + 1) * (n + 1);
+  part.n_nodes = (side + 1) * (side + 1) * (side + 1);
   io::MeshData& d = part.data;
   d.dim = 3;
   std::vector<std::int64_t> used(all.begin() + first * 8, all.begin() + end * 8);
@@ -79,7 +79,7 @@ TEST(PartitionOnRanks, TheDualGraphIsTheOneProcessGraph) {
   const dist::DistGraph g = dist::dual_graph(test::world(), 8, cell_nodes(grid_part()));
   const std::vector<std::int64_t> firsts =
       dist::all_gather_values(test::world(), std::vector<std::int64_t>{g.first});
-  EXPECT_EQ(g.first, n * n * n * test::world().rank() / test::world().size());
+  EXPECT_EQ(g.first, side * side * side * test::world().rank() / test::world().size());
   const std::int64_t base = g.offsets.front();
   for (std::int64_t v = 0; v < g.n_vertices(); ++v) {
     const auto at = [](const dist::DistGraph& h, std::int64_t i) {
@@ -120,7 +120,7 @@ TEST(PartitionOnRanks, ScotchPartsAreReproducibleBalancedAndCutFewFaces) {
   std::vector<std::int64_t> total(static_cast<std::size_t>(size), 0);
   const std::vector<std::int64_t> all = dist::all_gather_values(comm, count);
   for (std::size_t i = 0; i < all.size(); ++i) total[i % static_cast<std::size_t>(size)] += all[i];
-  const double share = static_cast<double>(n * n * n) / size;
+  const double share = static_cast<double>(side * side * side) / size;
   for (const std::int64_t t : total) {
     EXPECT_GT(t, 0);
     EXPECT_LE(static_cast<double>(t), 1.05 * share + 1);
@@ -129,7 +129,7 @@ TEST(PartitionOnRanks, ScotchPartsAreReproducibleBalancedAndCutFewFaces) {
   // not cut much more.
   const std::int64_t cut = cut_faces(g, part);
   EXPECT_EQ(cut > 0, size > 1);
-  EXPECT_LE(cut, 13 * (size - 1) * n * n / 10) << cut;
+  EXPECT_LE(cut, 13 * (size - 1) * side * side / 10) << cut;
 }
 
 TEST(PartitionOnRanks, MovedCellsKeepTheirIdsNodesAndArrays) {
@@ -184,7 +184,7 @@ TEST(PartitionOnRanks, AGhostLayerHoldsEveryCellAroundTheOwnedNodes) {
   // cells, and a node's owner is the lowest rank whose cells use it.
   const std::vector<int> parts = dist::all_gather_values(comm, to);
   const std::vector<std::int64_t> grid = grid_cells();
-  const std::size_t n_nodes = (n + 1) * (n + 1) * (n + 1);
+  const std::size_t n_nodes = (side + 1) * (side + 1) * (side + 1);
   std::vector<int> lowest(n_nodes, comm.size());
   std::vector<char> mine(n_nodes, 0);
   for (std::size_t c = 0; c < parts.size(); ++c)
@@ -232,7 +232,8 @@ TEST(PartitionOnRanks, TwoGhostLayersHoldTheCellsTwoRingsAway) {
   const io::GhostedPart two = io::with_ghost_layers(comm, owned, 2);
   const std::vector<int> parts = dist::all_gather_values(comm, to);
   const std::vector<std::int64_t> grid = grid_cells();
-  std::vector<char> near((n + 1) * (n + 1) * (n + 1), 0);  // nodes of the cells held in `one`
+  std::vector<char> near((side + 1) * (side + 1) * (side + 1),
+                         0);  // nodes of the cells held in `one`
   for (const std::int64_t c : one.part.cell_ids)
     for (std::size_t v = 0; v < 8; ++v) near[static_cast<std::size_t>(grid[8 * c + v])] = 1;
   std::vector<std::int64_t> ghosts;

@@ -14,6 +14,8 @@
 
 namespace hexadapt::generate {
 
+inline constexpr double pi = 3.141592653589793;
+
 class Flow {
  public:
   virtual ~Flow() = default;

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,6 +27,9 @@ struct LegacyType {
   int size;  ///< bytes per value in binary files
   bool is_float;
 };
+
+/// The largest count or id a legacy file may give: ids are 32-bit (index_t).
+inline constexpr std::int64_t max_legacy_id = std::numeric_limits<index_t>::max();
 
 class LegacyScanner {
  public:

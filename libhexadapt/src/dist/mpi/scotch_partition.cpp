@@ -18,7 +18,7 @@ namespace {
 
 constexpr double imbalance = 0.05;
 
-void check(int status, const char* what) {
+void check_scotch(int status, const char* what) {
   if (status != 0) throw InternalError(std::string("PT-Scotch: ") + what + " failed");
 }
 
@@ -83,32 +83,32 @@ std::vector<int> scotch_partition(const MpiCommunicator& comm, const DistGraph& 
   std::vector<SCOTCH_Num> vertex_weights(graph.weights.begin(), graph.weights.end());
   if (vertex_weights.empty()) vertex_weights.push_back(1);  // a rank without vertices
   Scotch s;
-  check(SCOTCH_dgraphInit(&s.built, MPI_COMM_WORLD), "graph init");
+  check_scotch(SCOTCH_dgraphInit(&s.built, MPI_COMM_WORLD), "graph init");
   s.have_built = true;
   const auto local = static_cast<SCOTCH_Num>(n);
   const auto local_arcs = static_cast<SCOTCH_Num>(graph.neighbours.size());
-  check(SCOTCH_dgraphBuild(&s.built, 0, local, local, offsets.data(), offsets.data() + 1,
+  check_scotch(SCOTCH_dgraphBuild(&s.built, 0, local, local, offsets.data(), offsets.data() + 1,
                            weighted ? vertex_weights.data() : nullptr, nullptr, local_arcs,
                            local_arcs, neighbours.data(), nullptr, nullptr),
         "graph build");
-  check(SCOTCH_contextInit(&s.context), "context init");
+  check_scotch(SCOTCH_contextInit(&s.context), "context init");
   s.have_context = true;
-  check(SCOTCH_contextOptionSetNum(&s.context, SCOTCH_OPTIONNUMDETERMINISTIC, 1),
+  check_scotch(SCOTCH_contextOptionSetNum(&s.context, SCOTCH_OPTIONNUMDETERMINISTIC, 1),
         "deterministic option");
-  check(SCOTCH_contextOptionSetNum(&s.context, SCOTCH_OPTIONNUMRANDOMFIXEDSEED, 1), "seed option");
+  check_scotch(SCOTCH_contextOptionSetNum(&s.context, SCOTCH_OPTIONNUMRANDOMFIXEDSEED, 1), "seed option");
   // A random generator of the context's own, seeded the same every time (not Scotch's global
   // one, which earlier partitions of this process have advanced).
-  check(SCOTCH_contextRandomClone(&s.context), "random generator");
+  check_scotch(SCOTCH_contextRandomClone(&s.context), "random generator");
   SCOTCH_contextRandomSeed(&s.context, 1);
-  check(SCOTCH_dgraphInit(&s.bound, MPI_COMM_WORLD), "bound graph init");
+  check_scotch(SCOTCH_dgraphInit(&s.bound, MPI_COMM_WORLD), "bound graph init");
   s.have_bound = true;
-  check(SCOTCH_contextBindDgraph(&s.context, &s.built, &s.bound), "context binding");
-  check(SCOTCH_stratInit(&s.strategy), "strategy init");
+  check_scotch(SCOTCH_contextBindDgraph(&s.context, &s.built, &s.bound), "context binding");
+  check_scotch(SCOTCH_stratInit(&s.strategy), "strategy init");
   s.have_strategy = true;
-  check(SCOTCH_stratDgraphMapBuild(&s.strategy, SCOTCH_STRATDEFAULT, comm.size(), parts, imbalance),
+  check_scotch(SCOTCH_stratDgraphMapBuild(&s.strategy, SCOTCH_STRATDEFAULT, comm.size(), parts, imbalance),
         "strategy");
   std::vector<SCOTCH_Num> part(std::max<std::size_t>(n, 1));
-  check(SCOTCH_dgraphPart(&s.bound, parts, &s.strategy, part.data()), "partition");
+  check_scotch(SCOTCH_dgraphPart(&s.bound, parts, &s.strategy, part.data()), "partition");
   return std::vector<int>(part.begin(), part.begin() + static_cast<std::ptrdiff_t>(n));
 }
 

@@ -1,4 +1,4 @@
-// Helpers of the VTK XML tests: small meshes with arrays, files as strings.
+// Helpers of the io tests: small meshes with arrays, files as strings, mesh comparisons.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "hexadapt/io/mesh_data.h"
 #include "hexadapt/mesh/structured.h"
@@ -60,6 +61,43 @@ inline MeshData sample_mesh(int n, bool hexes) {
   d.set_point_array(v);
   d.metadata = {{"tool", "hexadapt-test"}, {"options", "--x <a & b> \"q\""}};
   return d;
+}
+
+// The head of an ASCII legacy .vtk file, before its DATASET line.
+inline const std::string kLegacyHead = "# vtk DataFile Version 3.0\ntest case\nASCII\n";
+
+// The cells' node ids as plain ints (readable in a failing EXPECT_EQ).
+inline std::vector<int> cell_ids(const MeshData& d) {
+  std::vector<int> out;
+  for (NodeId n : d.cells) out.push_back(n.value());
+  return out;
+}
+
+// The first byte of a VTK XML file's appended data (after the '_' marker).
+inline std::size_t appended_start(const std::string& s) {
+  return s.find('_', s.find("<AppendedData")) + 1;
+}
+
+// Two meshes carry the same geometry, cells, arrays (names, types, components, values) and
+// metadata.
+inline void expect_same(const MeshData& a, const MeshData& b) {
+  ASSERT_EQ(a.dim, b.dim);
+  ASSERT_EQ(a.points.size(), b.points.size());
+  for (std::size_t k = 0; k < a.points.size(); ++k) EXPECT_EQ(a.points[k], b.points[k]) << k;
+  EXPECT_EQ(a.cells, b.cells);
+  ASSERT_EQ(a.cell_data.size(), b.cell_data.size());
+  for (std::size_t k = 0; k < a.cell_data.size(); ++k) {
+    EXPECT_EQ(a.cell_data[k].name, b.cell_data[k].name);
+    EXPECT_EQ(a.cell_data[k].type, b.cell_data[k].type) << a.cell_data[k].name;
+    EXPECT_EQ(a.cell_data[k].values, b.cell_data[k].values) << a.cell_data[k].name;
+  }
+  ASSERT_EQ(a.point_data.size(), b.point_data.size());
+  for (std::size_t k = 0; k < a.point_data.size(); ++k) {
+    EXPECT_EQ(a.point_data[k].name, b.point_data[k].name);
+    EXPECT_EQ(a.point_data[k].n_components, b.point_data[k].n_components);
+    EXPECT_EQ(a.point_data[k].values, b.point_data[k].values);
+  }
+  EXPECT_EQ(a.metadata, b.metadata);
 }
 
 }  // namespace hexadapt::io::test
