@@ -13,12 +13,14 @@
 #include "hexadapt/adapt/adapt_on_ranks.h"
 #include "hexadapt/adapt/adapt_report.h"
 #include "hexadapt/core/error.h"
+#include "hexadapt/dist/on_every_rank.h"
 #include "hexadapt/io/assigned_grid_file.h"
 #include "hexadapt/io/mesh_file.h"
+#include "hexadapt/io/rank_files.h"
 #include "hexadapt/reconstruct/model_io.h"
 #include "input_record.h"
 #include "memory.h"
-#include "rank_files.h"
+#include "ranks.h"
 
 namespace {
 
@@ -238,7 +240,7 @@ int run_adapt(const CLI::App& app, const Args& args, const cli::CommonOptions& c
 int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& common,
                        const dist::Communicator& comm) {
   AdaptOptions options;
-  cli::on_every_rank(comm, app, [&] {
+  dist::on_every_rank(comm, [&] {
     cli::check_files({{"input", args.input}, {"--model", args.model}},
                      {{"-o", common.output, true, true}, {"--json", common.json}});
     cli::check_rank_output("-o", common.output, args.gather, false);
@@ -250,13 +252,13 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
   if (comm.rank() > 0) options.progress = nullptr;
   Timer clock;
   PhaseTimes times;
-  cli::RankInput in = cli::read_mesh_on_ranks(comm, app, args.input, args.in.read_options(),
+  io::RankInput in = io::read_mesh_on_ranks(comm, args.input, args.in.read_options(),
                                               adapt_ghost_layers);
   if (!args.in.fractions.labels.empty())
-    args.in.fractions.label_values = cli::grid_labels(comm, app, args.in, args.input, in);
+    args.in.fractions.label_values = cli::grid_labels(comm, args.in, args.input, in);
   AssignedGrid grid;
   io::MeshData input;
-  cli::on_every_rank(comm, app, [&] {
+  dist::on_every_rank(comm, [&] {
     // A rank adapts the cells it read: its own and the ghost layers around them.
     const index_t cells = in.data.n_cells();
     cli::check_memory(
@@ -290,8 +292,8 @@ int run_adapt_on_ranks(const CLI::App& app, Args& args, cli::CommonOptions& comm
   io::MeshData piece = std::visit([&](const auto& p) { return adapt_mesh_data(p, names); }, r.part);
   r.part = AnyAdaptResult();
   record_provenance(app, input, piece);
-  if (args.gather) cli::drop_next_piece_nodes(piece, r.counted_above);
-  cli::write_disjoint_pieces(comm, app, piece, common.output, args.gather, common.write_options(),
+  if (args.gather) io::drop_next_piece_nodes(piece, r.counted_above);
+  io::write_disjoint_pieces(comm, piece, common.output, args.gather, common.write_options(),
                              common.memory_limit());
   times.emplace_back("write", clock.seconds());
   report["ranks"] = cli::ranks_json(comm, in);

@@ -9,11 +9,12 @@
 #include "cli.h"
 #include "hexadapt/assign/assign.h"
 #include "hexadapt/core/error.h"
+#include "hexadapt/dist/on_every_rank.h"
 #include "hexadapt/io/fractions_reader.h"
 #include "hexadapt/io/mesh_file.h"
+#include "hexadapt/io/rank_files.h"
 #include "hexadapt/mesh/cell_complex.h"
 #include "input_record.h"
-#include "rank_files.h"
 #include "ranks.h"
 
 namespace hexadapt {
@@ -296,7 +297,7 @@ io::FractionReport whole_report(const dist::Communicator& comm, io::FractionRepo
 // an unstructured mesh cut by PT-Scotch (two ghost layers either way: the correction looks two
 // cells around the nodes it owns), and writes the cells it owns.
 int run_assign_on_ranks(const CLI::App& app, Options& o, const dist::Communicator& comm) {
-  cli::on_every_rank(comm, app, [&] {
+  dist::on_every_rank(comm, [&] {
     cli::check_files(
         {{"input", o.input}},
         {{"-o", o.common.output, true}, {"--partial", o.partial, true}, {"--json", o.common.json}});
@@ -306,8 +307,8 @@ int run_assign_on_ranks(const CLI::App& app, Options& o, const dist::Communicato
   });
   PhaseTimes times;
   Timer t;
-  cli::RankInput in = cli::read_mesh_on_ranks(comm, app, o.input, o.in.read_options(), 2);
-  cli::on_every_rank(comm, app, [&] {
+  io::RankInput in = io::read_mesh_on_ranks(comm, o.input, o.in.read_options(), 2);
+  dist::on_every_rank(comm, [&] {
     cli::check_memory("assigning " + std::to_string(in.data.n_cells()) + " cells on this rank",
                       static_cast<double>(in.data.n_cells()) * cli::assign_bytes_per_cell,
                       o.common.memory_limit());
@@ -317,8 +318,8 @@ int run_assign_on_ranks(const CLI::App& app, Options& o, const dist::Communicato
   io::FractionReport fr;
   AssignedGrid grid;
   if (!o.in.fractions.labels.empty())
-    o.in.fractions.label_values = cli::grid_labels(comm, app, o.in, o.input, in);
-  cli::on_every_rank(comm, app, [&] {
+    o.in.fractions.label_values = cli::grid_labels(comm, o.in, o.input, in);
+  dist::on_every_rank(comm, [&] {
     grid = io::to_assigned_grid(in.data, o.in.grid(io::MaterialSource::none), o.input, &fr,
                                 &in.slab.block);
   });
@@ -336,8 +337,8 @@ int run_assign_on_ranks(const CLI::App& app, Options& o, const dist::Communicato
   const std::string out = r.correction.solved ? o.common.output : o.partial;
   grid.material = r.correction.labels;
   if (!out.empty())
-    cli::write_on_ranks(
-        comm, app,
+    io::write_on_ranks(
+        comm,
         output_data(std::move(in.data), grid, r.majority, app, cli::input_record(o.in, fr)), in,
         out, o.gather, o.common.write_options(), o.common.memory_limit());
   times.emplace_back("write", t.seconds());

@@ -294,25 +294,6 @@ int start(CLI::App& app, int argc, char** argv, CommonOptions& options,
 
 }  // namespace
 
-void on_every_rank(const dist::Communicator& comm, const CLI::App& app,
-                   const std::function<void()>& f) {
-  if (comm.size() == 1) return f();
-  dist::Buffer mine;
-  try {
-    f();
-    mine.put(ok);
-  } catch (...) {
-    const auto [code, line] = describe(app, std::current_exception());
-    mine.put(code);
-    mine.put_vector(std::vector<char>(line.begin(), line.end()));
-  }
-  for (dist::Buffer& b : dist::all_gather(comm, mine)) {
-    const int code = b.get<int>();
-    if (code == ok) continue;
-    const std::vector<char> line = b.get_vector<char>();
-    throw RankError(code, std::string(line.begin(), line.end()));
-  }
-}
 
 int run(CLI::App& app, int argc, char** argv, CommonOptions& options,
         const std::function<int()>& body) {

@@ -88,7 +88,7 @@ std::string with_flags(const CLI::App& app, std::string_view text);
 int run(CLI::App& app, int argc, char** argv, CommonOptions& options,
         const std::function<int()>& body);
 /// The same for a tool that runs on the ranks of an MPI job (ranks.h): `body` gets them. On
-/// more than one rank, only rank 0 logs and prints errors; an error that on_every_rank did
+/// more than one rank, only rank 0 logs and prints errors; an error that dist::on_every_rank did
 /// not make common to every rank ends the job (Communicator::abort) with its exit code.
 int run_on_ranks(CLI::App& app, int argc, char** argv, CommonOptions& options,
                  const std::function<int(const dist::Communicator&)>& body);
@@ -102,12 +102,6 @@ class RankError : public std::runtime_error {
  private:
   int code_;
 };
-
-/// Runs `f` on every rank (collectively); when it throws on some, every rank throws the
-/// RankError of the lowest such rank, so that all stop together with one message. On one
-/// rank, f's exception passes unchanged.
-void on_every_rank(const dist::Communicator& comm, const CLI::App& app,
-                   const std::function<void()>& f);
 
 /// A progress callback that draws a bar on stderr when it is a terminal and -q is off;
 /// nullptr otherwise.

@@ -61,11 +61,4 @@ double last_memory_estimate() {
   return g_last_estimate;
 }
 
-std::string size_text(double bytes) {
-  if (bytes < 1e6) return std::to_string(std::llround(bytes / 1e3)) + " kB";
-  if (bytes < 1e10) return std::to_string(std::llround(bytes / 1e6)) + " MB";
-  return std::to_string(std::llround(bytes / 1e8) / 10) + "." +
-         std::to_string(std::llround(bytes / 1e8) % 10) + " GB";
-}
-
 }  // namespace hexadapt::cli

@@ -9,6 +9,8 @@
 
 #include <string>
 
+#include "hexadapt/core/size_text.h"
+
 namespace hexadapt::cli {
 
 /// Peak bytes per input cell of each stage, measured.
@@ -42,8 +44,5 @@ void check_memory(const std::string& what, double bytes, double limit);
 
 /// The last estimate checked (0 when none): what an out-of-memory message can name.
 double last_memory_estimate();
-
-/// A size for people: "512 kB", "43 MB", "25.3 GB".
-std::string size_text(double bytes);
 
 }  // namespace hexadapt::cli

@@ -5,10 +5,12 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
+#include "cli.h"
 #include "hexadapt/dist/communicator.h"
-#include "hexadapt/dist/dual_graph.h"
+#include "hexadapt/io/rank_files.h"
 
 namespace hexadapt::cli {
 
@@ -33,12 +35,22 @@ class Ranks {
 /// no launcher did.
 int launched_ranks();
 
-/// One part per rank of `comm` for each of this rank's vertices of `graph` (a mesh's dual
-/// graph): PT-Scotch's cut (dist/scotch_partition.h) on the ranks of an MPI job, part 0 for
-/// everything on one process. Every rank calls it.
-std::vector<int> partition_by_rank(const dist::Communicator& comm, const dist::DistGraph& graph);
-
 /// The largest resident memory this process has held so far, in bytes (getrusage).
 std::uint64_t peak_resident_bytes();
+
+/// The labels of the label map `input` reads (--labels), over the whole grid: every rank's,
+/// merged, increasing. Errors are common to every rank.
+std::vector<std::int64_t> grid_labels(const dist::Communicator& comm, const InputOptions& input,
+                                      const std::string& path, const io::RankInput& in);
+
+/// The report's `ranks` block: the rank count, and per rank the layers of `in.slab` it owns
+/// (of an unstructured mesh: the cells it owns and its ghost cells), the bytes sent and the
+/// peak resident memory. Every rank calls it.
+Json ranks_json(const dist::Communicator& comm, const io::RankInput& in);
+
+/// Throws OptionError when `path` cannot take what io::write_on_ranks writes (a .pvtu, or a .pvts
+/// when `structured`, unless `gather`); `flag` names the option that gave it.
+void check_rank_output(const std::string& flag, const std::string& path, bool gather,
+                       bool structured = true);
 
 }  // namespace hexadapt::cli

@@ -12,10 +12,12 @@
 
 #include "cli.h"
 #include "hexadapt/core/error.h"
+#include "hexadapt/dist/on_every_rank.h"
 #include "hexadapt/io/assigned_grid_file.h"
 #include "hexadapt/io/fractions_reader.h"
 #include "hexadapt/io/mesh_file.h"
 #include "hexadapt/io/mesh_part.h"
+#include "hexadapt/io/rank_files.h"
 #include "hexadapt/io/vtk_collection.h"
 #include "hexadapt/measure/discrepancy.h"
 #include "hexadapt/measure/imprint.h"
@@ -24,7 +26,6 @@
 #include "hexadapt/measure/target_distance.h"
 #include "input_record.h"
 #include "memory.h"
-#include "rank_files.h"
 #include "ranks.h"
 
 namespace {
@@ -341,7 +342,7 @@ int measure(const CLI::App& app, const cli::CommonOptions& common, const Args& a
 // the reports are those of the whole mesh (ids global; measure/quality_report.h).
 int measure_on_ranks(const CLI::App& app, const cli::CommonOptions& common, const Args& a,
                      const dist::Communicator& comm) {
-  cli::on_every_rank(comm, app, [&] {
+  dist::on_every_rank(comm, [&] {
     for (const auto& [flag, value] :
          {std::pair{"--reference", a.reference}, std::pair{"--quality-field", a.quality_field},
           std::pair{"--discrepancy-field", a.discrepancy_field}})
@@ -355,13 +356,13 @@ int measure_on_ranks(const CLI::App& app, const cli::CommonOptions& common, cons
   PhaseTimes times;
   const Timer timer;
   const io::ReadOptions reading = a.in.read_options();
-  io::RankPieces pieces = cli::read_pieces_on_ranks(comm, app, a.input, reading);
+  io::RankPieces pieces = io::read_pieces_on_ranks(comm, a.input, reading);
   // Each step whole inside on_every_rank: a rank that fails alone must not leave the others
   // waiting in a collective it skipped.
   io::MeshPart merged;
-  cli::on_every_rank(comm, app,
+  dist::on_every_rank(comm,
                      [&] { merged = io::merge_rank_pieces(comm, std::move(pieces), reading); });
-  cli::on_every_rank(comm, app, [&] {
+  dist::on_every_rank(comm, [&] {
     cli::check_memory("measuring " + std::to_string(merged.data.n_cells()) + " cells on rank " +
                           std::to_string(comm.rank()),
                       static_cast<double>(merged.data.n_cells()) * cli::measure_bytes_per_cell,
@@ -372,7 +373,7 @@ int measure_on_ranks(const CLI::App& app, const cli::CommonOptions& common, cons
   times.emplace_back("read", timer.seconds());
   Measured m;
   Timer phase;
-  cli::on_every_rank(comm, app, [&] {
+  dist::on_every_rank(comm, [&] {
     try {
       m.report = quality_report(comm, part, a.report);
       m.distances = target_distances(comm, part, a.target_array);
@@ -382,7 +383,7 @@ int measure_on_ranks(const CLI::App& app, const cli::CommonOptions& common, cons
   });
   times.emplace_back("quality", phase.seconds());
   phase.restart();
-  cli::on_every_rank(comm, app, [&] {
+  dist::on_every_rank(comm, [&] {
     SizeReportOptions options = a.size;
     options.max_listed = a.report.max_listed;
     try {

@@ -7,13 +7,15 @@
 
 #include "cli.h"
 #include "hexadapt/core/error.h"
+#include "hexadapt/dist/on_every_rank.h"
 #include "hexadapt/io/assigned_grid_file.h"
 #include "hexadapt/io/fractions_reader.h"
 #include "hexadapt/io/mesh_file.h"
+#include "hexadapt/io/rank_files.h"
 #include "hexadapt/reconstruct/model_io.h"
 #include "hexadapt/reconstruct/pixel_output.h"
 #include "hexadapt/reconstruct/reconstruct.h"
-#include "rank_files.h"
+#include "ranks.h"
 
 namespace {
 
@@ -238,10 +240,10 @@ int run_reconstruct(const CLI::App& app, Options& o, const cli::CommonOptions& c
 
 // The bytes each layer of the grid needs on a rank: the grid's own per cell and the pixels'
 // share (owned_cell_bytes), from `in` read with one ghost layer at least.
-std::vector<double> layer_bytes(const CLI::App& app, const Options& o,
-                                const dist::Communicator& comm, const cli::RankInput& in) {
+std::vector<double> layer_bytes(const Options& o, const dist::Communicator& comm,
+                                const io::RankInput& in) {
   std::vector<double> owned;
-  cli::on_every_rank(comm, app, [&] {
+  dist::on_every_rank(comm, [&] {
     const AssignedGrid grid = read_grid(in.data, o, &in.slab.block);
     owned = std::visit(
         [&](const auto& m) {
@@ -276,7 +278,7 @@ std::vector<double> cell_bytes(const Options& o, const io::MeshPart& part) {
 // cells), and the slabs are cut by those weights.
 int run_reconstruct_on_ranks(const CLI::App& app, Options& o, cli::CommonOptions& common,
                              const dist::Communicator& comm) {
-  cli::on_every_rank(comm, app, [&] {
+  dist::on_every_rank(comm, [&] {
     cli::check_files({{"input", o.input}},
                      {{"-o", common.output, true, true}, {"--json", common.json}});
     cli::check_rank_output("-o", common.output, o.gather, false);
@@ -290,31 +292,31 @@ int run_reconstruct_on_ranks(const CLI::App& app, Options& o, cli::CommonOptions
                        ? o.lib.pixels.nsub
                        : std::min(reconstruct::default_nsub(2), reconstruct::default_nsub(3));
   // The labels of the whole grid and the options that depend on its dimension.
-  const auto prepare = [&](const cli::RankInput& first) {
+  const auto prepare = [&](const io::RankInput& first) {
     if (!o.in.fractions.labels.empty())
-      o.in.fractions.label_values = cli::grid_labels(comm, app, o.in, o.input, first);
+      o.in.fractions.label_values = cli::grid_labels(comm, o.in, o.input, first);
     set_options(o, common, first.shape.dim);
   };
   // An unstructured mesh is cut by PT-Scotch, its cells weighed by their bytes (a label map's
   // cells are pure: all alike).
   std::vector<double> weights;
-  cli::CellWeights cell_weights;
+  io::CellWeights cell_weights;
   if (o.cut == "memory" && o.in.fractions.labels.empty())
     cell_weights = [&](const io::MeshPart& part) {
       set_options(o, common, part.data.dim);
       return cell_bytes(o, part);
     };
   if (o.cut == "memory" && !io::holds_unstructured_mesh(o.input)) {
-    const cli::RankInput probe = cli::read_on_ranks(comm, app, o.input, o.in.read_options(), 1);
+    const io::RankInput probe = io::read_on_ranks(comm, o.input, o.in.read_options(), 1);
     prepare(probe);
-    weights = layer_bytes(app, o, comm, probe);
+    weights = layer_bytes(o, comm, probe);
   }
-  cli::RankInput in = cli::read_mesh_on_ranks(comm, app, o.input, o.in.read_options(),
+  io::RankInput in = io::read_mesh_on_ranks(comm, o.input, o.in.read_options(),
                                               reconstruct::greedy_ghost_layers(nsub, o.lib.greedy),
                                               weights, cell_weights);
   if (weights.empty()) prepare(in);
   AssignedGrid grid;
-  cli::on_every_rank(comm, app, [&] {
+  dist::on_every_rank(comm, [&] {
     grid = read_grid(in.data, o, &in.slab.block);
     std::visit(
         [&](const auto& m) {
@@ -333,7 +335,7 @@ int run_reconstruct_on_ranks(const CLI::App& app, Options& o, cli::CommonOptions
       },
       grid.mesh);
   Timer t;
-  cli::write_disjoint_pieces(comm, app, output_data(rec, in.slab.block, grid.fractions, app),
+  io::write_disjoint_pieces(comm, output_data(rec, in.slab.block, grid.fractions, app),
                              common.output, o.gather, common.write_options(), common.memory_limit(),
                              in.structured ? "" : "parent");
   cli::Json j = report(app, o, rec, {common.output}, t.seconds());

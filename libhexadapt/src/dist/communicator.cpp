@@ -4,6 +4,7 @@
 #include <cstdlib>
 
 #include "hexadapt/core/error.h"
+#include "hexadapt/dist/dual_graph.h"
 
 namespace hexadapt::dist {
 
@@ -20,6 +21,10 @@ std::vector<std::vector<std::uint8_t>> SerialCommunicator::exchange(
     const std::vector<int>& peers, const std::vector<std::vector<std::uint8_t>>& to) const {
   if (!peers.empty() || !to.empty()) throw InternalError("one rank exchanges with a peer");
   return {};
+}
+
+std::vector<int> SerialCommunicator::parts_of(const DistGraph& graph) const {
+  return std::vector<int>(static_cast<std::size_t>(graph.n_vertices()), 0);
 }
 
 void Buffer::check(std::uint64_t n) const {

@@ -20,6 +20,8 @@
 
 namespace hexadapt::dist {
 
+struct DistGraph;
+
 class Communicator {
  public:
   virtual ~Communicator() = default;
@@ -36,6 +38,10 @@ class Communicator {
   /// Only the ranks that list each other wait for each other.
   virtual std::vector<std::vector<std::uint8_t>> exchange(
       const std::vector<int>& peers, const std::vector<std::vector<std::uint8_t>>& to) const = 0;
+  /// The part (0 .. size() - 1) of each of this rank's vertices of `graph`, a graph spread
+  /// over the ranks (dist/dual_graph.h): few edges between parts, the parts balanced.
+  /// Deterministic for a given graph and rank count. Every rank calls it.
+  virtual std::vector<int> parts_of(const DistGraph& graph) const = 0;
   /// Bytes this rank has sent so far.
   virtual std::uint64_t bytes_sent() const = 0;
   /// Ends every rank of the job with exit code `code`: what a rank does when it fails where
@@ -60,6 +66,8 @@ class SerialCommunicator final : public Communicator {
   std::vector<std::vector<std::uint8_t>> exchange(
       const std::vector<int>& peers,
       const std::vector<std::vector<std::uint8_t>>& to) const override;
+  /// Every vertex in part 0.
+  std::vector<int> parts_of(const DistGraph& graph) const override;
   std::uint64_t bytes_sent() const override { return 0; }
   [[noreturn]] void abort(int code) const override;
 };

@@ -35,6 +35,8 @@ class MpiCommunicator final : public Communicator {
   std::vector<std::vector<std::uint8_t>> exchange(
       const std::vector<int>& peers,
       const std::vector<std::vector<std::uint8_t>>& to) const override;
+  /// PT-Scotch's parts (dist/scotch_partition.h), one per rank.
+  std::vector<int> parts_of(const DistGraph& graph) const override;
   std::uint64_t bytes_sent() const override { return sent_; }
   [[noreturn]] void abort(int code) const override;
 

@@ -88,14 +88,15 @@ std::vector<int> scotch_partition(const MpiCommunicator& comm, const DistGraph& 
   const auto local = static_cast<SCOTCH_Num>(n);
   const auto local_arcs = static_cast<SCOTCH_Num>(graph.neighbours.size());
   check_scotch(SCOTCH_dgraphBuild(&s.built, 0, local, local, offsets.data(), offsets.data() + 1,
-                           weighted ? vertex_weights.data() : nullptr, nullptr, local_arcs,
-                           local_arcs, neighbours.data(), nullptr, nullptr),
-        "graph build");
+                                  weighted ? vertex_weights.data() : nullptr, nullptr, local_arcs,
+                                  local_arcs, neighbours.data(), nullptr, nullptr),
+               "graph build");
   check_scotch(SCOTCH_contextInit(&s.context), "context init");
   s.have_context = true;
   check_scotch(SCOTCH_contextOptionSetNum(&s.context, SCOTCH_OPTIONNUMDETERMINISTIC, 1),
-        "deterministic option");
-  check_scotch(SCOTCH_contextOptionSetNum(&s.context, SCOTCH_OPTIONNUMRANDOMFIXEDSEED, 1), "seed option");
+               "deterministic option");
+  check_scotch(SCOTCH_contextOptionSetNum(&s.context, SCOTCH_OPTIONNUMRANDOMFIXEDSEED, 1),
+               "seed option");
   // A random generator of the context's own, seeded the same every time (not Scotch's global
   // one, which earlier partitions of this process have advanced).
   check_scotch(SCOTCH_contextRandomClone(&s.context), "random generator");
@@ -105,11 +106,16 @@ std::vector<int> scotch_partition(const MpiCommunicator& comm, const DistGraph& 
   check_scotch(SCOTCH_contextBindDgraph(&s.context, &s.built, &s.bound), "context binding");
   check_scotch(SCOTCH_stratInit(&s.strategy), "strategy init");
   s.have_strategy = true;
-  check_scotch(SCOTCH_stratDgraphMapBuild(&s.strategy, SCOTCH_STRATDEFAULT, comm.size(), parts, imbalance),
-        "strategy");
+  check_scotch(
+      SCOTCH_stratDgraphMapBuild(&s.strategy, SCOTCH_STRATDEFAULT, comm.size(), parts, imbalance),
+      "strategy");
   std::vector<SCOTCH_Num> part(std::max<std::size_t>(n, 1));
   check_scotch(SCOTCH_dgraphPart(&s.bound, parts, &s.strategy, part.data()), "partition");
   return std::vector<int>(part.begin(), part.begin() + static_cast<std::ptrdiff_t>(n));
+}
+
+std::vector<int> MpiCommunicator::parts_of(const DistGraph& graph) const {
+  return scotch_partition(*this, graph, size());
 }
 
 }  // namespace hexadapt::dist

@@ -1,4 +1,4 @@
-#include "rank_files.h"
+#include "hexadapt/io/rank_files.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,15 +6,15 @@
 #include <numeric>
 
 #include "hexadapt/core/error.h"
+#include "hexadapt/core/size_text.h"
 #include "hexadapt/dist/dual_graph.h"
+#include "hexadapt/dist/on_every_rank.h"
 #include "hexadapt/io/mesh_part.h"
 #include "hexadapt/io/vtk_collection.h"
 #include "hexadapt/io/vtk_xml.h"
 #include "hexadapt/mesh/structured.h"
-#include "memory.h"
-#include "ranks.h"
 
-namespace hexadapt::cli {
+namespace hexadapt::io {
 
 namespace {
 
@@ -37,8 +37,7 @@ std::array<int, 2> owned_layers(const dist::Slab& slab, int dim) {
 
 /// Rank 0's whole grid from every rank's owned piece (node layers shared by two pieces come
 /// from the lower one), with rank 0's metadata and array names and types.
-io::MeshData gathered(const dist::Communicator& comm, const io::MeshData& piece,
-                      const RankInput& input) {
+MeshData gathered(const dist::Communicator& comm, const MeshData& piece, const RankInput& input) {
   const int dim = input.shape.dim;
   const std::array<int, 3>& cells = input.shape.cells;
   std::size_t points_per_layer = 1;
@@ -53,31 +52,31 @@ io::MeshData gathered(const dist::Communicator& comm, const io::MeshData& piece,
   for (std::size_t i = 0; i < n_points; ++i)
     xyz.insert(xyz.end(), piece.points[i].data(), piece.points[i].data() + 3);
   mine.put_vector(xyz);
-  for (const io::DataArray& a : piece.cell_data) mine.put_vector(a.values);
-  for (const io::DataArray& a : piece.point_data)
+  for (const DataArray& a : piece.cell_data) mine.put_vector(a.values);
+  for (const DataArray& a : piece.point_data)
     mine.put_vector(std::vector<double>(
         a.values.begin(),
         a.values.begin() +
             static_cast<std::ptrdiff_t>(n_points * static_cast<std::size_t>(a.n_components))));
   std::vector<dist::Buffer> all = dist::gather(comm, mine, 0);
-  io::MeshData whole;
+  MeshData whole;
   if (comm.rank() != 0) return whole;
   whole.dim = dim;
   whole.metadata = piece.metadata;
   whole.structured_cells = cells;
   whole.cell_data = piece.cell_data;
   whole.point_data = piece.point_data;
-  for (io::DataArray& a : whole.cell_data) a.values.clear();
-  for (io::DataArray& a : whole.point_data) a.values.clear();
+  for (DataArray& a : whole.cell_data) a.values.clear();
+  for (DataArray& a : whole.point_data) a.values.clear();
   for (dist::Buffer& b : all) {
     const std::vector<double> p = b.get_vector<double>();
     for (std::size_t i = 0; i + 2 < p.size(); i += 3)
       whole.points.emplace_back(p[i], p[i + 1], p[i + 2]);
-    for (io::DataArray& a : whole.cell_data) {
+    for (DataArray& a : whole.cell_data) {
       const std::vector<double> v = b.get_vector<double>();
       a.values.insert(a.values.end(), v.begin(), v.end());
     }
-    for (io::DataArray& a : whole.point_data) {
+    for (DataArray& a : whole.point_data) {
       const std::vector<double> v = b.get_vector<double>();
       a.values.insert(a.values.end(), v.begin(), v.end());
     }
@@ -87,42 +86,42 @@ io::MeshData gathered(const dist::Communicator& comm, const io::MeshData& piece,
 }
 
 // The owned layers as .vts pieces placed in the whole grid, and the .pvts naming them.
-void write_structured_pieces(const dist::Communicator& comm, const CLI::App& app,
-                             const io::MeshData& owned, const RankInput& input,
-                             const std::string& path, const io::WriteOptions& options) {
+void write_structured_pieces(const dist::Communicator& comm, const MeshData& owned,
+                             const RankInput& input, const std::string& path,
+                             const WriteOptions& options) {
   const auto axis = static_cast<std::size_t>(input.shape.dim - 1);
   std::array<int, 3> origin{0, 0, 0};
   origin[axis] = input.slab.first_layer + owned_layers(input.slab, input.shape.dim)[0];
   dist::Buffer mine;
   mine.put(origin[axis]);
   mine.put(owned.structured_cells[axis]);
-  std::vector<io::StructuredPiece> pieces;
+  std::vector<StructuredPiece> pieces;
   int r = 0;
   for (dist::Buffer& b : dist::all_gather(comm, mine)) {
-    io::StructuredPiece p{base_name(io::piece_path(path, r++)), {0, 0, 0}, input.shape.cells};
+    StructuredPiece p{base_name(piece_path(path, r++)), {0, 0, 0}, input.shape.cells};
     p.origin[axis] = b.get<int>();
     p.cells[axis] = b.get<int>();
     pieces.push_back(p);
   }
-  on_every_rank(comm, app, [&] {
-    io::write_vts(owned, io::piece_path(path, comm.rank()), options, origin);
-    if (comm.rank() == 0) io::write_pvts(owned, input.shape.cells, pieces, path);
+  dist::on_every_rank(comm, [&] {
+    write_vts(owned, piece_path(path, comm.rank()), options, origin);
+    if (comm.rank() == 0) write_pvts(owned, input.shape.cells, pieces, path);
   });
 }
 
 // The bytes of a mesh's points, cells and arrays in memory.
-double data_bytes(const io::MeshData& d) {
+double data_bytes(const MeshData& d) {
   double bytes =
       24.0 * static_cast<double>(d.points.size()) + 4.0 * static_cast<double>(d.cells.size());
   for (const auto* arrays : {&d.cell_data, &d.point_data})
-    for (const io::DataArray& a : *arrays) bytes += 8.0 * static_cast<double>(a.values.size());
+    for (const DataArray& a : *arrays) bytes += 8.0 * static_cast<double>(a.values.size());
   return bytes;
 }
 
 // Drops the points of `d` (and their point data) for which `keep(point)` is false; the
 // cells are left as they are.
 template <class Keep>
-void keep_points(io::MeshData& d, const Keep& keep) {
+void keep_points(MeshData& d, const Keep& keep) {
   const auto kept = [&](auto& values, std::size_t width) {
     auto at = values.begin();
     for (std::size_t n = 0; n < d.points.size(); ++n)
@@ -132,19 +131,19 @@ void keep_points(io::MeshData& d, const Keep& keep) {
       }
     values.erase(at, values.end());
   };
-  for (io::DataArray& a : d.point_data) kept(a.values, static_cast<std::size_t>(a.n_components));
+  for (DataArray& a : d.point_data) kept(a.values, static_cast<std::size_t>(a.n_components));
   kept(d.points, 1);
 }
 
 // The owned cells of `held` (an unstructured part: its first cells, `block` a list) and the
 // nodes they use, with their global ids.
-io::MeshPart owned_cells(io::MeshData held, const dist::Block& block, std::int64_t whole_cells) {
-  io::MeshPart out;
+MeshPart owned_cells(MeshData held, const dist::Block& block, std::int64_t whole_cells) {
+  MeshPart out;
   out.n_cells = whole_cells;
   const auto npc = static_cast<std::size_t>(held.nodes_per_cell());
   const auto owned = static_cast<std::size_t>(block.owned_cell_end);
   held.cells.resize(owned * npc);
-  for (io::DataArray& a : held.cell_data)
+  for (DataArray& a : held.cell_data)
     a.values.resize(owned * static_cast<std::size_t>(a.n_components));
   std::vector<index_t> to(held.points.size(), -1);  // new id of each held node used
   for (const NodeId v : held.cells) to[v.idx()] = 0;
@@ -163,20 +162,21 @@ io::MeshPart owned_cells(io::MeshData held, const dist::Block& block, std::int64
 }
 
 // Rank 0 holds every rank's piece twice while gathering (the messages, then the whole mesh):
-// beyond the limit every rank stops before anything travels.
-void check_gather_memory(const dist::Communicator& comm, const CLI::App& app,
-                         const io::MeshData& piece, double limit) {
+// beyond the limit (none when <= 0) every rank stops before anything travels.
+void check_gather_memory(const dist::Communicator& comm, const MeshData& piece, double limit) {
   const double whole = dist::sum_in_rank_order(comm, data_bytes(piece));
-  on_every_rank(comm, app, [&] {
-    check_memory("gathering the whole mesh (" + size_text(whole) + ") on rank 0 for --gather",
-                 2 * whole, limit);
+  dist::on_every_rank(comm, [&] {
+    if (limit > 0 && 2 * whole > limit)
+      throw ResourceError("gathering the whole mesh (" + size_text(whole) +
+                          ") on rank 0 needs about " + size_text(2 * whole) +
+                          ", more than the memory limit " + size_text(limit));
   });
 }
 
 /// Rank 0's whole mesh from every rank's piece of a mesh whose pieces share no point: the
 /// pieces in rank order, node ids shifted by the points of the ranks before, with rank 0's
 /// metadata and array names and types.
-io::MeshData gathered_disjoint(const dist::Communicator& comm, const io::MeshData& piece) {
+MeshData gathered_disjoint(const dist::Communicator& comm, const MeshData& piece) {
   dist::Buffer mine;
   std::vector<double> xyz;
   xyz.reserve(3 * piece.points.size());
@@ -184,17 +184,17 @@ io::MeshData gathered_disjoint(const dist::Communicator& comm, const io::MeshDat
   mine.put_vector(xyz);
   mine.put(static_cast<std::uint64_t>(piece.cells.size()));
   mine.put_values(piece.cells.data(), piece.cells.size());
-  for (const io::DataArray& a : piece.cell_data) mine.put_vector(a.values);
-  for (const io::DataArray& a : piece.point_data) mine.put_vector(a.values);
+  for (const DataArray& a : piece.cell_data) mine.put_vector(a.values);
+  for (const DataArray& a : piece.point_data) mine.put_vector(a.values);
   std::vector<dist::Buffer> all = dist::gather(comm, mine, 0);
-  io::MeshData whole;
+  MeshData whole;
   if (comm.rank() != 0) return whole;
   whole.dim = piece.dim;
   whole.metadata = piece.metadata;
   whole.cell_data = piece.cell_data;
   whole.point_data = piece.point_data;
-  for (io::DataArray& a : whole.cell_data) a.values.clear();
-  for (io::DataArray& a : whole.point_data) a.values.clear();
+  for (DataArray& a : whole.cell_data) a.values.clear();
+  for (DataArray& a : whole.point_data) a.values.clear();
   for (dist::Buffer& b : all) {
     const auto shift = static_cast<index_t>(whole.points.size());
     const std::vector<double> p = b.get_vector<double>();
@@ -206,7 +206,7 @@ io::MeshData gathered_disjoint(const dist::Communicator& comm, const io::MeshDat
     for (std::size_t i = first; i < whole.cells.size(); ++i)
       whole.cells[i] = NodeId(whole.cells[i].value() + shift);
     for (auto* arrays : {&whole.cell_data, &whole.point_data})
-      for (io::DataArray& a : *arrays) {
+      for (DataArray& a : *arrays) {
         const std::vector<double> v = b.get_vector<double>();
         a.values.insert(a.values.end(), v.begin(), v.end());
       }
@@ -229,8 +229,8 @@ std::vector<T> reordered(const std::vector<T>& values, std::size_t width,
 
 // `d` with its cells stably sorted by their value of the cell array `key`, and its points by
 // the key of the cells using them (a point no cell uses stays after the one before it).
-io::MeshData in_order_of(io::MeshData d, const std::string& key) {
-  const io::DataArray* k = d.find_cell_array(key);
+MeshData in_order_of(MeshData d, const std::string& key) {
+  const DataArray* k = d.find_cell_array(key);
   if (k == nullptr || k->n_components != 1)
     throw InternalError("no cell array " + key + " to order the gathered cells by");
   const auto npc = static_cast<std::size_t>(d.nodes_per_cell());
@@ -253,9 +253,9 @@ io::MeshData in_order_of(io::MeshData d, const std::string& key) {
   for (NodeId& v : d.cells) v = NodeId(new_id[v.idx()]);
   d.cells = reordered(d.cells, npc, cells);
   d.points = reordered(d.points, 1, points);
-  for (io::DataArray& a : d.cell_data)
+  for (DataArray& a : d.cell_data)
     a.values = reordered(a.values, static_cast<std::size_t>(a.n_components), cells);
-  for (io::DataArray& a : d.point_data)
+  for (DataArray& a : d.point_data)
     a.values = reordered(a.values, static_cast<std::size_t>(a.n_components), points);
   return d;
 }
@@ -283,16 +283,16 @@ std::vector<std::int64_t> integer_weights(const dist::Communicator& comm,
 
 }  // namespace
 
-RankInput read_on_ranks(const dist::Communicator& comm, const CLI::App& app,
-                        const std::string& path, io::ReadOptions options, int ghost_layers,
+RankInput read_on_ranks(const dist::Communicator& comm, const std::string& path,
+                        ReadOptions options, int ghost_layers,
                         const std::vector<double>& layer_weights) {
   RankInput in;
-  on_every_rank(comm, app, [&] {
-    if (io::holds_unstructured_mesh(path))
+  dist::on_every_rank(comm, [&] {
+    if (holds_unstructured_mesh(path))
       throw OptionError(path +
                         ": on several ranks this stage reads structured grids only (.vti .vtr "
                         ".vts, their parallel forms, a structured .vtk): run it on one process");
-    in.shape = io::structured_shape(path, options);
+    in.shape = structured_shape(path, options);
     in.slab = layer_weights.empty() ? dist::structured_slab(in.shape.cells, in.shape.dim,
                                                             comm.rank(), comm.size(), ghost_layers)
                                     : dist::weighted_slab(in.shape.cells, in.shape.dim, comm.rank(),
@@ -300,44 +300,44 @@ RankInput read_on_ranks(const dist::Communicator& comm, const CLI::App& app,
   });
   const auto axis = static_cast<std::size_t>(in.shape.dim - 1);
   options.layers = {in.slab.first_layer, in.slab.first_layer + in.slab.held[axis]};
-  on_every_rank(comm, app, [&] { in.data = io::read_mesh(path, options); });
+  dist::on_every_rank(comm, [&] { in.data = read_mesh(path, options); });
   in.whole_cells = 1;
   for (std::size_t a = 0; a < static_cast<std::size_t>(in.shape.dim); ++a)
     in.whole_cells *= in.shape.cells[a];
   return in;
 }
 
-io::RankPieces read_pieces_on_ranks(const dist::Communicator& comm, const CLI::App& app,
-                                    const std::string& path, const io::ReadOptions& options) {
-  io::RankPieces pieces;
-  on_every_rank(comm, app, [&] {
-    if (!io::holds_unstructured_mesh(path))
+RankPieces read_pieces_on_ranks(const dist::Communicator& comm, const std::string& path,
+                                const ReadOptions& options) {
+  RankPieces pieces;
+  dist::on_every_rank(comm, [&] {
+    if (!holds_unstructured_mesh(path))
       throw OptionError(path +
                         ": on several ranks this stage reads unstructured meshes only (.pvtu, "
                         ".vtu, .exo, an unstructured .vtk, .vtm, .pvd): run it on one process");
     if (ends_with(path, ".pvtu")) {
-      pieces = io::read_rank_pieces(path, options, comm.rank(), comm.size());
+      pieces = read_rank_pieces(path, options, comm.rank(), comm.size());
     } else if (comm.rank() == 0) {
       pieces.file = path;
-      pieces.pieces.push_back({path, io::read_mesh(path, options)});
+      pieces.pieces.push_back({path, read_mesh(path, options)});
       pieces.index.push_back(0);
     }
   });
   return pieces;
 }
 
-RankInput read_mesh_on_ranks(const dist::Communicator& comm, const CLI::App& app,
-                             const std::string& path, const io::ReadOptions& options,
-                             int ghost_layers, const std::vector<double>& layer_weights,
+RankInput read_mesh_on_ranks(const dist::Communicator& comm, const std::string& path,
+                             const ReadOptions& options, int ghost_layers,
+                             const std::vector<double>& layer_weights,
                              const CellWeights& cell_weights) {
-  if (!io::holds_unstructured_mesh(path))
-    return read_on_ranks(comm, app, path, options, ghost_layers, layer_weights);
-  io::RankPieces pieces = read_pieces_on_ranks(comm, app, path, options);
+  if (!holds_unstructured_mesh(path))
+    return read_on_ranks(comm, path, options, ghost_layers, layer_weights);
+  RankPieces pieces = read_pieces_on_ranks(comm, path, options);
   // Each collective step whole inside on_every_rank: a rank that fails alone must not leave
   // the others waiting in a collective it skipped.
-  io::MeshPart part;
-  on_every_rank(comm, app, [&] { part = io::merge_rank_pieces(comm, std::move(pieces), options); });
-  on_every_rank(comm, app, [&] {
+  MeshPart part;
+  dist::on_every_rank(comm, [&] { part = merge_rank_pieces(comm, std::move(pieces), options); });
+  dist::on_every_rank(comm, [&] {
     std::vector<int> parts;
     {
       std::vector<std::int64_t> cell_nodes;
@@ -345,16 +345,16 @@ RankInput read_mesh_on_ranks(const dist::Communicator& comm, const CLI::App& app
       for (const NodeId v : part.data.cells) cell_nodes.push_back(part.node_ids[v.idx()]);
       dist::DistGraph graph = dist::dual_graph(comm, part.data.nodes_per_cell(), cell_nodes);
       if (cell_weights) graph.weights = integer_weights(comm, cell_weights(part), part.n_cells);
-      parts = partition_by_rank(comm, graph);
+      parts = comm.parts_of(graph);
     }
-    part = io::migrate(comm, std::move(part), parts);
+    part = migrate(comm, std::move(part), parts);
   });
-  io::GhostedPart ghosted;
-  on_every_rank(comm, app, [&] { ghosted = io::with_ghost_layers(comm, part, ghost_layers); });
+  GhostedPart ghosted;
+  dist::on_every_rank(comm, [&] { ghosted = with_ghost_layers(comm, part, ghost_layers); });
   RankInput in;
   in.structured = false;
   in.whole_cells = part.n_cells;
-  part = io::MeshPart();
+  part = MeshPart();
   in.shape.dim = ghosted.part.data.dim;
   in.slab.block =
       dist::Block::listed(std::move(ghosted.part.cell_ids), ghosted.owned_cells,
@@ -363,54 +363,7 @@ RankInput read_mesh_on_ranks(const dist::Communicator& comm, const CLI::App& app
   return in;
 }
 
-std::vector<std::int64_t> grid_labels(const dist::Communicator& comm, const CLI::App& app,
-                                      const InputOptions& input, const std::string& path,
-                                      const RankInput& in) {
-  std::vector<std::int64_t> mine;
-  on_every_rank(comm, app,
-                [&] { mine = io::label_values(in.data, input.fractions, path, &in.slab.block); });
-  std::vector<std::int64_t> all = dist::all_gather_values(comm, mine);
-  std::sort(all.begin(), all.end());
-  all.erase(std::unique(all.begin(), all.end()), all.end());
-  return all;
-}
-
-Json ranks_json(const dist::Communicator& comm, const RankInput& in) {
-  Json j = {{"count", comm.size()}};
-  if (in.structured) {
-    const dist::Slab& slab = in.slab;
-    const std::vector<int> owned(slab.owned_layers.begin(), slab.owned_layers.end());
-    const std::vector<int> all = dist::all_gather_values(comm, owned);
-    Json layers = Json::array();
-    for (std::size_t r = 0; r + 1 < all.size(); r += 2) layers.push_back({all[r], all[r + 1]});
-    j["layers"] = layers;
-  } else {
-    const dist::Block& b = in.slab.block;
-    j["cells"] = dist::all_gather_values(comm, std::vector<std::int64_t>{b.owned_cell_end});
-    j["ghost_cells"] =
-        dist::all_gather_values(comm, std::vector<std::int64_t>{b.held_cells - b.owned_cell_end});
-  }
-  j["bytes_sent"] = dist::all_gather_values(comm, std::vector<std::uint64_t>{comm.bytes_sent()});
-  j["peak_memory"] =
-      dist::all_gather_values(comm, std::vector<std::uint64_t>{peak_resident_bytes()});
-  return j;
-}
-
-void check_rank_output(const std::string& flag, const std::string& path, bool gather,
-                       bool structured) {
-  if (gather || path.empty() || ends_with(path, ".pvtu") ||
-      (structured && ends_with(path, ".pvts")))
-    return;
-  const std::string formats =
-      structured ? "a .pvtu (.vtu pieces) or a .pvts (.vts pieces)" : "a .pvtu (.vtu pieces)";
-  throw OptionError(flag + " " + path +
-                    ": on several ranks the output is one piece per rank and the parallel file "
-                    "that names them: give " +
-                    formats + ", or --gather for one file of the whole " +
-                    (structured ? "grid" : "mesh"));
-}
-
-void drop_next_piece_nodes(io::MeshData& piece,
+void drop_next_piece_nodes(MeshData& piece,
                            const std::vector<std::pair<index_t, index_t>>& shared) {
   const auto n = static_cast<index_t>(piece.points.size());
   std::vector<index_t> to(static_cast<std::size_t>(n), -1);
@@ -431,8 +384,8 @@ void drop_next_piece_nodes(io::MeshData& piece,
 }
 
 // Every rank's `piece` as a .vtu, and the .pvtu naming them.
-void write_pieces(const dist::Communicator& comm, const CLI::App& app, const io::MeshData& piece,
-                  const std::string& path, const io::WriteOptions& options) {
+void write_pieces(const dist::Communicator& comm, const MeshData& piece, const std::string& path,
+                  const WriteOptions& options) {
   // Ranks without cells write no piece; the first rank with cells writes the .pvtu (a rank
   // without any would fail in write_vtu, as one process does).
   const std::vector<std::int64_t> cells = dist::all_gather_values(
@@ -441,66 +394,64 @@ void write_pieces(const dist::Communicator& comm, const CLI::App& app, const io:
   int first = -1;
   for (int r = 0; r < comm.size(); ++r)
     if (cells[static_cast<std::size_t>(r)] > 0) {
-      pieces.push_back(base_name(io::piece_path(path, r)));
+      pieces.push_back(base_name(piece_path(path, r)));
       if (first < 0) first = r;
     }
-  on_every_rank(comm, app, [&] {
+  dist::on_every_rank(comm, [&] {
     if (piece.n_cells() > 0 || (first < 0 && comm.rank() == 0))
-      io::write_vtu(piece, io::piece_path(path, comm.rank()), options);
-    if (comm.rank() == first) io::write_pvtu(piece, pieces, path);
+      write_vtu(piece, piece_path(path, comm.rank()), options);
+    if (comm.rank() == first) write_pvtu(piece, pieces, path);
   });
 }
 
 // write_on_ranks for a part of an unstructured mesh: the gathered mesh is rank 0's, every
-// rank's owned cells and their nodes put in place by their global ids (io::migrate).
-void write_mesh_part(const dist::Communicator& comm, const CLI::App& app, io::MeshData held,
-                     const RankInput& input, const std::string& path, bool gather,
-                     const io::WriteOptions& options, double memory_limit) {
-  io::MeshPart owned = owned_cells(std::move(held), input.slab.block, input.whole_cells);
-  if (!gather) return write_pieces(comm, app, owned.data, path, options);
-  check_gather_memory(comm, app, owned.data, memory_limit);
+// rank's owned cells and their nodes put in place by their global ids (migrate).
+void write_mesh_part(const dist::Communicator& comm, MeshData held, const RankInput& input,
+                     const std::string& path, bool gather, const WriteOptions& options,
+                     double memory_limit) {
+  MeshPart owned = owned_cells(std::move(held), input.slab.block, input.whole_cells);
+  if (!gather) return write_pieces(comm, owned.data, path, options);
+  check_gather_memory(comm, owned.data, memory_limit);
   std::vector<int> to_first(owned.cell_ids.size(), 0);
-  const io::MeshPart whole = io::migrate(comm, std::move(owned), to_first);
-  on_every_rank(comm, app, [&] {
-    if (comm.rank() == 0) io::write_mesh(whole.data, path, options);
+  const MeshPart whole = migrate(comm, std::move(owned), to_first);
+  dist::on_every_rank(comm, [&] {
+    if (comm.rank() == 0) write_mesh(whole.data, path, options);
   });
 }
 
-void write_disjoint_pieces(const dist::Communicator& comm, const CLI::App& app,
-                           const io::MeshData& piece, const std::string& path, bool gather,
-                           const io::WriteOptions& options, double memory_limit,
-                           const std::string& order_by) {
-  if (!gather) return write_pieces(comm, app, piece, path, options);
-  check_gather_memory(comm, app, piece, memory_limit);
-  io::MeshData whole = gathered_disjoint(comm, piece);
+void write_disjoint_pieces(const dist::Communicator& comm, const MeshData& piece,
+                           const std::string& path, bool gather, const WriteOptions& options,
+                           double memory_limit, const std::string& order_by) {
+  if (!gather) return write_pieces(comm, piece, path, options);
+  check_gather_memory(comm, piece, memory_limit);
+  MeshData whole = gathered_disjoint(comm, piece);
   if (comm.rank() == 0 && !order_by.empty()) whole = in_order_of(std::move(whole), order_by);
-  on_every_rank(comm, app, [&] {
-    if (comm.rank() == 0) io::write_mesh(whole, path, options);
+  dist::on_every_rank(comm, [&] {
+    if (comm.rank() == 0) write_mesh(whole, path, options);
   });
 }
 
-void write_on_ranks(const dist::Communicator& comm, const CLI::App& app, io::MeshData held,
-                    const RankInput& input, const std::string& path, bool gather,
-                    const io::WriteOptions& options, double memory_limit) {
+void write_on_ranks(const dist::Communicator& comm, MeshData held, const RankInput& input,
+                    const std::string& path, bool gather, const WriteOptions& options,
+                    double memory_limit) {
   if (!input.structured)
-    return write_mesh_part(comm, app, std::move(held), input, path, gather, options, memory_limit);
-  io::keep_layers(held, owned_layers(input.slab, input.shape.dim), path);
+    return write_mesh_part(comm, std::move(held), input, path, gather, options, memory_limit);
+  keep_layers(held, owned_layers(input.slab, input.shape.dim), path);
   if (gather) {
-    check_gather_memory(comm, app, held, memory_limit);
-    io::MeshData whole = gathered(comm, held, input);
-    on_every_rank(comm, app, [&] {
-      if (comm.rank() == 0) io::write_mesh(whole, path, options);
+    check_gather_memory(comm, held, memory_limit);
+    MeshData whole = gathered(comm, held, input);
+    dist::on_every_rank(comm, [&] {
+      if (comm.rank() == 0) write_mesh(whole, path, options);
     });
     return;
   }
-  if (ends_with(path, ".pvts"))
-    return write_structured_pieces(comm, app, held, input, path, options);
+  if (ends_with(path, ".pvts")) return write_structured_pieces(comm, held, input, path, options);
   std::vector<std::string> pieces;
-  for (int r = 0; r < comm.size(); ++r) pieces.push_back(base_name(io::piece_path(path, r)));
-  on_every_rank(comm, app, [&] {
-    io::write_vtu(held, io::piece_path(path, comm.rank()), options);
-    if (comm.rank() == 0) io::write_pvtu(held, pieces, path);
+  for (int r = 0; r < comm.size(); ++r) pieces.push_back(base_name(piece_path(path, r)));
+  dist::on_every_rank(comm, [&] {
+    write_vtu(held, piece_path(path, comm.rank()), options);
+    if (comm.rank() == 0) write_pvtu(held, pieces, path);
   });
 }
 
-}  // namespace hexadapt::cli
+}  // namespace hexadapt::io
