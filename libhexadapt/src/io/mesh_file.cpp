@@ -11,14 +11,14 @@
 #include <string>
 #include <vector>
 
+#include "collection/vtk_collection.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/exodus.h"
 #include "hexadapt/io/text_case.h"
 #include "hexadapt/io/vtk_collection.h"
 #include "hexadapt/io/vtk_legacy.h"
 #include "hexadapt/io/vtk_xml.h"
-#include "vtk_collection.h"
-#include "vtk_xml_document.h"
+#include "vtk_xml/vtk_xml_document.h"
 
 namespace hexadapt::io {
 

@@ -10,11 +10,11 @@
 #include <type_traits>
 #include <vector>
 
+#include "../provenance.h"
+#include "../vtk_cells.h"
+#include "../vtk_xml_comment.h"
 #include "hexadapt/io/atomic_file.h"
 #include "hexadapt/io/vtk_legacy.h"
-#include "provenance.h"
-#include "vtk_cells.h"
-#include "vtk_xml_comment.h"
 
 namespace hexadapt::io {
 

@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <numeric>
 
+#include "../mesh_rows.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/dist/routing.h"
-#include "mesh_rows.h"
 
 namespace hexadapt::io {
 

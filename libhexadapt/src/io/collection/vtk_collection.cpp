@@ -6,9 +6,9 @@
 #include <iterator>
 #include <limits>
 
+#include "../vtk_xml/vtk_xml_reader.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/vtk_xml.h"
-#include "vtk_xml_reader.h"
 
 namespace hexadapt::io {
 

@@ -1,6 +1,6 @@
 // UnstructuredGrid (.vtu): points, then cells from connectivity / offsets / types.
+#include "../vtk_cells.h"
 #include "hexadapt/core/error.h"
-#include "vtk_cells.h"
 #include "vtk_xml_array.h"
 #include "vtk_xml_reader.h"
 

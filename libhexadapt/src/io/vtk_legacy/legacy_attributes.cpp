@@ -4,9 +4,9 @@
 #include <optional>
 #include <string>
 
+#include "../provenance.h"
+#include "../vtk_xml_comment.h"
 #include "hexadapt/core/error.h"
-#include "provenance.h"
-#include "vtk_xml_comment.h"
 
 namespace hexadapt::io::detail {
 

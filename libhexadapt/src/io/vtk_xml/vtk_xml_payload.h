@@ -19,8 +19,8 @@ namespace hexadapt::io::detail {
 
 /// The file-wide settings of the VTKFile element.
 struct BinaryLayout {
-  bool header64 = false;    ///< header_type="UInt64" (else UInt32)
-  bool big_endian = false;  ///< byte_order="BigEndian"
+  bool header64 = false;                     ///< header_type="UInt64" (else UInt32)
+  bool big_endian = false;                   ///< byte_order="BigEndian"
   Compressor compressor = Compressor::none;  ///< the compressor attribute
 };
 

@@ -1,11 +1,11 @@
 #include "vtk_xml_reader.h"
 
+#include "../provenance.h"
+#include "../vtk_xml_comment.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/core/log.h"
 #include "hexadapt/io/vtk_xml.h"
-#include "provenance.h"
 #include "vtk_xml_array.h"
-#include "vtk_xml_comment.h"
 
 namespace hexadapt::io {
 

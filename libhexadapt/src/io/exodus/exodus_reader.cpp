@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "../time_step.h"
 #include "exodus_file.h"
 #include "exodus_guard.h"
 #include "exodus_info.h"
@@ -18,7 +19,6 @@
 #include "hexadapt/io/exodus.h"
 #include "hexadapt/io/material_names.h"
 #include "netcdf_extent.h"
-#include "time_step.h"
 
 namespace hexadapt::io {
 

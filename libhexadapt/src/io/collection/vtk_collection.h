@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "../vtk_xml/vtk_xml_document.h"
 #include "hexadapt/io/vtk_collection.h"
-#include "vtk_xml_document.h"
 
 namespace hexadapt::io::detail {
 

@@ -4,13 +4,13 @@
 #include <pugixml.hpp>
 #include <sstream>
 
+#include "../provenance.h"
+#include "../vtk_xml_comment.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/atomic_file.h"
 #include "hexadapt/io/material_names.h"
 #include "hexadapt/io/vtk_xml.h"
 #include "hexadapt/mesh/structured.h"
-#include "provenance.h"
-#include "vtk_xml_comment.h"
 #include "vtk_xml_encode.h"
 #include "vtk_xml_scalar.h"
 

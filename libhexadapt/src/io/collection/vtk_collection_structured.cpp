@@ -7,11 +7,11 @@
 #include <limits>
 #include <optional>
 
+#include "../vtk_cells.h"
+#include "../vtk_xml/vtk_xml_array.h"
+#include "../vtk_xml/vtk_xml_reader.h"
 #include "hexadapt/core/error.h"
-#include "vtk_cells.h"
 #include "vtk_collection.h"
-#include "vtk_xml_array.h"
-#include "vtk_xml_reader.h"
 
 namespace hexadapt::io::detail {
 

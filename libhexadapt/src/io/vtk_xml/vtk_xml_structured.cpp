@@ -3,8 +3,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "../vtk_cells.h"
 #include "hexadapt/core/error.h"
-#include "vtk_cells.h"
 #include "vtk_xml_array.h"
 #include "vtk_xml_reader.h"
 

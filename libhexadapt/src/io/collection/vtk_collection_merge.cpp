@@ -7,12 +7,12 @@
 #include <cmath>
 #include <limits>
 
+#include "../mesh_rows.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/core/geometry.h"
 #include "hexadapt/core/log.h"
 #include "hexadapt/dist/merge_pieces.h"
 #include "hexadapt/dist/routing.h"
-#include "mesh_rows.h"
 #include "vtk_collection.h"
 
 namespace hexadapt::io::detail {

@@ -3,10 +3,10 @@
 #include <cmath>
 #include <map>
 
+#include "../time_step.h"
+#include "../vtk_xml/vtk_xml_array.h"
 #include "hexadapt/core/error.h"
-#include "time_step.h"
 #include "vtk_collection.h"
-#include "vtk_xml_array.h"
 
 namespace hexadapt::io::detail {
 

@@ -4,18 +4,17 @@
 #include <limits>
 #include <string>
 
+#include "../vtk_cells.h"
 #include "hexadapt/core/error.h"
 #include "hexadapt/io/legacy_scanner.h"
 #include "hexadapt/io/vtk_legacy.h"
 #include "legacy_attributes.h"
-#include "vtk_cells.h"
 
 namespace hexadapt::io {
 
 namespace {
 
 enum class Kind { points, rectilinear, structured, unstructured };
-
 
 struct Geometry {
   Kind kind = Kind::unstructured;
