@@ -1,6 +1,9 @@
 // The processes a tool runs on: the ranks of the MPI job that started it (mpirun, srun), or
 // this process alone. MPI is started only when a launcher started the process, so a tool run
 // by hand never touches it.
+// Beside them, what the tools add to the library's per-rank files (io/rank_files.h): the
+// labels of a label map over the whole grid, the report's `ranks` block, the check that an
+// output path can take one piece per rank.
 #pragma once
 
 #include <cstdint>
