@@ -387,11 +387,15 @@ TEST(GuaranteedMethod, NodesThatSlidShortOfTheirTargetReachItThroughACavity) {
 // of its 762 interface nodes on their surface short of their targets (target distance ratio
 // 0.0115); cavities around them at the end take them there. Some of its targets are closer
 // than the size criterion lets their edge be (12 edges), which target_spacing.h pushes apart.
+// The loop's smoothing relaxes the nodes to a hundredth of an edge here: with the default
+// tenth, no node is left short on this case.
 TEST(GuaranteedMethod, AFewNodesLeftShortByTheFirstLayerReachTheirTargetsThroughLateCavities) {
   test::with_generated_case(
       test::GeneratedCase{"stir", {40, 20}, 1.0, 2},
       [](const auto& grid, const Fractions& f, const IdVector<CellId, int>& m) {
-        AdaptOptions o = guaranteed_options();
+        AdaptOptions relaxed = guaranteed_options();
+        relaxed.loop_min_move = 0.01;
+        AdaptOptions o = relaxed;
         o.late_cavity_share = 0;
         o.reach.passes = 0;  // the late reach takes them there too
         const auto without = adapt(grid, f, m, o);
@@ -402,7 +406,7 @@ TEST(GuaranteedMethod, AFewNodesLeftShortByTheFirstLayerReachTheirTargetsThrough
         EXPECT_GT(without.spacing.short_edges, 0);
         EXPECT_EQ(without.spacing.left_short, 0);
 
-        const auto r = adapt(grid, f, m, guaranteed_options());
+        const auto r = adapt(grid, f, m, relaxed);
         check_guaranteed(grid, r);
         EXPECT_EQ(r.n_below_min_edge, 0);
         EXPECT_EQ(r.late_cavities.short_nodes, 3);

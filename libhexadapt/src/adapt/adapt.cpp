@@ -68,6 +68,8 @@ void check_options(const AdaptOptions& o) {
     throw OptionError("{reach.passes} must be >= 0, got " + std::to_string(o.reach.passes));
   if (!(o.loop_tolerance >= 0))
     throw OptionError("loop_tolerance must be >= 0, got " + std::to_string(o.loop_tolerance));
+  if (!(o.loop_min_move >= 0))
+    throw OptionError("loop_min_move must be >= 0, got " + std::to_string(o.loop_min_move));
   if (o.targets.volume_sweeps < 0 || !(o.targets.volume_max_shift >= 0) ||
       !(o.targets.volume_tolerance >= 0))
     throw OptionError("volume_sweeps, volume_max_shift and volume_tolerance must be >= 0");

@@ -129,12 +129,14 @@ int move_smooth_loop(M& mesh, const Targets& targets,
   // What the next smoothing must try; the first tries `first`, or all without it.
   std::vector<NodeId> start = first ? *first : std::vector<NodeId>{};
   NeighbourCache neighbours(mesh.n_nodes());
+  SmoothOptions smoothing = options.smooth;
+  if constexpr (M::dim == 3) smoothing.min_move = options.loop_min_move;
   while (loops < options.max_loops && best > 0) {
     if (options.progress)
       options.progress("move-smooth " + std::to_string(rounds_before + loops + 1),
                        static_cast<double>(loops) / options.max_loops);
     ++loops;
-    const SmoothResult s = smooth(mesh, movable, sliding, options.smooth,
+    const SmoothResult s = smooth(mesh, movable, sliding, smoothing,
                                   loops == 1 && !first ? nullptr : &start, size, &neighbours);
     const std::vector<Vec3> before = points_of(mesh);
     controlled_move(mesh, targets, options.move, options, size, &sliding);
