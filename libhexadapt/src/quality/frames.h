@@ -42,19 +42,29 @@ struct HexEdges {
   double longest = 0;
 };
 
-inline HexEdges hex_edges(const std::array<Vec3, 8>& p) {
+/// Edge K of hex_edges, K known at compile time (the ends' indices fold away).
+template <std::size_t K>
+[[gnu::always_inline]] inline void hex_edge(const std::array<Vec3, 8>& p, HexEdges& e) {
+  constexpr auto ends = ref_hex::edges[K];
+  e.vec[K] = p[static_cast<std::size_t>(ends[1])] - p[static_cast<std::size_t>(ends[0])];
+  e.length[K] = e.vec[K].norm();
+  e.longest = std::max(e.longest, e.length[K]);
+}
+
+template <std::size_t... K>
+[[gnu::always_inline]] inline HexEdges hex_edges(const std::array<Vec3, 8>& p,
+                                                 std::index_sequence<K...>) {
   HexEdges e;
-  for (std::size_t k = 0; k < 12; ++k) {
-    const auto& ends = ref_hex::edges[k];
-    e.vec[k] = p[static_cast<std::size_t>(ends[1])] - p[static_cast<std::size_t>(ends[0])];
-    e.length[k] = e.vec[k].norm();
-    e.longest = std::max(e.longest, e.length[k]);
-  }
+  (hex_edge<K>(p, e), ...);
   return e;
 }
 
+inline HexEdges hex_edges(const std::array<Vec3, 8>& p) {
+  return hex_edges(p, std::make_index_sequence<12>{});
+}
+
 /// The index in ref_hex::edges of the edge leaving corner v along axis 0, 1 or 2.
-inline std::size_t hex_edge_index(std::size_t v, int axis) {
+constexpr std::size_t hex_edge_index(std::size_t v, int axis) {
   if (axis == 0) return (v & 6u) >> 1;
   if (axis == 1) return 4 + ((v & 1u) | ((v >> 1) & 2u));
   return 8 + (v & 3u);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "frames.h"
 
@@ -32,6 +33,38 @@ bool scaled_det(const Vec3& a, const Vec3& b, const Vec3& c, double scale, doubl
   const unsigned parity = (v & 1u) ^ ((v >> 1) & 1u) ^ ((v >> 2) & 1u);
   if (parity) std::swap(f[0], f[1]);
   return f[0].dot(f[1].cross(f[2]));
+}
+
+// The same with v known at compile time: the score's hot loop, unrolled (no branch on v's
+// bits), computing the very same products in the same order.
+template <std::size_t V>
+[[gnu::always_inline]] inline double corner_jacobian(const std::array<Vec3, 12>& unit) {
+  const auto edge = [&](int axis) -> Vec3 {
+    const Vec3& u = unit[quality_detail::hex_edge_index(V, axis)];
+    return (V >> axis) & 1u ? Vec3(-u) : u;
+  };
+  constexpr unsigned parity = (V & 1u) ^ ((V >> 1) & 1u) ^ ((V >> 2) & 1u);
+  if constexpr (parity != 0) return edge(1).dot(edge(0).cross(edge(2)));
+  return edge(0).dot(edge(1).cross(edge(2)));
+}
+
+// The least corner Jacobian, corner by corner, stopping at the first one that makes it
+// non-finite (false) or below stop_below.
+template <std::size_t... V>
+[[gnu::always_inline]] inline bool least_corner(const std::array<Vec3, 12>& unit,
+                                                double stop_below, double& worst,
+                                                std::index_sequence<V...>) {
+  bool finite = true;
+  const auto take = [&](double j) {
+    if (!std::isfinite(j)) {
+      finite = false;
+      return true;
+    }
+    worst = std::min(worst, j);
+    return worst < stop_below;
+  };
+  (take(corner_jacobian<V>(unit)) || ...);
+  return finite;
 }
 
 // The unit vector of edge k of p; false when the edge has no direction.
@@ -64,12 +97,8 @@ double quality_detail::hex_scaled_jacobian(const std::array<Vec3, 8>& p,
   // is mostly known after a few corners. Clamping keeps an early value below stop_below, or
   // makes it -1, which the whole minimum then is too.
   double worst = 1.0;
-  for (std::size_t v = 0; v < 8; ++v) {
-    const double j = corner_jacobian(unit, v);
-    if (!std::isfinite(j)) return -1.0;
-    worst = std::min(worst, j);
-    if (worst < stop_below) return std::clamp(worst, -1.0, 1.0);
-  }
+  if (!least_corner(unit, stop_below, worst, std::make_index_sequence<8>{})) return -1.0;
+  if (worst < stop_below) return std::clamp(worst, -1.0, 1.0);
   const auto axes = quality_detail::hex_principal_axes(p);
   double centre;
   if (!scaled_det(axes[0], axes[1], axes[2], 4 * scale, centre)) return -1.0;
