@@ -147,7 +147,7 @@ CavityPatch<M> patch_of(const EditableMesh<M>& mesh, const std::vector<CellId>& 
   return mesh.patch(set, true);
 }
 
-// A pillowed patch, the size criterion on its cells, and the smallest score (size_criterion.h)
+// A pillowed patch, the size criterion on its cells, and the smallest score (quality/cell_score.h)
 // among the cavity's and its layer's cells after smoothing.
 template <class M>
 struct TriedCavity {

@@ -45,7 +45,7 @@ struct CavityAttempt {
   int range = 0;              ///< the largest range of its seeds
   index_t cells = 0;          ///< cells of the cavity
   bool published = false;
-  double min_quality = 0;  ///< smallest score (size_criterion.h) of the cavity and its layer
+  double min_quality = 0;  ///< smallest score (quality/cell_score.h) of the cavity and its layer
 };
 
 template <class M>

@@ -1,21 +1,11 @@
-// The size criterion of the guarantee (DESIGN sec. 6), beside the shape one (scaled Jacobian
-// >= S_q, paper sec. 5): every cell keeps its shortest edge at least `min_edge` times its
-// local input size, so that no sliver cuts an explicit solver's time step. The scaled
-// Jacobian says nothing about size: a quad with one edge a thousandth of the others can
-// score 0.77.
+// The size criterion of the guarantee (DESIGN sec. 6) on a mesh: every cell keeps its shortest
+// edge at least `min_edge` times its local input size; the score that holds it together with
+// the shape criterion is quality/cell_score.h's, here taken cell by cell.
 //
 // Local input size: the mean edge length of the input-grid cell a cell comes from (a pillow
 // layer cell: the cell it was inflated from). Moves never change it; pillowing carries it
 // through its cell-origin maps (remapped). The output mesh holds it as the `local_size` cell
 // array, which hexadapt-measure checks the criterion against.
-//
-// The adaptation steps compare one number per cell, the score: the scaled Jacobian when the
-// size criterion holds, and -2 + shortest / (min_edge x local size), in [-2, -1), when it does
-// not. A cell that breaks the size criterion therefore scores below every scaled Jacobian,
-// so "every cell around the node >= S_q" (controlled move, cavities) means both criteria, and
-// "never lower the local minimum" (smoothing) never makes a sliver where there was none and
-// lengthens the short edge of one that is there. Where the criterion holds nothing changes:
-// with min_edge 0 (off) the score is the scaled Jacobian.
 #pragma once
 
 #include <limits>
@@ -23,6 +13,7 @@
 
 #include "hexadapt/core/ids.h"
 #include "hexadapt/mesh/cell_complex.h"
+#include "hexadapt/quality/cell_score.h"
 #include "hexadapt/quality/cell_size.h"
 
 namespace hexadapt {
@@ -79,43 +70,25 @@ double node_local_size(const M& mesh, NodeId n, const SizeCriterion& size) {
 template <class M>
 double size_ratio(const M& mesh, CellId c, const SizeCriterion& size);
 
-/// The score of cell c from its scaled Jacobian and its shortest edge (or bounds of them).
-inline double score_of(double scaled_jacobian, double shortest_edge, CellId c,
-                       const SizeCriterion& size) {
-  if (!size.on()) return scaled_jacobian;
-  const double r = shortest_edge / size.min_length(c);
-  return r < 1 ? -2.0 + r : scaled_jacobian;
-}
-
-/// The scaled Jacobian, or -2 + size_ratio in [-2, -1) when the size criterion fails. Exact
-/// when at least `stop_below`; below it, a hex's score may be any value below it (its
-/// Jacobian is then computed only as far as needed).
+/// Cell c's score (quality/cell_score.h) with its minimum length. Exact when at least
+/// `stop_below`; below it, a hex's score may be any value below it.
 template <class M>
 double cell_score(const M& mesh, CellId c, const SizeCriterion& size,
                   double stop_below = -std::numeric_limits<double>::infinity()) {
-  if constexpr (M::dim == 3) {  // the hex's edges once for both criteria
-    const HexShapeAndSize m =
-        hex_shape_and_size(mesh.cell_points(c), size.min_length(c), stop_below);
-    return score_of(m.scaled_jacobian, m.shortest_edge, c, size);
-  } else {
-    if (!size.on()) return mesh.cell_quality(c);
-    const double r = size_ratio(mesh, c, size);
-    return r < 1 ? -2.0 + r : mesh.cell_quality(c);
-  }
+  if constexpr (M::dim == 3)
+    return hex_score(mesh.cell_points(c), size.min_length(c), stop_below);
+  else
+    return quad_score(mesh.cell_points(c), size.min_length(c));
 }
 
 /// The highest score cell c can reach while only its node `moving` (its index in the cell's
-/// nodes) moves: -2 + the shortest edge not touching it / min length when that one already
-/// breaks the size criterion, else the scaled Jacobian of the corners whose frames do not
-/// hold it (cell_size.h). When c scores it already, no move of that node raises c's score.
+/// nodes) moves (hex_score_bound).
 template <class M>
 double cell_score_bound(const M& mesh, CellId c, const SizeCriterion& size, std::size_t moving) {
-  ShapeAndSizeBound b;
   if constexpr (M::dim == 3)
-    b = hex_bound_moving(mesh.cell_points(c), moving);
+    return hex_score_bound(mesh.cell_points(c), moving, size.min_length(c));
   else
-    b = quad_bound_moving(mesh.cell_points(c), moving);
-  return score_of(b.scaled_jacobian, b.shortest_edge, c, size);
+    return quad_score_bound(mesh.cell_points(c), moving, size.min_length(c));
 }
 
 /// Smallest score of the cells around n (1 when n has no cell). With `stop_below`, returns
@@ -141,10 +114,8 @@ struct CellFailure {
   Vec3 centroid = Vec3::Zero();
   bool shape_failed(double threshold) const { return scaled_jacobian < threshold; }
   bool size_failed() const { return shortest_edge < min_length; }
-  /// cell_score's value: -2 + shortest / min_length when the size fails, else the Jacobian.
-  double score() const {
-    return size_failed() ? -2.0 + shortest_edge / min_length : scaled_jacobian;
-  }
+  /// Its score (quality/cell_score.h).
+  double score() const { return score_of(scaled_jacobian, shortest_edge, min_length); }
 };
 
 /// Every cell with scaled Jacobian < threshold or shortest edge < its min_length, by id.

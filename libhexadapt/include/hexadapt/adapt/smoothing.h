@@ -5,7 +5,7 @@
 // restricted by its constraint (boundary plane or edge, interface plane or curve: the node
 // slides along them), and shortened by halves until the smallest score of the cells around
 // the node (the scaled Jacobian, below it where a cell breaks the size criterion:
-// size_criterion.h) does not go down; a move that cannot keep it is not made. A node whose
+// quality/cell_score.h) does not go down; a move that cannot keep it is not made. A node whose
 // cells stay poor then tries a pattern search along the axes (within its constraint) that
 // only accepts a higher local minimum: it untangles what the Laplacian pull cannot. Nodes sharing
 // no cell are moved in parallel in a fixed order, so the result does not depend on the thread
