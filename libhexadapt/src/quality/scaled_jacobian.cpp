@@ -21,22 +21,9 @@ bool scaled_det(const Vec3& a, const Vec3& b, const Vec3& c, double scale, doubl
   return std::isfinite(out);
 }
 
-// Corner v's Jacobian from the unit edges (hex_corner_frame): its edges along x, y, z
-// pointing away from v, x and y swapped at the corners of odd parity.
-[[gnu::always_inline]] inline double corner_jacobian(const std::array<Vec3, 12>& unit,
-                                                     std::size_t v) {
-  std::array<Vec3, 3> f;
-  for (int axis = 0; axis < 3; ++axis) {
-    const Vec3& u = unit[quality_detail::hex_edge_index(v, axis)];
-    f[static_cast<std::size_t>(axis)] = (v >> axis) & 1u ? Vec3(-u) : u;
-  }
-  const unsigned parity = (v & 1u) ^ ((v >> 1) & 1u) ^ ((v >> 2) & 1u);
-  if (parity) std::swap(f[0], f[1]);
-  return f[0].dot(f[1].cross(f[2]));
-}
-
-// The same with v known at compile time: the score's hot loop, unrolled (no branch on v's
-// bits), computing the very same products in the same order.
+// Corner V's Jacobian from the unit edges (hex_corner_frame): its edges along x, y, z
+// pointing away from V, x and y swapped at the corners of odd parity. V is known at compile
+// time: the score's hot loop is unrolled, with no branch on V's bits.
 template <std::size_t V>
 [[gnu::always_inline]] inline double corner_jacobian(const std::array<Vec3, 12>& unit) {
   const auto edge = [&](int axis) -> Vec3 {
@@ -46,6 +33,15 @@ template <std::size_t V>
   constexpr unsigned parity = (V & 1u) ^ ((V >> 1) & 1u) ^ ((V >> 2) & 1u);
   if constexpr (parity != 0) return edge(1).dot(edge(0).cross(edge(2)));
   return edge(0).dot(edge(1).cross(edge(2)));
+}
+
+// The same for a corner known at run time (the bounds).
+double corner_jacobian(const std::array<Vec3, 12>& unit, std::size_t v) {
+  using Corner = double (*)(const std::array<Vec3, 12>&);
+  static constexpr std::array<Corner, 8> corners = {
+      &corner_jacobian<0>, &corner_jacobian<1>, &corner_jacobian<2>, &corner_jacobian<3>,
+      &corner_jacobian<4>, &corner_jacobian<5>, &corner_jacobian<6>, &corner_jacobian<7>};
+  return corners[v](unit);
 }
 
 // The least corner Jacobian, corner by corner, stopping at the first one that makes it
