@@ -1,26 +1,21 @@
 // The guarantee's score of one cell (quality/cell_score.h): the scaled Jacobian where the
 // shortest edge is long enough, below every Jacobian where it is not, and bounds that no move
 // of one corner beats.
+#include "hexadapt/quality/cell_score.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
 
-#include "hexadapt/quality/cell_score.h"
 #include "hexadapt/quality/cell_size.h"
 #include "hexadapt/quality/scaled_jacobian.h"
+#include "quality/box_cells.h"
 
 namespace hexadapt {
 namespace {
 
-std::array<Vec3, 8> scored_box(double a, double b, double c) {
-  std::array<Vec3, 8> p;
-  for (std::size_t v = 0; v < 8; ++v)
-    p[v] = Vec3(a * double(v & 1u), b * double((v >> 1) & 1u), c * double((v >> 2) & 1u));
-  return p;
-}
-
 TEST(CellScore, TheJacobianWhereTheShortestEdgeIsLongEnough) {
-  std::array<Vec3, 8> hex = scored_box(1, 2, 4);
+  std::array<Vec3, 8> hex = test::box_hex(1, 2, 4);
   hex[7] += Vec3(0.3, -0.2, 0.1);
   const double sj = hex_scaled_jacobian(hex);
   EXPECT_EQ(hex_score(hex, 0), sj);    // size criterion off
@@ -31,14 +26,14 @@ TEST(CellScore, TheJacobianWhereTheShortestEdgeIsLongEnough) {
 }
 
 TEST(CellScore, BelowEveryJacobianWhereTheShortestEdgeIsTooShort) {
-  const std::array<Vec3, 8> hex = scored_box(1, 2, 4);  // a perfect shape: Jacobian 1
+  const std::array<Vec3, 8> hex = test::box_hex(1, 2, 4);  // a perfect shape: Jacobian 1
   EXPECT_DOUBLE_EQ(hex_score(hex, 1.25), -2.0 + 1.0 / 1.25);
   const std::array<Vec3, 4> quad = {Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(2, 0.5, 0), Vec3(0, 0.5, 0)};
   EXPECT_DOUBLE_EQ(quad_score(quad, 1), -2.0 + 0.5);
   // An inverted cell with long edges still scores above a perfect sliver.
-  std::array<Vec3, 8> inverted = scored_box(1, 1, 1);
+  std::array<Vec3, 8> inverted = test::box_hex(1, 1, 1);
   std::swap(inverted[0], inverted[1]);
-  EXPECT_GT(hex_score(inverted, 0.5), hex_score(scored_box(1, 1, 0.1), 0.5));
+  EXPECT_GT(hex_score(inverted, 0.5), hex_score(test::box_hex(1, 1, 0.1), 0.5));
   EXPECT_EQ(score_of(0.7, 0.2, 0.1), 0.7);
   EXPECT_DOUBLE_EQ(score_of(0.7, 0.05, 0.1), -1.5);
 }
@@ -47,7 +42,7 @@ TEST(CellScore, ExactDownToTheBoundItIsAskedFor) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> jitter(-0.35, 0.35);
   for (int trial = 0; trial < 500; ++trial) {
-    std::array<Vec3, 8> hex = scored_box(1, 1, 1);
+    std::array<Vec3, 8> hex = test::box_hex(1, 1, 1);
     for (Vec3& q : hex) q += Vec3(jitter(rng), jitter(rng), jitter(rng));
     const double whole = hex_score(hex, 0.3);
     for (double stop : {-0.5, 0.0, 0.3, 0.6}) {
@@ -64,7 +59,7 @@ TEST(CellScore, NoMoveOfOneCornerBeatsItsBound) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> jitter(-0.3, 0.3), far(-1.5, 1.5);
   for (int trial = 0; trial < 200; ++trial) {
-    std::array<Vec3, 8> hex = scored_box(1, 1, 1);
+    std::array<Vec3, 8> hex = test::box_hex(1, 1, 1);
     for (Vec3& q : hex) q += Vec3(jitter(rng), jitter(rng), jitter(rng));
     const std::size_t moving = static_cast<std::size_t>(trial % 8);
     const double bound = hex_score_bound(hex, moving, 0.4);

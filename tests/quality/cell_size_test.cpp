@@ -1,6 +1,8 @@
 // Known answers for the size metrics: edge lengths, edge ratio and time-step length of
 // boxes, a collapsed cell and an inverted one; the one-pass and bounded forms the
 // adaptation's score uses against the whole computations.
+#include "hexadapt/quality/cell_size.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,32 +11,25 @@
 #include <random>
 #include <vector>
 
-#include "hexadapt/quality/cell_size.h"
 #include "hexadapt/quality/scaled_jacobian.h"
+#include "quality/box_cells.h"
 
 namespace hexadapt {
 namespace {
-
-std::array<Vec3, 8> box(double a, double b, double c) {
-  std::array<Vec3, 8> p;
-  for (std::size_t v = 0; v < 8; ++v)
-    p[v] = Vec3(a * double(v & 1u), b * double((v >> 1) & 1u), c * double((v >> 2) & 1u));
-  return p;
-}
 
 std::array<Vec3, 4> rectangle(double a, double b) {
   return {Vec3(0, 0, 0), Vec3(a, 0, 0), Vec3(a, b, 0), Vec3(0, b, 0)};
 }
 
 TEST(CellSize, HexBoxEdgesAndTimeStep) {
-  const EdgeLengths e = hex_edge_lengths(box(1, 2, 4));
+  const EdgeLengths e = hex_edge_lengths(test::box_hex(1, 2, 4));
   EXPECT_DOUBLE_EQ(e.min, 1);
   EXPECT_DOUBLE_EQ(e.max, 4);
   EXPECT_DOUBLE_EQ(e.mean, 7.0 / 3.0);  // four edges of each length
   EXPECT_DOUBLE_EQ(e.ratio(), 4);
   // volume 8, largest face 2 x 4 = 8: the thinnest direction, 1.
-  EXPECT_DOUBLE_EQ(hex_time_step_length(box(1, 2, 4)), 1);
-  EXPECT_DOUBLE_EQ(hex_time_step_length(box(3, 3, 3)), 3);
+  EXPECT_DOUBLE_EQ(hex_time_step_length(test::box_hex(1, 2, 4)), 1);
+  EXPECT_DOUBLE_EQ(hex_time_step_length(test::box_hex(3, 3, 3)), 3);
 }
 
 TEST(CellSize, QuadRectangleEdgesAndTimeStep) {
@@ -48,8 +43,8 @@ TEST(CellSize, QuadRectangleEdgesAndTimeStep) {
 
 TEST(CellSize, ScalesWithTheUnit) {
   const double s = 1e-4;
-  EXPECT_DOUBLE_EQ(hex_edge_lengths(box(s, 2 * s, 4 * s)).ratio(), 4);
-  EXPECT_NEAR(hex_time_step_length(box(s, 2 * s, 4 * s)), s, 1e-15 * s);
+  EXPECT_DOUBLE_EQ(hex_edge_lengths(test::box_hex(s, 2 * s, 4 * s)).ratio(), 4);
+  EXPECT_NEAR(hex_time_step_length(test::box_hex(s, 2 * s, 4 * s)), s, 1e-15 * s);
   EXPECT_NEAR(quad_time_step_length(rectangle(2e6, 5e5)), 5e5, 1e-9);
 }
 
@@ -64,7 +59,7 @@ TEST(CellSize, InvertedOrNanCellsHaveNoTimeStep) {
   std::array<Vec3, 4> cw = rectangle(1, 1);
   std::swap(cw[1], cw[3]);
   EXPECT_EQ(quad_time_step_length(cw), 0);
-  std::array<Vec3, 8> h = box(1, 1, 1);
+  std::array<Vec3, 8> h = test::box_hex(1, 1, 1);
   h[7].x() = std::nan("");
   EXPECT_EQ(hex_time_step_length(h), 0);
   EXPECT_EQ(hex_edge_lengths(h).min, 0);
@@ -106,13 +101,13 @@ TEST(CellSize, ShapeAndSizeInOnePassAreTheTwoApart) {
   std::uniform_real_distribution<double> jitter(-0.6, 0.6);
   std::vector<std::array<Vec3, 8>> hexes;
   for (int k = 0; k < 200; ++k) {
-    std::array<Vec3, 8> p = box(1, 2, 0.5);
+    std::array<Vec3, 8> p = test::box_hex(1, 2, 0.5);
     for (Vec3& x : p) x += Vec3(jitter(rng), jitter(rng), jitter(rng));
     hexes.push_back(p);
   }
-  hexes.push_back(box(1, 1, 1));
+  hexes.push_back(test::box_hex(1, 1, 1));
   hexes.back()[3] = hexes.back()[1];
-  hexes.push_back(box(1, 1, 1));
+  hexes.push_back(test::box_hex(1, 1, 1));
   hexes.back()[6].z() = std::nan("");
   int inverted = 0;
   for (const auto& p : hexes) {
@@ -159,7 +154,7 @@ TEST(CellSize, NoMoveOfOneCornerRaisesACellAboveItsBound) {
   std::vector<std::array<Vec3, 8>> hexes;
   std::vector<std::array<Vec3, 4>> quads;
   for (int k = 0; k < 60; ++k) {
-    hexes.push_back(box(1, 2, 0.5));
+    hexes.push_back(test::box_hex(1, 2, 0.5));
     for (Vec3& x : hexes.back()) x += Vec3(jitter(rng), jitter(rng), jitter(rng));
     quads.push_back(rectangle(1, 2));
     for (Vec3& x : quads.back()) x += Vec3(jitter(rng), jitter(rng), 0);
@@ -167,7 +162,7 @@ TEST(CellSize, NoMoveOfOneCornerRaisesACellAboveItsBound) {
   check_bounds<8>(hexes, hex_scaled_jacobian, hex_bound_moving, hex_edge_lengths);
   check_bounds<4>(quads, quad_scaled_jacobian, quad_bound_moving, quad_edge_lengths);
   // A collapsed edge away from the moving corner caps the shortest edge at 0.
-  std::array<Vec3, 8> flat = box(1, 1, 1);
+  std::array<Vec3, 8> flat = test::box_hex(1, 1, 1);
   flat[7] = flat[6];
   EXPECT_EQ(hex_bound_moving(flat, 0).shortest_edge, 0);
   EXPECT_EQ(hex_bound_moving(flat, 0).scaled_jacobian, 1);  // no direction there: no bound
@@ -195,7 +190,7 @@ TEST(CellSize, ScoresDownToABoundAreTheWholeComputationAboveIt) {
   std::uniform_real_distribution<double> jitter(-0.4, 0.4), step(-1.2, 1.2), bound(-1.2, 1.0);
   int stopped = 0, exact = 0;
   for (int k = 0; k < 80; ++k) {
-    std::array<Vec3, 8> p = box(1, 2, 0.5);
+    std::array<Vec3, 8> p = test::box_hex(1, 2, 0.5);
     for (Vec3& x : p) x += Vec3(jitter(rng), jitter(rng), jitter(rng));
     for (std::size_t moving = 0; moving < 8; ++moving) {
       for (int t = 0; t < 12; ++t) {

@@ -47,9 +47,8 @@ double corner_jacobian(const std::array<Vec3, 12>& unit, std::size_t v) {
 // The least corner Jacobian, corner by corner, stopping at the first one that makes it
 // non-finite (false) or below stop_below.
 template <std::size_t... V>
-[[gnu::always_inline]] inline bool least_corner(const std::array<Vec3, 12>& unit,
-                                                double stop_below, double& worst,
-                                                std::index_sequence<V...>) {
+[[gnu::always_inline]] inline bool least_corner(const std::array<Vec3, 12>& unit, double stop_below,
+                                                double& worst, std::index_sequence<V...>) {
   bool finite = true;
   const auto take = [&](double j) {
     if (!std::isfinite(j)) {
@@ -103,7 +102,7 @@ double quality_detail::hex_scaled_jacobian(const std::array<Vec3, 8>& p,
 
 double hex_scaled_jacobian(const std::array<Vec3, 8>& p) {
   return quality_detail::hex_scaled_jacobian(p, quality_detail::hex_edges(p),
-                                           -std::numeric_limits<double>::infinity());
+                                             -std::numeric_limits<double>::infinity());
 }
 
 double quality_detail::hex_scaled_jacobian_bound(const quality_detail::HexEdges& e,
