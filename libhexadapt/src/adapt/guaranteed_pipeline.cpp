@@ -410,8 +410,10 @@ void run_layers(const M& grid, const CellMaterials& material, const Targets& gri
   r.dist_init = f.move.dist;
   r.surface_dist_init = f.surface_dist;
   const MoveResult first = std::move(f.move);
-  r.steps.push_back({"pillow", min_quality(mesh), mesh.n_cells(), f.pillow_seconds});
-  r.steps.push_back({"move", min_quality(mesh), mesh.n_cells(), f.move_seconds});
+  // Both steps report the moved mesh's quality: the pillowed one before the move is not kept.
+  const double moved_quality = min_quality(mesh);
+  r.steps.push_back({"pillow", moved_quality, mesh.n_cells(), f.pillow_seconds});
+  r.steps.push_back({"move", moved_quality, mesh.n_cells(), f.move_seconds});
   Timer clock;
   if (options.progress) options.progress("cavity", 0.3);
 

@@ -14,10 +14,14 @@
 // Algorithms are templates over M, instantiated for QuadMesh and HexMesh only.
 #pragma once
 
+#include <algorithm>
+#include <cstdint>
 #include <type_traits>
 #include <variant>
+#include <vector>
 
 #include "hexadapt/core/ids.h"
+#include "hexadapt/core/parallel.h"
 #include "hexadapt/mesh/hex_mesh.h"
 #include "hexadapt/mesh/quad_mesh.h"
 
@@ -38,11 +42,21 @@ Vec3 cell_centroid(const M& mesh, CellId c) {
   return s / M::nodes_per_cell;
 }
 
-/// Smallest scaled Jacobian over all cells (1 for an empty mesh).
+/// Smallest scaled Jacobian over all cells (1 for an empty mesh), block by block on the
+/// library's threads (a minimum is the same in any order).
 template <class M>
 double min_quality(const M& mesh) {
+  constexpr std::int64_t block = 4096;
+  const std::int64_t n = mesh.n_cells();
+  std::vector<double> least(static_cast<std::size_t>((n + block - 1) / block), 1.0);
+  parallel_for(static_cast<std::int64_t>(least.size()), [&](std::int64_t b) {
+    const std::int64_t end = std::min<std::int64_t>(n, (b + 1) * block);
+    double q = 1.0;
+    for (std::int64_t i = b * block; i < end; ++i) q = std::min(q, mesh.cell_quality(CellId(i)));
+    least[static_cast<std::size_t>(b)] = q;
+  });
   double q = 1.0;
-  for (CellId c : id_range<CellId>(mesh.n_cells())) q = std::min(q, mesh.cell_quality(c));
+  for (double l : least) q = std::min(q, l);
   return q;
 }
 
