@@ -12,11 +12,8 @@ double hex_score(const std::array<Vec3, 8>& p, double min_length, double stop_be
 }
 
 double quad_score(const std::array<Vec3, 4>& p, double min_length) {
-  if (min_length > 0) {
-    const double r = quad_edge_lengths(p).min / min_length;
-    if (r < 1) return -2.0 + r;
-  }
-  return quad_scaled_jacobian(p);
+  const double shortest = min_length > 0 ? quad_edge_lengths(p).min : 0.0;
+  return score_of(quad_scaled_jacobian(p), shortest, min_length);
 }
 
 double hex_score_bound(const std::array<Vec3, 8>& p, std::size_t moving, double min_length) {

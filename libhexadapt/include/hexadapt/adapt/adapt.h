@@ -130,8 +130,8 @@ struct AdaptOptions : StepSettings {
   /// guaranteed, 3D: the loop's smoothing makes no Laplacian pull shorter than this many mean
   /// edge lengths around the node (its SmoothOptions::min_move; the other smoothings, and the
   /// loop in 2D, keep smooth.min_move). Every round moves the nodes again, so relaxing them to
-  /// a hundredth of an edge first is work the next round undoes: 0.1 tries a third as many
-  /// nodes with as many interface nodes near their surface. In 2D the first round mostly
+  /// a hundredth of an edge first is work the next round undoes: 0.1 tries nodes a quarter
+  /// as often, with as many interface nodes near their surface. In 2D the first round mostly
   /// ends the loop, and a 2D case left a node short with it (docs/benchmarks.md).
   double loop_min_move = 0.1;
   /// guaranteed: after the loop, the nodes still off their surface go onto it where their
